@@ -1,0 +1,55 @@
+#pragma once
+// Preparing real capture before baking: units to metres, common frame rate, the best loop
+// cut out of a raw capture, travel along +z, and the slow/fast pair aligned by foot contact.
+#include <string>
+
+#include "anim/clip.h"
+
+namespace throng::anim {
+
+struct UnitsGuess {
+  float metresPerUnit = 1.0f;
+  float heightInUnits = 0.0f;  // standing height of the skeleton (rest pose), file units
+  std::string label;           // "metres", "centimetres", "cmu-units", "inches", ...
+};
+// Guess the unit from the skeleton's rest height (a person is ~1.5–2.0 m tall).
+UnitsGuess detectUnits(const Skeleton& skeleton);
+Clip scaleToMetres(const Clip& clip, float metresPerUnit);
+
+// Resample to a new frame time (slerp rotations, lerp root positions).
+Clip resample(const Clip& clip, float frameTime);
+
+struct LoopCut {
+  int start = 0;   // first frame of the cycle
+  int end = 0;     // one past the last frame: frame `end` ≈ frame `start`
+  float error = 0; // pose + velocity distance between start and end (radians-ish, per joint)
+  int length() const { return end - start; }
+};
+// Best cycle in [minFrames, maxFrames] frames by pose and velocity similarity.
+LoopCut findBestLoop(const Clip& clip, int minFrames, int maxFrames);
+// Frames [start, end) as a cyclic clip; cycleTravel = root(end) - root(start).
+Clip cutLoop(const Clip& clip, const LoopCut& cut);
+
+// Rotates the whole clip about +y so its net travel points along +z and puts the first
+// frame's root above the origin.
+Clip faceForwardZ(const Clip& clip);
+
+// Rotates `fast` cyclically so its left-foot contact falls at the same phase as in `slow`.
+// Returns the frame shift applied. Both clips must share a topology (else Error).
+int alignPhases(const Clip& slow, Clip& fast);
+
+struct PairOptions {
+  float metresPerUnit = 0.0f;  // 0: detect from the skeleton height
+  float frameTime = 1.0f / 30.0f;
+  bool cutLoops = true;        // false for clips that are already cycles
+};
+struct PreparedPair {
+  Clip slow;
+  Clip fast;
+  LoopCut slowLoop;
+  LoopCut fastLoop;
+};
+// The whole preparation for a slow/fast pair; a topology mismatch is a clear Error.
+PreparedPair preparePair(const RawClip& slow, const RawClip& fast, const PairOptions& options);
+
+}  // namespace throng::anim

@@ -1,0 +1,80 @@
+#include "core/image.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "core/error.h"
+#include "core/file_io.h"
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STBI_ONLY_PNG
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#endif
+#include <stb_image.h>
+#include <stb_image_write.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+namespace throng {
+
+ImageRgba8 readPng(const std::filesystem::path& path) {
+  std::string bytes = readTextFile(path);
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                        static_cast<int>(bytes.size()), &w, &h, &channels, 4);
+  if (!data) fail(path.string(), ": not a readable PNG (", stbi_failure_reason(), ")");
+  ImageRgba8 image(w, h);
+  std::copy_n(reinterpret_cast<const Rgba8*>(data), size_t(w) * h, image.pixels.data());
+  stbi_image_free(data);
+  return image;
+}
+
+namespace {
+void appendBytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<uint8_t>*>(context);
+  auto* bytes = static_cast<const uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
+}
+}  // namespace
+
+void writePngAtomic(const std::filesystem::path& path, const ImageRgba8& image) {
+  if (image.width <= 0 || image.height <= 0) fail(path.string(), ": refusing to write an empty image");
+  std::vector<uint8_t> encoded;
+  if (!stbi_write_png_to_func(appendBytes, &encoded, image.width, image.height, 4,
+                              image.pixels.data(), image.width * 4)) {
+    fail(path.string(), ": PNG encoding failed");
+  }
+  writeFileAtomic(path, encoded);
+}
+
+ImageDiff compareImages(const ImageRgba8& actual, const ImageRgba8& expected, int pixelThreshold) {
+  if (actual.width != expected.width || actual.height != expected.height) {
+    fail("image size mismatch: actual ", actual.width, "x", actual.height, ", expected ",
+         expected.width, "x", expected.height);
+  }
+  ImageDiff diff;
+  diff.diffImage = ImageRgba8(actual.width, actual.height);
+  double sum = 0;
+  size_t different = 0;
+  for (size_t i = 0; i < actual.pixels.size(); ++i) {
+    const Rgba8& a = actual.pixels[i];
+    const Rgba8& e = expected.pixels[i];
+    int dr = std::abs(a.r - e.r), dg = std::abs(a.g - e.g), db = std::abs(a.b - e.b);
+    int m = std::max({dr, dg, db});
+    sum += dr + dg + db;
+    diff.maxError = std::max(diff.maxError, m);
+    if (m > pixelThreshold) ++different;
+    uint8_t v = static_cast<uint8_t>(std::min(255, m * 4));
+    diff.diffImage.pixels[i] = {v, static_cast<uint8_t>(m > pixelThreshold ? 0 : v), 0, 255};
+  }
+  diff.meanAbsError = sum / (3.0 * std::max<size_t>(1, actual.pixels.size()));
+  diff.fractionDifferent = double(different) / std::max<size_t>(1, actual.pixels.size());
+  return diff;
+}
+
+}  // namespace throng

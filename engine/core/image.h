@@ -1,0 +1,38 @@
+#pragma once
+// 8-bit RGBA images in memory, PNG read/write (stb), and the comparison used by golden tests.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace throng {
+
+struct Rgba8 {
+  uint8_t r = 0, g = 0, b = 0, a = 255;
+  friend bool operator==(const Rgba8&, const Rgba8&) = default;
+};
+
+struct ImageRgba8 {
+  int width = 0;
+  int height = 0;
+  std::vector<Rgba8> pixels;  // row-major, top row first
+
+  ImageRgba8() = default;
+  ImageRgba8(int w, int h, Rgba8 fill = {}) : width(w), height(h), pixels(size_t(w) * h, fill) {}
+  Rgba8& at(int x, int y) { return pixels[size_t(y) * width + x]; }
+  const Rgba8& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
+};
+
+// Throws Error naming the file when it is missing or not a PNG.
+ImageRgba8 readPng(const std::filesystem::path& path);
+// Written to a temporary name and renamed when complete.
+void writePngAtomic(const std::filesystem::path& path, const ImageRgba8& image);
+
+struct ImageDiff {
+  double meanAbsError = 0;      // over RGB channels, 0..255
+  double fractionDifferent = 0; // pixels whose max channel error exceeds the threshold
+  int maxError = 0;
+  ImageRgba8 diffImage;         // per-pixel error amplified for people to look at
+};
+ImageDiff compareImages(const ImageRgba8& actual, const ImageRgba8& expected, int pixelThreshold);
+
+}  // namespace throng

@@ -1,0 +1,50 @@
+#pragma once
+// Math shared by the CPU twins. Formulas here are mirrored line by line in shaders/common.glsl
+// so that GPU and CPU results agree to float rounding.
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace throng {
+
+constexpr float kPi = 3.14159265358979323846f;
+
+// Shortest-arc spherical interpolation of unit quaternions (x,y,z,w in a vec4), the formula
+// used by every synthesis path. Falls back to normalized lerp when the quaternions are nearly
+// parallel, where sin(theta) would lose precision.
+inline glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float t) {
+  float cosTheta = glm::dot(a, b);
+  if (cosTheta < 0.0f) {
+    b = -b;
+    cosTheta = -cosTheta;
+  }
+  if (cosTheta > 0.9995f) return glm::normalize(a + t * (b - a));
+  float theta = std::acos(cosTheta);
+  float sinTheta = std::sin(theta);
+  float wa = std::sin((1.0f - t) * theta) / sinTheta;
+  float wb = std::sin(t * theta) / sinTheta;
+  return wa * a + wb * b;
+}
+
+inline glm::quat toQuat(glm::vec4 q) { return glm::quat(q.w, q.x, q.y, q.z); }
+inline glm::vec4 toVec4(glm::quat q) { return glm::vec4(q.x, q.y, q.z, q.w); }
+
+// Hamilton product of (x,y,z,w) quaternions.
+inline glm::vec4 quatMul(glm::vec4 a, glm::vec4 b) {
+  return glm::vec4(a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+                   a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+                   a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+                   a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
+}
+
+inline glm::vec3 quatRotate(glm::vec4 q, glm::vec3 v) {
+  glm::vec3 u(q.x, q.y, q.z);
+  glm::vec3 t = 2.0f * glm::cross(u, v);
+  return v + q.w * t + glm::cross(u, t);
+}
+
+// Rotation about +y by `angle` radians; heading 0 faces +z.
+inline glm::vec4 yawQuat(float angle) {
+  return glm::vec4(0.0f, std::sin(0.5f * angle), 0.0f, std::cos(0.5f * angle));
+}
+
+}  // namespace throng

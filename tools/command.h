@@ -1,0 +1,16 @@
+#pragma once
+// Each tools/cmd_*.cpp registers its subcommands with a file-scope CommandRegistration, so
+// adding a command never touches main.cpp.
+#include <CLI/CLI.hpp>
+
+namespace throng::tools {
+
+using AddCommandFn = void (*)(CLI::App& app, int& exitCode);
+
+struct CommandRegistration {
+  CommandRegistration(const char* name, AddCommandFn add);
+};
+
+void addRegisteredCommands(CLI::App& app, int& exitCode);
+
+}  // namespace throng::tools
