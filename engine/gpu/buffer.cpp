@@ -1,0 +1,72 @@
+#include "gpu/buffer.h"
+
+#include "core/error.h"
+#include "gpu/commands.h"
+#include "gpu/vk_check.h"
+
+namespace throng::gpu {
+
+Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use)
+    : size_(size) {
+  THRONG_CHECK(size > 0, "buffer size must be positive");
+  VkDevice device = context.device();
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer));
+  buffer_ = Handle<VkBuffer>(buffer, [device](VkBuffer b) { vkDestroyBuffer(device, b, nullptr); });
+
+  VkMemoryRequirements requirements;
+  vkGetBufferMemoryRequirements(device, buffer, &requirements);
+  VkMemoryPropertyFlags flags = use == MemoryUse::HostVisible
+                                    ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = requirements.size;
+  alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits, flags);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
+  memory_ = Handle<VkDeviceMemory>(memory, [device](VkDeviceMemory m) { vkFreeMemory(device, m, nullptr); });
+  VK_CHECK(vkBindBufferMemory(device, buffer, memory, 0));
+  if (use == MemoryUse::HostVisible) VK_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_));
+}
+
+void uploadBytes(const Context& context, const Buffer& dst, std::span<const uint8_t> bytes,
+                 VkDeviceSize dstOffset) {
+  THRONG_CHECK(dstOffset + bytes.size() <= dst.size(), "upload of ", bytes.size(), " bytes at ",
+               dstOffset, " overflows a buffer of ", dst.size());
+  if (bytes.empty()) return;
+  if (dst.hostVisible()) {
+    std::memcpy(static_cast<uint8_t*>(dst.mapped()) + dstOffset, bytes.data(), bytes.size());
+    return;
+  }
+  Buffer staging(context, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostVisible);
+  std::memcpy(staging.mapped(), bytes.data(), bytes.size());
+  submitAndWait(context, [&](VkCommandBuffer cmd) {
+    VkBufferCopy region{0, dstOffset, bytes.size()};
+    vkCmdCopyBuffer(cmd, staging.get(), dst.get(), 1, &region);
+  });
+}
+
+std::vector<uint8_t> readbackBytes(const Context& context, const Buffer& src, VkDeviceSize offset,
+                                   VkDeviceSize size) {
+  THRONG_CHECK(offset + size <= src.size(), "readback of ", size, " bytes at ", offset,
+               " overflows a buffer of ", src.size());
+  std::vector<uint8_t> out(size);
+  if (size == 0) return out;
+  if (src.hostVisible()) {
+    std::memcpy(out.data(), static_cast<const uint8_t*>(src.mapped()) + offset, size);
+    return out;
+  }
+  Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::HostVisible);
+  submitAndWait(context, [&](VkCommandBuffer cmd) {
+    VkBufferCopy region{offset, 0, size};
+    vkCmdCopyBuffer(cmd, src.get(), staging.get(), 1, &region);
+  });
+  std::memcpy(out.data(), staging.mapped(), size);
+  return out;
+}
+
+}  // namespace throng::gpu

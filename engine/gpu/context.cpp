@@ -1,0 +1,243 @@
+#include "gpu/context.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "gpu/vk_check.h"
+
+namespace throng::gpu {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                   VkDebugUtilsMessageTypeFlagsEXT,
+                                                   const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                   void* user) {
+  if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
+  static_cast<std::atomic<uint32_t>*>(user)->fetch_add(1);
+  std::fprintf(stderr, "vulkan validation: %s\n", data->pMessage);
+  return VK_FALSE;
+}
+
+bool envFlag(const char* name) {
+  const char* v = std::getenv(name);
+  return v && *v && std::strcmp(v, "0") != 0;
+}
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool layerAvailable(const char* name) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
+  std::vector<VkLayerProperties> layers(count);
+  VK_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
+  return std::any_of(layers.begin(), layers.end(),
+                     [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+}
+
+int typeRank(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
+    default: return 4;
+  }
+}
+
+struct Candidate {
+  VkPhysicalDevice device;
+  VkPhysicalDeviceProperties properties;
+  VkPhysicalDeviceDriverProperties driver;
+};
+
+std::vector<Candidate> enumerateCandidates(VkInstance instance) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+  std::vector<Candidate> result;
+  for (VkPhysicalDevice d : devices) {
+    Candidate c{d, {}, {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES}};
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &c.driver};
+    vkGetPhysicalDeviceProperties2(d, &props);
+    c.properties = props.properties;
+    if (c.properties.apiVersion < VK_API_VERSION_1_2) continue;
+    result.push_back(c);
+  }
+  return result;
+}
+
+const Candidate& chooseDevice(const std::vector<Candidate>& candidates, const std::string& wanted) {
+  if (candidates.empty()) fail("no Vulkan 1.2 device found (install mesa-vulkan-drivers for lavapipe)");
+  if (!wanted.empty()) {
+    char* end = nullptr;
+    long index = std::strtol(wanted.c_str(), &end, 10);
+    if (end && *end == '\0') {
+      if (index < 0 || index >= static_cast<long>(candidates.size()))
+        fail("device index ", wanted, " out of range: ", candidates.size(), " device(s) available");
+      return candidates[index];
+    }
+    for (const Candidate& c : candidates) {
+      if (lower(c.properties.deviceName).find(lower(wanted)) != std::string::npos) return c;
+    }
+    std::string names;
+    for (const Candidate& c : candidates) names += concat("\n  ", c.properties.deviceName);
+    fail("no Vulkan device matches '", wanted, "'; available:", names);
+  }
+  return *std::min_element(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return typeRank(a.properties.deviceType) < typeRank(b.properties.deviceType);
+  });
+}
+
+void loadVolk() {
+  static bool loaded = false;
+  if (loaded) return;
+  if (volkInitialize() != VK_SUCCESS) fail("Vulkan loader not found (install libvulkan1)");
+  loaded = true;
+}
+
+}  // namespace
+
+Context::Context(const ContextOptions& options)
+    : validationMessages_(std::make_unique<std::atomic<uint32_t>>(0)) {
+  loadVolk();
+  validation_ = options.validation || envFlag("THRONG_VALIDATION");
+  if (validation_ && !layerAvailable(kValidationLayer))
+    fail("validation requested but ", kValidationLayer, " is not installed (vulkan-validationlayers)");
+
+  std::vector<const char*> extensions;
+  for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
+  if (validation_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = "throng";
+  app.pEngineName = "throng";
+  app.apiVersion = VK_API_VERSION_1_2;
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                  VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messengerInfo.pfnUserCallback = onValidationMessage;
+  messengerInfo.pUserData = validationMessages_.get();
+
+  VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  instanceInfo.pApplicationInfo = &app;
+  instanceInfo.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+  instanceInfo.ppEnabledExtensionNames = extensions.data();
+  if (validation_) {
+    instanceInfo.enabledLayerCount = 1;
+    instanceInfo.ppEnabledLayerNames = &kValidationLayer;
+    instanceInfo.pNext = &messengerInfo;  // also catches instance creation messages
+  }
+  VK_CHECK(vkCreateInstance(&instanceInfo, nullptr, &instance_));
+  volkLoadInstanceOnly(instance_);
+  if (validation_) VK_CHECK(vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr, &messenger_));
+
+  std::string wanted = options.device;
+  if (wanted.empty() && std::getenv("THRONG_DEVICE")) wanted = std::getenv("THRONG_DEVICE");
+  std::vector<Candidate> candidates = enumerateCandidates(instance_);
+  const Candidate& chosen = chooseDevice(candidates, wanted);
+  physical_ = chosen.device;
+  info_.name = chosen.properties.deviceName;
+  info_.driver = concat(chosen.driver.driverName, " ", chosen.driver.driverInfo);
+  info_.type = chosen.properties.deviceType;
+  info_.timestampPeriodNs = chosen.properties.limits.timestampPeriod;
+  info_.maxStorageBufferRange = chosen.properties.limits.maxStorageBufferRange;
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+
+  uint32_t familyCount = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
+  std::vector<VkQueueFamilyProperties> families(familyCount);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, families.data());
+  queueFamily_ = UINT32_MAX;
+  for (uint32_t i = 0; i < familyCount; ++i) {
+    VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) {
+      queueFamily_ = i;
+      break;
+    }
+  }
+  if (queueFamily_ == UINT32_MAX) fail(info_.name, ": no queue family with graphics, compute and timestamps");
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queueFamily_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  std::vector<const char*> deviceExtensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME,
+                                            VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME};
+  if (options.swapchain) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+
+  VkPhysicalDeviceDynamicRenderingFeaturesKHR dynamicRendering{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES_KHR};
+  dynamicRendering.dynamicRendering = VK_TRUE;
+  VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                              &dynamicRendering};
+  features12.hostQueryReset = VK_TRUE;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features12};
+  features.features.multiDrawIndirect = VK_TRUE;
+  features.features.drawIndirectFirstInstance = VK_TRUE;
+
+  VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+  deviceInfo.queueCreateInfoCount = 1;
+  deviceInfo.pQueueCreateInfos = &queueInfo;
+  deviceInfo.enabledExtensionCount = static_cast<uint32_t>(deviceExtensions.size());
+  deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
+  VK_CHECK(vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
+  volkLoadDevice(device_);
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+
+  if (!options.quiet) {
+    logInfo(concat("vulkan device: ", info_.name, " (driver ", info_.driver, ")",
+                   validation_ ? ", validation on" : ""));
+  }
+}
+
+Context::~Context() {
+  if (device_) {
+    vkDeviceWaitIdle(device_);
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
+  for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+    if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+  }
+  fail("no Vulkan memory type with flags ", wanted, " for type bits ", typeBits, " on ", info_.name);
+}
+
+void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+
+std::vector<std::string> listDevices() {
+  loadVolk();
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.apiVersion = VK_API_VERSION_1_2;
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pApplicationInfo = &app;
+  VkInstance instance = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
+  volkLoadInstanceOnly(instance);
+  std::vector<std::string> names;
+  int index = 0;
+  for (const Candidate& c : enumerateCandidates(instance))
+    names.push_back(concat(index++, ": ", c.properties.deviceName, " (", c.driver.driverName, ")"));
+  vkDestroyInstance(instance, nullptr);
+  return names;
+}
+
+}  // namespace throng::gpu

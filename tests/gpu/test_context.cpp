@@ -1,0 +1,90 @@
+#include <doctest/doctest.h>
+
+#include <numeric>
+
+#include "core/error.h"
+#include "gpu/buffer.h"
+#include "gpu/commands.h"
+#include "gpu/program.h"
+#include "gpu/timestamps.h"
+#include "gpu_fixture.h"
+
+using namespace throng;
+
+TEST_CASE("context: a device with a compute+graphics queue, validation on") {
+  gpu::Context& ctx = test::gpuContext();
+  CHECK(ctx.device() != VK_NULL_HANDLE);
+  CHECK(ctx.validationEnabled());
+  CHECK(!ctx.info().name.empty());
+  MESSAGE("device: ", ctx.info().name, " driver: ", ctx.info().driver);
+  CHECK(!gpu::listDevices().empty());
+}
+
+TEST_CASE("context: an unknown device name is a clear error") {
+  gpu::ContextOptions options;
+  options.device = "no-such-gpu-xyz";
+  options.quiet = true;
+  CHECK_THROWS_WITH_AS(gpu::Context{options}, doctest::Contains("no Vulkan device matches"), Error);
+}
+
+TEST_CASE("buffer: device-local round trip through staging") {
+  gpu::Context& ctx = test::gpuContext();
+  std::vector<uint32_t> data(10000);
+  std::iota(data.begin(), data.end(), 7u);
+  gpu::Buffer buffer = gpu::makeStorageBuffer<uint32_t>(ctx, data);
+  CHECK(gpu::readback<uint32_t>(ctx, buffer, data.size()) == data);
+  CHECK(gpu::readback<uint32_t>(ctx, buffer, 3, 100) == std::vector<uint32_t>{107, 108, 109});
+  CHECK_THROWS_AS(gpu::readback<uint32_t>(ctx, buffer, 10, 9995), Error);
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("program: reflection and a checked dispatch") {
+  gpu::Context& ctx = test::gpuContext();
+  gpu::ComputeProgram program(ctx, "test_scale.comp");
+  CHECK(program.localSizeX() == 64);
+  REQUIRE(program.reflection().bindings.size() == 2);
+  CHECK(program.reflection().bindings[0].type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+  CHECK(program.reflection().pushConstantSize == 8);
+
+  const uint32_t n = 1000;
+  std::vector<float> input(n);
+  for (uint32_t i = 0; i < n; ++i) input[i] = 0.5f * i;
+  gpu::Buffer in = gpu::makeStorageBuffer<float>(ctx, input);
+  gpu::Buffer out(ctx, n * sizeof(float), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  struct Push {
+    float scale;
+    uint32_t count;
+  } push{3.0f, n};
+  gpu::TimestampPool timestamps(ctx, 2);
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    timestamps.write(cmd);
+    gpu::Binding bindings[] = {gpu::storageBinding(0, in), gpu::storageBinding(1, out)};
+    gpu::dispatch(cmd, program, bindings, push, n);
+    timestamps.write(cmd);
+  });
+  std::vector<float> result = gpu::readback<float>(ctx, out, n);
+  for (uint32_t i = 0; i < n; ++i) REQUIRE(result[i] == doctest::Approx(input[i] * 3.0f + i));
+  double ms = timestamps.millisecondsBetween(timestamps.fetch(), 0, 1);
+  CHECK(ms >= 0.0);
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("program: missing binding and wrong push size are reported") {
+  gpu::Context& ctx = test::gpuContext();
+  gpu::ComputeProgram program(ctx, "test_scale.comp");
+  gpu::Buffer in(ctx, 64, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  uint32_t wrongPush = 1;
+  gpu::Binding one[] = {gpu::storageBinding(0, in)};
+  struct Push {
+    float scale;
+    uint32_t count;
+  } push{1.0f, 4};
+  gpu::CommandPool pool(ctx);
+  VkCommandBuffer cmd = pool.allocate();
+  gpu::beginCommands(cmd);
+  CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, one, push, 4), doctest::Contains("binding 1 was not provided"), Error);
+  CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, one, wrongPush, 4), doctest::Contains("push constants of 4 bytes"), Error);
+  CHECK_THROWS_WITH_AS(gpu::ComputeProgram(ctx, "nope.comp"), doctest::Contains("not embedded"), Error);
+  gpu::endCommands(cmd);
+  CHECK(ctx.validationMessageCount() == 0);
+}
