@@ -1,0 +1,125 @@
+#include "anim/reference_synth.h"
+
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+#include "core/math.h"
+
+namespace throng::anim {
+namespace {
+
+// Frame index of a phase in [0,1): the pose shown is the motion texture's row at that frame.
+int frameAt(float phase, int frames) { return std::min(static_cast<int>(phase * float(frames)), frames - 1); }
+
+// Root position at an unwrapped frame index k ≥ 0 (k ≥ F continues into the next cycle).
+glm::vec3 rootAt(const MotionTexture& tex, int k) {
+  int cycles = k / tex.frameCount;
+  int frame = k - cycles * tex.frameCount;
+  return tex.offset(frame, 0) + float(cycles) * tex.cycleTravel;
+}
+
+glm::vec3 mixVec(glm::vec3 a, glm::vec3 b, float w) { return a * (1.0f - w) + b * w; }
+
+glm::vec4 alignYTo(glm::vec3 d) {
+  if (d.y < -0.9999f) return glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
+  return glm::normalize(glm::vec4(d.z, 0.0f, -d.x, 1.0f + d.y));
+}
+
+void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
+  float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
+  float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
+  float wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+  rows[0] = glm::vec4((1.0f - 2.0f * (yy + zz)) * scale.x, 2.0f * (xy - wz) * scale.y, 2.0f * (xz + wy) * scale.z, t.x);
+  rows[1] = glm::vec4(2.0f * (xy + wz) * scale.x, (1.0f - 2.0f * (xx + zz)) * scale.y, 2.0f * (yz - wx) * scale.z, t.y);
+  rows[2] = glm::vec4(2.0f * (xz - wy) * scale.x, 2.0f * (yz + wx) * scale.y, (1.0f - 2.0f * (xx + yy)) * scale.z, t.z);
+}
+
+}  // namespace
+
+float circleHeading(glm::vec2 p) {
+  // Counter-clockwise tangent (-z, x) seen from above; heading θ faces (sin θ, cos θ).
+  return std::atan2(-p.y, p.x);
+}
+
+void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
+                   Steering steering) {
+  const MotionTexture& slow = pair.slow;
+  const MotionTexture& fast = pair.fast;
+  float w = motion.y;
+  float duration = slow.duration() * (1.0f - w) + fast.duration() * w;
+  float phase0 = motion.x;
+  float phase1 = phase0 + dt / duration;
+  glm::vec3 dSlow = rootAt(slow, int(phase1 * float(slow.frameCount))) - rootAt(slow, int(phase0 * float(slow.frameCount)));
+  glm::vec3 dFast = rootAt(fast, int(phase1 * float(fast.frameCount))) - rootAt(fast, int(phase0 * float(fast.frameCount)));
+  glm::vec3 d = mixVec(dSlow, dFast, w);
+  if (steering == Steering::Circle) placement.w = circleHeading(glm::vec2(placement.x, placement.z));
+  float c = std::cos(placement.w), s = std::sin(placement.w);
+  float scale = motion.w;
+  placement.x += scale * (d.x * c + d.z * s);
+  placement.z += scale * (-d.x * s + d.z * c);
+  float wraps = std::floor(phase1);
+  motion.x = phase1 - wraps;
+  if (wraps > 0.0f) motion.y = motion.z;
+}
+
+void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out) {
+  const int joints = pair.jointCount();
+  THRONG_CHECK(static_cast<int>(out.size()) >= joints, "pose output too small");
+  int fs = frameAt(phase, pair.slow.frameCount);
+  int ff = frameAt(phase, pair.fast.frameCount);
+  for (int j = 0; j < joints; ++j) {
+    glm::vec4 q = slerpFast(pair.slow.rotation(fs, j), pair.fast.rotation(ff, j), w);
+    glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), w);
+    int p = pair.parents[j];
+    if (p < 0) {
+      out[j] = {glm::vec3(0.0f, o.y, 0.0f), q};
+    } else {
+      out[j] = {out[p].position + quatRotate(out[p].rotation, o), quatMul(out[p].rotation, q)};
+    }
+  }
+}
+
+void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
+                   std::span<glm::vec4> out) {
+  const int joints = pair.jointCount();
+  THRONG_CHECK(static_cast<int>(out.size()) >= 3 * joints, "joint matrix output too small");
+  thread_local std::vector<PoseJoint> pose;
+  pose.resize(joints);
+  poseCharacterSpace(pair, motion.x, motion.y, pose);
+  int fs = frameAt(motion.x, pair.slow.frameCount);
+  int ff = frameAt(motion.x, pair.fast.frameCount);
+  glm::vec4 yaw = yawQuat(placement.w);
+  float scale = motion.w;
+  glm::vec3 origin(placement.x, placement.y, placement.z);
+  for (int j = 0; j < joints; ++j) {
+    int p = pair.parents[j];
+    float radius = pair.jointRadius[j];
+    glm::vec3 start;
+    glm::vec4 orientation;
+    float length;
+    if (p < 0) {
+      // The root is drawn as a sphere around it: a vertical "bone" of length 2r.
+      start = pose[j].position + quatRotate(pose[j].rotation, glm::vec3(0.0f, -radius, 0.0f));
+      orientation = pose[j].rotation;
+      length = 2.0f * radius;
+    } else {
+      glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), motion.y);
+      length = glm::length(o);
+      glm::vec3 dir = length > 1e-6f ? o / length : glm::vec3(0.0f, 1.0f, 0.0f);
+      start = pose[p].position;
+      orientation = quatMul(pose[p].rotation, alignYTo(dir));
+      if (length <= 1e-6f) radius = 0.0f;  // zero-length bones are not drawn
+    }
+    glm::vec4 world = quatMul(yaw, orientation);
+    glm::vec3 t = origin + quatRotate(yaw, scale * start);
+    writeRows(world, scale * glm::vec3(radius, length, radius), t, &out[3 * j]);
+  }
+}
+
+glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p) {
+  return glm::vec3(glm::dot(glm::vec3(rows[0]), p) + rows[0].w, glm::dot(glm::vec3(rows[1]), p) + rows[1].w,
+                   glm::dot(glm::vec3(rows[2]), p) + rows[2].w);
+}
+
+}  // namespace throng::anim

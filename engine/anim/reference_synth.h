@@ -1,0 +1,44 @@
+#pragma once
+// The CPU reference synthesizer: DESIGN.md's blend, hierarchy and root motion for one
+// character, in plain C++. Every GPU synthesis pass is tested against it, and the bench runs
+// it (one and many threads) as the paper's CPU baseline.
+#include <span>
+
+#include <glm/glm.hpp>
+
+#include "anim/motion_texture.h"
+
+namespace throng::anim {
+
+// Mirrors shaders/shared_types.h: placement = (x, y, z, heading), motion = (phase, w, wTarget, scale).
+struct CharacterRef {
+  glm::vec4& placement;
+  glm::vec4& motion;
+};
+
+enum class Steering : uint32_t { KeepHeading = 0, Circle = 1 };
+
+// Eq. 10: advances the phase by dt, moves the root by the blended per-frame displacement
+// rotated by the heading and scaled, and switches w to wTarget only when a cycle ends.
+void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
+                   Steering steering);
+
+// Joint draw matrices A_j = M·O·F for one character (3 rows of a 3x4 matrix per joint,
+// matching gpu_types::JointMatrix). `out` holds jointCount × 3 vec4.
+void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
+                   std::span<glm::vec4> out);
+
+// Character-space joint positions and global rotations (for tests and metrics).
+struct PoseJoint {
+  glm::vec3 position;
+  glm::vec4 rotation;
+};
+void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out);
+
+// Heading that keeps a character on a circle around the origin (counter-clockwise).
+float circleHeading(glm::vec2 position);
+
+// World position of a point given in a joint draw matrix's unit space.
+glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p);
+
+}  // namespace throng::anim

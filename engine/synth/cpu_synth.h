@@ -1,0 +1,21 @@
+#pragma once
+// The CPU path for a whole crowd: the reference synthesizer run over every character on one or
+// many threads. It is the twin the GPU passes are tested against and the bench's baseline.
+#include <functional>
+#include <span>
+
+#include "anim/motion_texture.h"
+#include "crowd/crowd.h"
+#include "synth/gpu_types.h"
+
+namespace throng::synth {
+
+void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads = 1);
+// `out` holds crowd.size() × jointCount joint matrices.
+void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, std::span<JointMatrix> out,
+                  unsigned threads = 1);
+
+// Runs body(begin, end) over [0, count) split across `threads` threads.
+void parallelFor(size_t count, unsigned threads, const std::function<void(size_t, size_t)>& body);
+
+}  // namespace throng::synth

@@ -1,0 +1,13 @@
+#pragma once
+// The C++ view of shaders/shared_types.h, with its layout checked against std430.
+#include "shaders/shared_types.h"
+
+namespace throng::synth {
+using gpu_types::JointMatrix;
+using gpu_types::PosePush;
+using gpu_types::RootMotionPush;
+
+static_assert(sizeof(JointMatrix) == 48, "JointMatrix must match the GLSL std430 layout");
+static_assert(sizeof(RootMotionPush) == 64, "RootMotionPush must match the GLSL push block");
+static_assert(sizeof(PosePush) == 32, "PosePush must match the GLSL push block");
+}  // namespace throng::synth

@@ -1,0 +1,24 @@
+#pragma once
+// A slow/fast motion pair on the GPU: two RGBA32F motion textures sampled with texelFetch,
+// the parent array and joint radii as SSBOs.
+#include "anim/motion_texture.h"
+#include "gpu/buffer.h"
+#include "gpu/image.h"
+
+namespace throng::synth {
+
+struct GpuMotionPair {
+  gpu::Image2D slow;
+  gpu::Image2D fast;
+  gpu::Buffer parents;
+  gpu::Buffer jointRadius;
+  gpu::Handle<VkSampler> sampler;
+  uint32_t jointCount = 0;
+  uint32_t slowFrames = 0;
+  uint32_t fastFrames = 0;
+};
+
+gpu::Image2D uploadMotionTexture(const gpu::Context& context, const anim::MotionTexture& texture);
+GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPair& pair);
+
+}  // namespace throng::synth

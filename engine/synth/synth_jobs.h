@@ -1,0 +1,50 @@
+#pragma once
+// The synthesis passes as jobs (ozz style): public named inputs and outputs, validate() that
+// lists what is missing or inconsistent, record() that checks and records the dispatch.
+#include <string>
+#include <vector>
+
+#include "anim/motion_texture.h"
+#include "anim/reference_synth.h"
+#include "crowd/crowd.h"
+#include "gpu/program.h"
+#include "synth/motion_gpu.h"
+
+namespace throng::synth {
+
+// Eq. 10 on the GPU; twin: anim::stepCharacter.
+struct RootMotionJob {
+  const GpuMotionPair* motion = nullptr;        // input
+  const anim::MotionPair* clips = nullptr;      // input: cycle durations and travel
+  const crowd::CrowdBuffers* crowd = nullptr;   // input and output (updated in place)
+  float dt = 0.0f;
+  anim::Steering steering = anim::Steering::KeepHeading;
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const;
+};
+
+// Blend + hierarchy + A = J·M on the GPU; twin: anim::poseCharacter.
+struct PoseJob {
+  const GpuMotionPair* motion = nullptr;        // input
+  const crowd::CrowdBuffers* crowd = nullptr;   // input
+  const gpu::Buffer* joints = nullptr;          // output: JointMatrix per character per joint
+  uint32_t firstCharacter = 0;                  // the chunk [first, first + count)
+  uint32_t characterCount = 0;                  // 0: every character from firstCharacter
+  VkDeviceSize jointsOffset = 0;                // where the chunk's output starts in `joints`
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const;
+};
+
+// The compiled programs of the synthesis passes (created once per context).
+struct SynthPrograms {
+  gpu::ComputeProgram rootMotion;
+  gpu::ComputeProgram pose;
+  explicit SynthPrograms(const gpu::Context& context);
+};
+
+// Throws Error listing every problem validate() found.
+void throwIfInvalid(const std::string& job, const std::vector<std::string>& problems);
+
+}  // namespace throng::synth

@@ -1,0 +1,67 @@
+// Math shared by the synthesis shaders; mirrors engine/core/math.h and the CPU twin in
+// engine/anim/reference_synth.cpp operation for operation.
+#ifndef THRONG_MOTION_COMMON_GLSL
+#define THRONG_MOTION_COMMON_GLSL
+
+vec4 slerpShortest(vec4 a, vec4 b, float t) {
+  float cosTheta = dot(a, b);
+  if (cosTheta < 0.0) {
+    b = -b;
+    cosTheta = -cosTheta;
+  }
+  if (cosTheta > 0.9995) return normalize(a + t * (b - a));
+  float theta = acos(cosTheta);
+  float sinTheta = sin(theta);
+  float wa = sin((1.0 - t) * theta) / sinTheta;
+  float wb = sin(t * theta) / sinTheta;
+  return wa * a + wb * b;
+}
+
+// Series slerp, mirrors slerpFast in engine/core/math.h (see there for the error bound).
+const int kSlerpTerms = 12;
+const float kSlerpOnePlusMu = 1.894;
+
+float slerpSeriesWeight(float t, float xm1) {
+  float r = 1.0;
+  for (int i = kSlerpTerms; i >= 1; --i) {
+    float u = 1.0 / float(i * (2 * i + 1));
+    float v = float(i) / float(2 * i + 1);
+    if (i == kSlerpTerms) {
+      u *= kSlerpOnePlusMu;
+      v *= kSlerpOnePlusMu;
+    }
+    r = 1.0 + (u * t * t - v) * xm1 * r;
+  }
+  return t * r;
+}
+
+vec4 slerpFast(vec4 a, vec4 b, float t) {
+  float cosTheta = dot(a, b);
+  float sign = cosTheta < 0.0 ? -1.0 : 1.0;
+  float xm1 = sign * cosTheta - 1.0;
+  return slerpSeriesWeight(1.0 - t, xm1) * a + (sign * slerpSeriesWeight(t, xm1)) * b;
+}
+
+vec4 quatMul(vec4 a, vec4 b) {
+  return vec4(a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+              a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+              a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
+              a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z);
+}
+
+vec3 quatRotate(vec4 q, vec3 v) {
+  vec3 t = 2.0 * cross(q.xyz, v);
+  return v + q.w * t + cross(q.xyz, t);
+}
+
+vec4 yawQuat(float angle) { return vec4(0.0, sin(0.5 * angle), 0.0, cos(0.5 * angle)); }
+
+// Rotation taking +y onto the unit vector d (shortest arc).
+vec4 alignYTo(vec3 d) {
+  if (d.y < -0.9999) return vec4(1.0, 0.0, 0.0, 0.0);
+  return normalize(vec4(d.z, 0.0, -d.x, 1.0 + d.y));
+}
+
+uint frameAt(float phase, uint frames) { return min(uint(phase * float(frames)), frames - 1u); }
+
+#endif

@@ -1,0 +1,46 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Root motion (DESIGN eq. 10), one invocation per character: advance the phase, move the root by
+// the blended per-frame displacement rotated by the heading and scaled; w changes to wTarget
+// only when the cycle ends. CPU twin: anim::stepCharacter.
+#include "shared_types.h"
+#include "motion_common.glsl"
+
+layout(local_size_x = 64) in;
+layout(binding = 0) uniform sampler2D slowMotion;
+layout(binding = 1) uniform sampler2D fastMotion;
+layout(std430, binding = 2) buffer Placement { vec4 placement[]; };
+layout(std430, binding = 3) buffer Motion { vec4 motion[]; };
+layout(push_constant) uniform Push { RootMotionPush push; };
+
+vec3 rootAt(sampler2D tex, uint frames, vec3 cycleTravel, int k) {
+  int cycles = k / int(frames);
+  int frame = k - cycles * int(frames);
+  return texelFetch(tex, ivec2(1, frame), 0).xyz + float(cycles) * cycleTravel;
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= push.characterCount) return;
+  vec4 place = placement[i];
+  vec4 m = motion[i];
+  float w = m.y;
+  float duration = push.slowDuration * (1.0 - w) + push.fastDuration * w;
+  float phase0 = m.x;
+  float phase1 = phase0 + push.dt / duration;
+  vec3 dSlow = rootAt(slowMotion, push.slowFrames, push.slowCycleTravel.xyz, int(phase1 * float(push.slowFrames))) -
+               rootAt(slowMotion, push.slowFrames, push.slowCycleTravel.xyz, int(phase0 * float(push.slowFrames)));
+  vec3 dFast = rootAt(fastMotion, push.fastFrames, push.fastCycleTravel.xyz, int(phase1 * float(push.fastFrames))) -
+               rootAt(fastMotion, push.fastFrames, push.fastCycleTravel.xyz, int(phase0 * float(push.fastFrames)));
+  vec3 d = dSlow * (1.0 - w) + dFast * w;
+  if (push.steering == 1u) place.w = atan(-place.z, place.x);
+  float c = cos(place.w), s = sin(place.w);
+  float scale = m.w;
+  place.x += scale * (d.x * c + d.z * s);
+  place.z += scale * (-d.x * s + d.z * c);
+  float wraps = floor(phase1);
+  m.x = phase1 - wraps;
+  if (wraps > 0.0) m.y = m.z;
+  placement[i] = place;
+  motion[i] = m;
+}

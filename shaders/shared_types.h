@@ -1,0 +1,58 @@
+// Structs shared by C++ and GLSL: one definition, sizes checked on the C++ side.
+// GLSL includes this file (GL_GOOGLE_include_directive); C++ includes it through
+// synth/gpu_types.h, which adds the static_asserts.
+#ifndef THRONG_SHARED_TYPES_H
+#define THRONG_SHARED_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace throng::gpu_types {
+using vec4 = glm::vec4;
+using uint = uint32_t;
+#define THRONG_STRUCT(name) struct name
+#else
+#define THRONG_STRUCT(name) struct name
+#endif
+
+// Per-character state lives in two vec4 arrays (structure of arrays):
+//   placement[i] = (x, y, z, heading)   heading in radians about +y, 0 faces +z
+//   motion[i]    = (phase, w, wTarget, scale)
+
+// One joint's draw matrix A = M·O·F as three rows of a 3x4 affine matrix (row r = (R[r], t[r])).
+THRONG_STRUCT(JointMatrix) {
+  vec4 row0;
+  vec4 row1;
+  vec4 row2;
+};
+
+// Push constants of the root-motion pass (DESIGN eq. 10).
+THRONG_STRUCT(RootMotionPush) {
+  uint characterCount;
+  uint slowFrames;
+  uint fastFrames;
+  uint steering;          // 0: keep heading, 1: run around a circle centred at the origin
+  float dt;
+  float slowDuration;     // seconds per cycle
+  float fastDuration;
+  float pad0;
+  vec4 slowCycleTravel;   // xyz: root displacement over one slow cycle
+  vec4 fastCycleTravel;
+};
+
+// Push constants of the pose pass (blend + hierarchy + A = J·M).
+THRONG_STRUCT(PosePush) {
+  uint characterCount;
+  uint jointCount;
+  uint slowFrames;
+  uint fastFrames;
+  uint firstCharacter;    // dispatch in chunks: output index = character - firstCharacter
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+#ifdef __cplusplus
+}  // namespace throng::gpu_types
+#endif
+#endif

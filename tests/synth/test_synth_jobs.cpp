@@ -1,0 +1,114 @@
+#include <doctest/doctest.h>
+
+#include "core/error.h"
+#include "crowd/scenario.h"
+#include "gpu/commands.h"
+#include "gpu_fixture.h"
+#include "synth/cpu_synth.h"
+#include "synth/synth_jobs.h"
+#include "synth_fixtures.h"
+
+using namespace throng;
+
+namespace {
+
+struct GpuCrowdRun {
+  synth::GpuMotionPair motion;
+  crowd::CrowdBuffers crowd;
+  gpu::Buffer joints;
+};
+
+// Steps and poses `frames` times on the GPU and the CPU twin, returning the worst joint-matrix
+// and placement differences over all frames.
+struct Comparison {
+  float joints = 0.0f;
+  float placement = 0.0f;
+};
+
+Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd, int frames, float dt) {
+  gpu::Context& ctx = test::gpuContext();
+  synth::SynthPrograms programs(ctx);
+  GpuCrowdRun run{synth::uploadMotionPair(ctx, pair), crowd::uploadCrowd(ctx, cpuCrowd), {}};
+  const size_t jointCount = cpuCrowd.size() * pair.jointCount();
+  run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointMatrix), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  std::vector<synth::JointMatrix> cpuJoints(jointCount);
+  Comparison worst;
+  for (int f = 0; f < frames; ++f) {
+    synth::RootMotionJob root{&run.motion, &pair, &run.crowd, dt, cpuCrowd.steering};
+    synth::PoseJob pose{&run.motion, &run.crowd, &run.joints};
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      root.record(cmd, programs.rootMotion);
+      gpu::computeToComputeBarrier(cmd);
+      pose.record(cmd, programs.pose);
+    });
+    synth::stepCrowdCpu(pair, cpuCrowd, dt, 2);
+    synth::poseCrowdCpu(pair, cpuCrowd, cpuJoints, 2);
+    auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, run.joints, jointCount);
+    crowd::Crowd gpuCrowd;
+    crowd::downloadCrowd(ctx, run.crowd, gpuCrowd);
+    worst.joints = std::max(worst.joints, test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, jointCount * 12));
+    worst.placement = std::max(worst.placement, test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpuCrowd.placement[0].x,
+                                                                      cpuCrowd.size() * 4));
+  }
+  CHECK(ctx.validationMessageCount() == 0);
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("PoseJob: validity") {
+  synth::PoseJob job;
+  auto problems = job.validate();
+  REQUIRE(problems.size() == 3);
+  CHECK(problems[0].find("'motion'") != std::string::npos);
+  CHECK(problems[1].find("'crowd'") != std::string::npos);
+  CHECK(problems[2].find("'joints'") != std::string::npos);
+  CHECK_THROWS_WITH_AS(job.record(VK_NULL_HANDLE, gpu::ComputeProgram{}), doctest::Contains("PoseJob is invalid"), Error);
+}
+
+TEST_CASE("PoseJob: an output buffer too small for the chunk is reported") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::MotionPair pair = test::syntheticPair(8, 12, 10, 3);
+  synth::GpuMotionPair motion = synth::uploadMotionPair(ctx, pair);
+  crowd::Crowd crowd;
+  crowd.resize(10);
+  crowd::CrowdBuffers buffers = crowd::uploadCrowd(ctx, crowd);
+  gpu::Buffer small(ctx, 48 * 8 * 5, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  synth::PoseJob job{&motion, &buffers, &small};
+  auto problems = job.validate();
+  REQUIRE(problems.size() == 1);
+  CHECK(problems[0].find("holds 1920 bytes") != std::string::npos);
+  job.characterCount = 5;
+  CHECK(job.validate().empty());
+  job.firstCharacter = 8;
+  CHECK(!job.validate().empty());
+}
+
+TEST_CASE("RootMotionJob: validity") {
+  synth::RootMotionJob job;
+  job.dt = -1.0f;
+  auto problems = job.validate();
+  REQUIRE(problems.size() == 4);
+  CHECK(problems[3].find("dt must be >= 0") != std::string::npos);
+}
+
+TEST_CASE("GPU vs CPU twin: 1000 random characters on a synthetic pair, several frames") {
+  anim::MotionPair pair = test::syntheticPair(25, 30, 24, 7);
+  crowd::ScenarioOptions options;
+  options.characters = 1000;
+  options.seed = 11;
+  Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 6, 1.0f / 30.0f);
+  MESSAGE("max |GPU - CPU|: joints ", worst.joints, ", placement ", worst.placement);
+  CHECK(worst.joints <= 1e-4f);
+  CHECK(worst.placement <= 1e-4f);
+}
+
+TEST_CASE("GPU vs CPU twin: circle scenario steers identically") {
+  anim::MotionPair pair = test::syntheticPair(12, 20, 16, 5);
+  crowd::ScenarioOptions options;
+  options.name = "circle";
+  options.characters = 300;
+  Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 5, 1.0f / 20.0f);
+  CHECK(worst.joints <= 1e-4f);
+  CHECK(worst.placement <= 1e-4f);
+}
