@@ -10,6 +10,7 @@
 namespace throng::gpu_types {
 using vec4 = glm::vec4;
 using uint = uint32_t;
+using mat4 = glm::mat4;
 #define THRONG_STRUCT(name) struct name
 #else
 #define THRONG_STRUCT(name) struct name
@@ -50,6 +51,25 @@ THRONG_STRUCT(PosePush) {
   uint pad0;
   uint pad1;
   uint pad2;
+};
+
+// Per-frame camera and light for the joint and ground draws (a uniform buffer).
+THRONG_STRUCT(FrameUniforms) {
+  mat4 viewProjection;
+  vec4 eye;               // xyz: camera position; w: ground half-extent
+  vec4 lightDirection;    // xyz: towards the light, normalized
+  vec4 rayRight;          // camera right · tan(fovX/2): ray = forward + ndc.x·right + ndc.y·down
+  vec4 rayDown;           // camera down · tan(fovY/2) (Vulkan NDC y points down)
+  vec4 rayForward;        // camera forward
+  vec4 viewport;          // width, height, focal length in pixels, 0
+};
+
+// Push constants of one joint draw (a chunk of characters).
+THRONG_STRUCT(DrawPush) {
+  uint jointCount;
+  uint firstCharacter;    // vertex index + firstCharacter·jointCount is the global joint
+  uint flags;             // bit 0: tint by LOD level (reserved for the coverage pass)
+  uint pad0;
 };
 
 #ifdef __cplusplus

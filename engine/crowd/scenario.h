@@ -11,7 +11,7 @@ struct ScenarioOptions {
   std::string name = "random";  // "random" or "circle"
   uint32_t characters = 2000;
   uint64_t seed = 1;
-  float density = 0.12f;        // characters per square metre (random)
+  float density = 0.5f;         // characters per square metre (random)
   float minSpeedWeight = 0.0f;  // w range
   float maxSpeedWeight = 1.0f;
   float minScale = 0.92f;       // body-size variation

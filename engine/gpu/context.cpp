@@ -189,6 +189,7 @@ Context::Context(const ContextOptions& options)
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features12};
   features.features.multiDrawIndirect = VK_TRUE;
   features.features.drawIndirectFirstInstance = VK_TRUE;
+  features.features.largePoints = VK_TRUE;
 
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
   deviceInfo.queueCreateInfoCount = 1;

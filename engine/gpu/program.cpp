@@ -16,6 +16,12 @@ Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset,
   return b;
 }
 
+Binding uniformBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset, VkDeviceSize range) {
+  Binding b = storageBinding(slot, buffer, offset, range);
+  b.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  return b;
+}
+
 Binding sampledImageBinding(uint32_t slot, VkImageView view, VkSampler sampler) {
   Binding b;
   b.slot = slot;

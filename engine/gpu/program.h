@@ -22,6 +22,8 @@ struct Binding {
 
 Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset = 0,
                        VkDeviceSize range = VK_WHOLE_SIZE);
+Binding uniformBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset = 0,
+                       VkDeviceSize range = VK_WHOLE_SIZE);
 Binding sampledImageBinding(uint32_t slot, VkImageView view, VkSampler sampler);
 
 // Descriptor set layout (push descriptors) + pipeline layout for a set of stages.

@@ -1,0 +1,37 @@
+#include "anim/default_clips.h"
+
+#include "anim/bvh.h"
+#include "anim/gait.h"
+#include "core/error.h"
+
+namespace throng::anim {
+namespace {
+Clip gaitClip(const GaitParams& params) {
+  Clip clip = toClip(generateGait(params));
+  clip.name = params.name;
+  clip.cycleTravel = glm::vec3(0.0f, 0.0f, static_cast<float>(gaitCycleTravel(params)));
+  return clip;
+}
+
+float speedOf(const Clip& clip) { return glm::length(clip.cycleTravel) / clip.duration(); }
+}  // namespace
+
+ClipPair defaultRunPair() {
+  ClipPair pair{gaitClip(slowRunGait()), gaitClip(fastRunGait()), {}};
+  pair.description = concat("built-in run cycles: slow ", speedOf(pair.slow), " m/s, fast ", speedOf(pair.fast), " m/s");
+  return pair;
+}
+
+ClipPair loadClipPair(const std::filesystem::path& slow, const std::filesystem::path& fast,
+                      const PairOptions& options) {
+  RawClip slowRaw = loadBvh(slow);
+  RawClip fastRaw = loadBvh(fast);
+  PreparedPair prepared = preparePair(slowRaw, fastRaw, options);
+  ClipPair pair{std::move(prepared.slow), std::move(prepared.fast), {}};
+  pair.description = concat(slow.filename().string(), " (loop ", prepared.slowLoop.start, "..", prepared.slowLoop.end,
+                            ", ", speedOf(pair.slow), " m/s) + ", fast.filename().string(), " (loop ",
+                            prepared.fastLoop.start, "..", prepared.fastLoop.end, ", ", speedOf(pair.fast), " m/s)");
+  return pair;
+}
+
+}  // namespace throng::anim

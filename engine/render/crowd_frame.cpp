@@ -1,0 +1,34 @@
+#include "render/crowd_frame.h"
+
+#include "gpu/commands.h"
+
+namespace throng::render {
+
+FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
+                                 const synth::CrowdSynth& synth, const CrowdRenderer& renderer, const Camera& camera,
+                                 float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps) {
+  FrameTimestamps marks;
+  marks.start = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+  synth::recordSynthesis(cmd, programs, synth, dt, context.info().maxStorageBufferRange);
+  marks.synthesized = timestamps.write(cmd);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
+  DrawParams params;
+  params.camera = camera;
+  params.width = targets.width;
+  params.height = targets.height;
+  params.characterCount = synth.crowd.count;
+  params.jointCount = synth.jointCount();
+  params.joints = &synth.joints;
+  params.groundExtent = groundExtent;
+  renderer.record(cmd, targets.color, targets.colorView, targets.depth, targets.depthView, params, targets.finalLayout);
+  marks.rendered = timestamps.write(cmd);
+  return marks;
+}
+
+FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks) {
+  std::vector<uint64_t> ticks = timestamps.fetch();
+  return {timestamps.millisecondsBetween(ticks, marks.start, marks.synthesized),
+          timestamps.millisecondsBetween(ticks, marks.synthesized, marks.rendered)};
+}
+
+}  // namespace throng::render

@@ -1,0 +1,27 @@
+#pragma once
+// Colour + depth images to render into without a window, and their readback to an image.
+#include "core/image.h"
+#include "gpu/buffer.h"
+#include "gpu/image.h"
+
+namespace throng::render {
+
+constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;
+constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+struct OffscreenTarget {
+  gpu::Image2D color;
+  gpu::Image2D depth;
+  gpu::Buffer readback;  // host-visible copy of the colour image
+  uint32_t width = 0, height = 0;
+};
+
+// Throws Error for sizes outside 1..16384.
+OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height);
+
+// Records the copy of the colour image (left in TRANSFER_SRC layout by the frame) to `readback`.
+void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target);
+// After the commands completed: the pixels as an image.
+ImageRgba8 readbackImage(const OffscreenTarget& target);
+
+}  // namespace throng::render

@@ -1,0 +1,36 @@
+#include "synth/crowd_synth.h"
+
+#include <algorithm>
+
+#include "gpu/commands.h"
+#include "synth/gpu_types.h"
+
+namespace throng::synth {
+
+CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd) {
+  CrowdSynth synth;
+  synth.pair = &pair;
+  synth.motion = uploadMotionPair(context, pair);
+  synth.crowd = crowd::uploadCrowd(context, crowd);
+  synth.steering = crowd.steering;
+  VkDeviceSize bytes = VkDeviceSize(crowd.size()) * pair.jointCount() * sizeof(JointMatrix);
+  synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  return synth;
+}
+
+void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
+                     VkDeviceSize maxBindingBytes) {
+  RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering};
+  root.record(cmd, programs.rootMotion);
+  gpu::computeToComputeBarrier(cmd);
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  // Also bounded by 65535 workgroups of 64 per dispatch.
+  const uint32_t chunk = static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
+  for (uint32_t first = 0; first < synth.crowd.count; first += chunk) {
+    PoseJob pose{&synth.motion, &synth.crowd, &synth.joints, first, std::min(chunk, synth.crowd.count - first),
+                 VkDeviceSize(first) * perCharacter};
+    pose.record(cmd, programs.pose);
+  }
+}
+
+}  // namespace throng::synth

@@ -1,0 +1,28 @@
+#pragma once
+// The frame orchestrator for synthesis: owns the GPU copies of one motion pair, the crowd's
+// state and the joint-matrix output, and records the passes in order with their barriers.
+#include "anim/motion_texture.h"
+#include "crowd/crowd.h"
+#include "gpu/buffer.h"
+#include "synth/motion_gpu.h"
+#include "synth/synth_jobs.h"
+
+namespace throng::synth {
+
+struct CrowdSynth {
+  const anim::MotionPair* pair = nullptr;
+  GpuMotionPair motion;
+  crowd::CrowdBuffers crowd;
+  gpu::Buffer joints;  // crowd.count × jointCount JointMatrix
+  anim::Steering steering = anim::Steering::KeepHeading;
+
+  uint32_t jointCount() const { return motion.jointCount; }
+};
+
+CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd);
+
+// Root motion, then the pose pass in chunks that each bind at most `maxBindingBytes` of output.
+void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
+                     VkDeviceSize maxBindingBytes);
+
+}  // namespace throng::synth

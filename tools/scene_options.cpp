@@ -1,0 +1,65 @@
+#include "scene_options.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+
+namespace throng::tools {
+
+void addSceneOptions(CLI::App& command, SceneOptions& o) {
+  command.add_option("--scene", o.scenario.name, "Scenario: random or circle")->capture_default_str();
+  command.add_option("--characters,-n", o.characters, "Number of characters")->capture_default_str();
+  command.add_option("--seed", o.scenario.seed, "Random seed of the scenario")->capture_default_str();
+  command.add_option("--speed-min", o.scenario.minSpeedWeight, "Lowest speed weight w in [0,1]")->capture_default_str();
+  command.add_option("--speed-max", o.scenario.maxSpeedWeight, "Highest speed weight w in [0,1]")->capture_default_str();
+  command.add_option("--density", o.scenario.density, "Characters per square metre (random scene)")->capture_default_str();
+  command.add_option("--slow", o.slowClip, "Slow cycle BVH (default: built-in run)");
+  command.add_option("--fast", o.fastClip, "Fast cycle BVH (default: built-in run)");
+  command.add_option("--camera", o.cameraPreset, "Camera preset: wide, top, street, closeup")->capture_default_str();
+  command.add_option("--eye", o.eye, "Camera position x,y,z (overrides the preset)");
+  command.add_option("--target", o.target, "Camera target x,y,z (overrides the preset)");
+  command.add_option("--fov", o.fovY, "Vertical field of view in degrees");
+  command.add_option("--size", o.size, "Image size WxH")->capture_default_str();
+  command.add_option("--device", o.device, "Vulkan device by index or name (also $THRONG_DEVICE)");
+  command.add_option("--dt", o.dt, "Simulated seconds per frame")->capture_default_str();
+}
+
+Size parseSize(const std::string& text) {
+  unsigned w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
+    fail("--size: expected WxH with 1..16384 pixels per side, got '", text, "'");
+  return {w, h};
+}
+
+void validateSceneOptions(SceneOptions& o) {
+  if (o.characters < 1 || o.characters > 4000000)
+    fail("--characters: expected 1..4000000, got ", o.characters);
+  o.scenario.characters = static_cast<uint32_t>(o.characters);
+  if (o.slowClip.empty() != o.fastClip.empty()) fail("--slow and --fast must be given together");
+  if (!(o.dt > 0.0f && o.dt <= 1.0f)) fail("--dt: expected seconds in (0, 1], got ", o.dt);
+  if (o.fovY != 0.0f && !(o.fovY > 1.0f && o.fovY < 170.0f)) fail("--fov: expected 1..170 degrees, got ", o.fovY);
+  parseSize(o.size);
+  crowd::makeScenario([&] {  // validates the scenario options on a one-character crowd
+    crowd::ScenarioOptions probe = o.scenario;
+    probe.characters = 1;
+    return probe;
+  }());
+  sceneCamera(o);
+}
+
+anim::ClipPair loadSceneClips(const SceneOptions& o) {
+  if (o.slowClip.empty()) return anim::defaultRunPair();
+  return anim::loadClipPair(o.slowClip, o.fastClip);
+}
+
+render::Camera sceneCamera(const SceneOptions& o) {
+  render::Camera camera = render::cameraPreset(o.cameraPreset, crowd::scenarioExtent(o.scenario));
+  if (!o.eye.empty()) camera.eye = render::parseVec3(o.eye, "--eye");
+  if (!o.target.empty()) camera.target = render::parseVec3(o.target, "--target");
+  if (o.fovY != 0.0f) camera.fovYDegrees = o.fovY;
+  if (glm::length(camera.eye - camera.target) < 1e-3f) fail("--eye and --target must differ");
+  return camera;
+}
+
+}  // namespace throng::tools

@@ -1,0 +1,40 @@
+#pragma once
+// Options shared by `throng render`, `throng view` and `throng bench`: the scene, the clips and
+// the camera. Everything is validated before any output is written.
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "anim/default_clips.h"
+#include "crowd/scenario.h"
+#include "render/camera.h"
+
+namespace throng::tools {
+
+struct SceneOptions {
+  crowd::ScenarioOptions scenario;
+  long long characters = 3000;  // signed so that a negative count is reported, not wrapped
+  std::string slowClip, fastClip;
+  std::string cameraPreset = "wide";
+  std::string eye, target;
+  float fovY = 0.0f;            // 0: the preset's
+  std::string size = "1280x720";
+  std::string device;
+  float dt = 1.0f / 30.0f;
+};
+
+void addSceneOptions(CLI::App& command, SceneOptions& options);
+
+struct Size {
+  uint32_t width = 0, height = 0;
+};
+// "WxH" → size; throws Error on anything else.
+Size parseSize(const std::string& text);
+
+// Checks everything that does not need a file or a GPU; throws Error on the first problem.
+void validateSceneOptions(SceneOptions& options);
+anim::ClipPair loadSceneClips(const SceneOptions& options);
+render::Camera sceneCamera(const SceneOptions& options);
+
+}  // namespace throng::tools

@@ -1,0 +1,11 @@
+#pragma once
+#include <algorithm>
+#include <vector>
+
+namespace throng::tools {
+inline double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+}  // namespace throng::tools
