@@ -1,6 +1,8 @@
 #include <doctest/doctest.h>
 
+#include "anim/default_clips.h"
 #include "core/error.h"
+#include "test_support.h"
 #include "crowd/scenario.h"
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
@@ -109,6 +111,33 @@ TEST_CASE("GPU vs CPU twin: circle scenario steers identically") {
   options.name = "circle";
   options.characters = 300;
   Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 5, 1.0f / 20.0f);
+  CHECK(worst.joints <= 1e-4f);
+  CHECK(worst.placement <= 1e-4f);
+}
+
+TEST_CASE("GPU vs CPU twin on real capture: Bandai Namco run + dash (the paper's setup)") {
+  if (!test::haveSharedData("bvh/bandai_namco")) return;
+  auto dir = test::sharedDataDir() / "bvh/bandai_namco";
+  anim::ClipPair clips = anim::loadClipPair(dir / "dataset-1_run_normal_001.bvh", dir / "dataset-1_dash_normal_001.bvh");
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 1000;
+  Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 4, 1.0f / 30.0f);
+  MESSAGE(clips.description, ": max |GPU - CPU| joints ", worst.joints);
+  CHECK(worst.joints <= 1e-4f);
+  CHECK(worst.placement <= 1e-4f);
+}
+
+TEST_CASE("GPU vs CPU twin on real capture: CMU 35_17 run/jog + 09_01 run (loops cut from raw capture)") {
+  if (!test::haveSharedData("bvh/cmu")) return;
+  auto dir = test::sharedDataDir() / "bvh/cmu";
+  anim::ClipPair clips = anim::loadClipPair(dir / "cmu_35_17_runjog.bvh", dir / "cmu_09_01_run.bvh");
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 1000;
+  options.seed = 5;
+  Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 4, 1.0f / 30.0f);
+  MESSAGE(clips.description, ": max |GPU - CPU| joints ", worst.joints);
   CHECK(worst.joints <= 1e-4f);
   CHECK(worst.placement <= 1e-4f);
 }
