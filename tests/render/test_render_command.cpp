@@ -1,0 +1,81 @@
+// `throng render` end to end: a golden image of a small fixed scene, and bad options that must
+// fail clearly without leaving files behind.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "cli_support.h"
+#include "core/image.h"
+#include "test_support.h"
+
+using namespace throng;
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kGoldenArgs =
+    "render --characters 50 --size 320x180 --seed 7 --frames 4 --camera closeup --eye 6,3.5,-9 --validation";
+
+size_t fileCount(const fs::path& dir) {
+  size_t n = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) n += entry.is_regular_file() ? 1 : 0;
+  return n;
+}
+}  // namespace
+
+TEST_CASE("render: a small fixed scene matches the stored golden image") {
+  fs::path out = test::freshDirectory("golden_render");
+  test::CommandResult run = test::runThrong(std::string(kGoldenArgs) + " --out " + out.string());
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  CHECK(run.output.find("validation message") == std::string::npos);
+  CHECK(fileCount(out) == 4);
+  ImageRgba8 actual = readPng(out / "frame_0003.png");
+  fs::path goldenPath = fs::path(THRONG_GOLDEN_DIR) / "small_scene.png";
+  REQUIRE_MESSAGE(fs::exists(goldenPath), "missing golden image; run scripts/update_goldens.sh");
+  ImageRgba8 golden = readPng(goldenPath);
+  ImageDiff diff = compareImages(actual, golden, 24);
+  MESSAGE("golden diff: mean ", diff.meanAbsError, ", pixels over threshold ", diff.fractionDifferent * 100.0, "%");
+  bool ok = diff.meanAbsError < 1.5 && diff.fractionDifferent < 0.01;
+  if (!ok) {
+    writePngAtomic(out / "actual.png", actual);
+    writePngAtomic(out / "diff.png", diff.diffImage);
+    MESSAGE("wrote ", (out / "actual.png").string(), " and ", (out / "diff.png").string());
+  }
+  CHECK(ok);
+  // Not a blank frame: characters cover a real part of the picture.
+  size_t coloured = 0;
+  for (const Rgba8& p : actual.pixels) coloured += (std::max({p.r, p.g, p.b}) - std::min({p.r, p.g, p.b}) > 60) ? 1 : 0;
+  CHECK(coloured > actual.pixels.size() / 50);
+}
+
+TEST_CASE("render: bad options fail clearly and write nothing") {
+  fs::path out = test::freshDirectory("bad_options");
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  const Case cases[] = {
+      {"--characters -5", "--characters: expected 1..4000000, got -5"},
+      {"--scene stadium", "unknown scene 'stadium'"},
+      {"--size 12x", "--size: expected WxH"},
+      {"--camera orbit", "unknown camera preset 'orbit'"},
+      {"--slow /nonexistent/slow.bvh --fast /nonexistent/fast.bvh", "/nonexistent/slow.bvh: cannot open"},
+      {"--slow only.bvh", "--slow and --fast must be given together"},
+      {"--frames 0", "--frames: expected 1..100000"},
+      {"--eye 1,2", "--eye: expected three numbers"},
+  };
+  for (const Case& c : cases) {
+    test::CommandResult run = test::runThrong("render " + c.args + " --out " + out.string());
+    INFO(c.args, " → ", run.output);
+    CHECK(run.exitCode != 0);
+    CHECK(run.output.find(c.message) != std::string::npos);
+    CHECK(fileCount(out) == 0);
+  }
+  // An output path that is a file, not a directory.
+  fs::path file = out / "not_a_dir";
+  { std::FILE* f = std::fopen(file.c_str(), "w"); std::fclose(f); }
+  test::CommandResult run = test::runThrong("render --frames 1 --out " + file.string());
+  CHECK(run.exitCode != 0);
+  CHECK(run.output.find("not a directory") != std::string::npos);
+}
