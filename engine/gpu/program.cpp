@@ -108,7 +108,9 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
   vkCmdPushDescriptorSetKHR(cmd, bindPoint, layout.layout, 0, static_cast<uint32_t>(writes.size()), writes.data());
 }
 
-ComputeProgram::ComputeProgram(const Context& context, const std::string& shaderFile) : name_(shaderFile) {
+ComputeProgram::ComputeProgram(const Context& context, const std::string& shaderFile,
+                               std::span<const uint32_t> specialization)
+    : name_(shaderFile) {
   std::span<const uint32_t> words = shaders::embeddedSpirv(shaderFile);
   if (words.empty()) fail("shader ", shaderFile, " is not embedded in this build");
   reflection_ = reflectSpirv(words, shaderFile);
@@ -121,6 +123,12 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& shader
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module;
   info.stage.pName = "main";
+  std::vector<VkSpecializationMapEntry> entries;
+  for (uint32_t i = 0; i < specialization.size(); ++i)
+    entries.push_back({i, static_cast<uint32_t>(i * sizeof(uint32_t)), sizeof(uint32_t)});
+  VkSpecializationInfo specInfo{static_cast<uint32_t>(entries.size()), entries.data(), specialization.size_bytes(),
+                                specialization.data()};
+  if (!specialization.empty()) info.stage.pSpecializationInfo = &specInfo;
   info.layout = layout_.layout;
   VkDevice device = context.device();
   VkPipeline pipeline = VK_NULL_HANDLE;

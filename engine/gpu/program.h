@@ -45,8 +45,10 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
 class ComputeProgram {
  public:
   ComputeProgram() = default;
-  // `shaderFile` names an embedded shader (e.g. "synth_blend.comp").
-  ComputeProgram(const Context& context, const std::string& shaderFile);
+  // `shaderFile` names an embedded shader (e.g. "synth_pose.comp"); `specialization[i]` is the
+  // value of the shader's `layout(constant_id = i)` constant (32-bit each).
+  ComputeProgram(const Context& context, const std::string& shaderFile,
+                 std::span<const uint32_t> specialization = {});
 
   const std::string& name() const { return name_; }
   const ShaderReflection& reflection() const { return reflection_; }

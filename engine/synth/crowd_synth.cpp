@@ -21,7 +21,7 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
                      VkDeviceSize maxBindingBytes) {
   RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering};
-  root.record(cmd, programs.rootMotion);
+  root.record(cmd, programs);
   gpu::computeToComputeBarrier(cmd);
   const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
   // Also bounded by 65535 workgroups of 64 per dispatch.
@@ -29,7 +29,7 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
   for (uint32_t first = 0; first < synth.crowd.count; first += chunk) {
     PoseJob pose{&synth.motion, &synth.crowd, &synth.joints, first, std::min(chunk, synth.crowd.count - first),
                  VkDeviceSize(first) * perCharacter};
-    pose.record(cmd, programs.pose);
+    pose.record(cmd, programs);
   }
 }
 

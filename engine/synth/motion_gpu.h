@@ -1,6 +1,6 @@
 #pragma once
 // A slow/fast motion pair on the GPU: two RGBA32F motion textures sampled with texelFetch,
-// the parent array and joint radii as SSBOs.
+// the joint radii as an SSBO (the parent array is baked into the pose pipeline).
 #include "anim/motion_texture.h"
 #include "gpu/buffer.h"
 #include "gpu/image.h"
@@ -10,8 +10,12 @@ namespace throng::synth {
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;
-  gpu::Buffer parents;
+  std::vector<int32_t> parentsHost;
   gpu::Buffer jointRadius;
+  // The same texels as SSBOs: the pose pass reads these, because on lavapipe a buffer load is
+  // several times cheaper than texelFetch (see README, benchmarks).
+  gpu::Buffer slowTexels;
+  gpu::Buffer fastTexels;
   gpu::Handle<VkSampler> sampler;
   uint32_t jointCount = 0;
   uint32_t slowFrames = 0;

@@ -12,8 +12,22 @@ void throwIfInvalid(const std::string& job, const std::vector<std::string>& prob
   throw Error(message);
 }
 
-SynthPrograms::SynthPrograms(const gpu::Context& context)
-    : rootMotion(context, "root_motion.comp"), pose(context, "synth_pose.comp") {}
+namespace {
+// Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j.
+std::vector<uint32_t> poseSpecialization(const std::vector<int32_t>& parents) {
+  if (parents.empty() || parents.size() > 64)
+    fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
+  std::vector<uint32_t> values(65, static_cast<uint32_t>(-1));
+  values[0] = static_cast<uint32_t>(parents.size());
+  for (size_t j = 0; j < parents.size(); ++j) values[1 + j] = static_cast<uint32_t>(parents[j]);
+  return values;
+}
+}  // namespace
+
+SynthPrograms::SynthPrograms(const gpu::Context& context, const std::vector<int32_t>& parents)
+    : rootMotion(context, "root_motion.comp"),
+      pose(context, "synth_pose.comp", poseSpecialization(parents)),
+      poseParents(parents) {}
 
 std::vector<std::string> RootMotionJob::validate() const {
   std::vector<std::string> problems;
@@ -27,7 +41,7 @@ std::vector<std::string> RootMotionJob::validate() const {
   return problems;
 }
 
-void RootMotionJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
+void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("RootMotionJob", validate());
   RootMotionPush push{};
   push.characterCount = crowd->count;
@@ -45,7 +59,7 @@ void RootMotionJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
       gpu::storageBinding(2, crowd->placement),
       gpu::storageBinding(3, crowd->motion),
   };
-  gpu::dispatch(cmd, program, bindings, push, crowd->count);
+  gpu::dispatch(cmd, programs.rootMotion, bindings, push, crowd->count);
 }
 
 std::vector<std::string> PoseJob::validate() const {
@@ -65,8 +79,11 @@ std::vector<std::string> PoseJob::validate() const {
   return problems;
 }
 
-void PoseJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
+void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("PoseJob", validate());
+  if (programs.poseParents != motion->parentsHost)
+    fail("PoseJob: the pose program was specialized for another skeleton (", programs.poseParents.size(),
+         " joints) than the motion pair's (", motion->parentsHost.size(), " joints)");
   uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
   PosePush push{};
   push.characterCount = count;
@@ -76,15 +93,14 @@ void PoseJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) co
   push.firstCharacter = firstCharacter;
   VkDeviceSize bytes = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
   gpu::Binding bindings[] = {
-      gpu::sampledImageBinding(0, motion->slow.view(), motion->sampler),
-      gpu::sampledImageBinding(1, motion->fast.view(), motion->sampler),
-      gpu::storageBinding(2, motion->parents),
-      gpu::storageBinding(3, motion->jointRadius),
-      gpu::storageBinding(4, crowd->placement),
-      gpu::storageBinding(5, crowd->motion),
-      gpu::storageBinding(6, *joints, jointsOffset, bytes),
+      gpu::storageBinding(0, motion->slowTexels),
+      gpu::storageBinding(1, motion->fastTexels),
+      gpu::storageBinding(2, motion->jointRadius),
+      gpu::storageBinding(3, crowd->placement),
+      gpu::storageBinding(4, crowd->motion),
+      gpu::storageBinding(5, *joints, jointsOffset, bytes),
   };
-  gpu::dispatch(cmd, program, bindings, push, count);
+  gpu::dispatch(cmd, programs.pose, bindings, push, count);
 }
 
 }  // namespace throng::synth

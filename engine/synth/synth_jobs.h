@@ -12,6 +12,15 @@
 
 namespace throng::synth {
 
+// The compiled programs of the synthesis passes. The pose pass is specialized for one
+// skeleton (joint count and parent array are baked in), so build one per skeleton topology.
+struct SynthPrograms {
+  gpu::ComputeProgram rootMotion;
+  gpu::ComputeProgram pose;
+  std::vector<int32_t> poseParents;  // the skeleton `pose` was specialized for
+  SynthPrograms(const gpu::Context& context, const std::vector<int32_t>& parents);
+};
+
 // Eq. 10 on the GPU; twin: anim::stepCharacter.
 struct RootMotionJob {
   const GpuMotionPair* motion = nullptr;        // input
@@ -21,7 +30,7 @@ struct RootMotionJob {
   anim::Steering steering = anim::Steering::KeepHeading;
 
   std::vector<std::string> validate() const;
-  void record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const;
+  void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
 // Blend + hierarchy + A = J·M on the GPU; twin: anim::poseCharacter.
@@ -34,14 +43,7 @@ struct PoseJob {
   VkDeviceSize jointsOffset = 0;                // where the chunk's output starts in `joints`
 
   std::vector<std::string> validate() const;
-  void record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const;
-};
-
-// The compiled programs of the synthesis passes (created once per context).
-struct SynthPrograms {
-  gpu::ComputeProgram rootMotion;
-  gpu::ComputeProgram pose;
-  explicit SynthPrograms(const gpu::Context& context);
+  void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
 // Throws Error listing every problem validate() found.

@@ -29,7 +29,7 @@ struct Comparison {
 
 Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd, int frames, float dt) {
   gpu::Context& ctx = test::gpuContext();
-  synth::SynthPrograms programs(ctx);
+  synth::SynthPrograms programs(ctx, pair.parents);
   GpuCrowdRun run{synth::uploadMotionPair(ctx, pair), crowd::uploadCrowd(ctx, cpuCrowd), {}};
   const size_t jointCount = cpuCrowd.size() * pair.jointCount();
   run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointMatrix), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
@@ -39,9 +39,9 @@ Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd
     synth::RootMotionJob root{&run.motion, &pair, &run.crowd, dt, cpuCrowd.steering};
     synth::PoseJob pose{&run.motion, &run.crowd, &run.joints};
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      root.record(cmd, programs.rootMotion);
+      root.record(cmd, programs);
       gpu::computeToComputeBarrier(cmd);
-      pose.record(cmd, programs.pose);
+      pose.record(cmd, programs);
     });
     synth::stepCrowdCpu(pair, cpuCrowd, dt, 2);
     synth::poseCrowdCpu(pair, cpuCrowd, cpuJoints, 2);
@@ -65,7 +65,7 @@ TEST_CASE("PoseJob: validity") {
   CHECK(problems[0].find("'motion'") != std::string::npos);
   CHECK(problems[1].find("'crowd'") != std::string::npos);
   CHECK(problems[2].find("'joints'") != std::string::npos);
-  CHECK_THROWS_WITH_AS(job.record(VK_NULL_HANDLE, gpu::ComputeProgram{}), doctest::Contains("PoseJob is invalid"), Error);
+  CHECK_THROWS_WITH_AS(job.record(VK_NULL_HANDLE, synth::SynthPrograms(test::gpuContext(), {-1})), doctest::Contains("PoseJob is invalid"), Error);
 }
 
 TEST_CASE("PoseJob: an output buffer too small for the chunk is reported") {

@@ -1,0 +1,196 @@
+// `throng bench`: synthesis on the GPU vs the CPU twin (one and all threads) and synthesis +
+// render, medians of many frames after warm-up, GPU timestamps. Prints a table and writes JSON.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "core/log.h"
+#include "gpu/commands.h"
+#include "render/crowd_frame.h"
+#include "render/offscreen_target.h"
+#include "scene_options.h"
+#include "stats.h"
+#include "synth/cpu_synth.h"
+
+namespace throng::tools {
+namespace {
+
+struct BenchOptions {
+  std::string json;
+  std::vector<uint32_t> counts{1000, 10000, 100000};
+  int frames = 20;
+  int warmup = 3;
+  uint32_t renderCharacters = 10000;
+  std::string size = "1280x720";
+  std::string device;
+  bool quick = false;
+};
+
+struct Row {
+  std::string variant;
+  uint32_t characters = 0;
+  double synthesisMs = 0.0;
+  double renderMs = 0.0;  // 0 when the variant does not render
+  int frames = 0;
+};
+
+constexpr float kDt = 1.0f / 30.0f;
+
+crowd::Crowd benchCrowd(uint32_t n) {
+  crowd::ScenarioOptions options;
+  options.characters = n;
+  options.seed = 42;
+  return crowd::makeScenario(options);
+}
+
+Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& programs, const anim::MotionPair& pair,
+                      uint32_t n, const BenchOptions& o) {
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, benchCrowd(n));
+  gpu::CommandPool pool(context);
+  VkCommandBuffer cmd = pool.allocate();
+  gpu::Fence fence(context);
+  gpu::TimestampPool timestamps(context, 2);
+  std::vector<double> ms;
+  for (int f = 0; f < o.warmup + o.frames; ++f) {
+    timestamps.reset();
+    gpu::beginCommands(cmd);
+    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+    synth::recordSynthesis(cmd, programs, synth, kDt, context.info().maxStorageBufferRange);
+    timestamps.write(cmd);
+    gpu::endCommands(cmd);
+    gpu::submit(context, cmd, fence.get());
+    fence.wait();
+    fence.reset();
+    if (f >= o.warmup) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
+  }
+  return {"gpu-synthesis", n, median(ms), 0.0, o.frames};
+}
+
+Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads, const BenchOptions& o) {
+  crowd::Crowd crowd = benchCrowd(n);
+  std::vector<synth::JointMatrix> joints(size_t(n) * pair.jointCount());
+  std::vector<double> ms;
+  int frames = n >= 100000 ? std::max(5, o.frames / 2) : o.frames;  // the slow baseline gets fewer frames
+  for (int f = 0; f < 1 + frames; ++f) {
+    auto start = std::chrono::steady_clock::now();
+    synth::stepCrowdCpu(pair, crowd, kDt, threads);
+    synth::poseCrowdCpu(pair, crowd, joints, threads);
+    auto end = std::chrono::steady_clock::now();
+    if (f >= 1) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+  }
+  return {threads == 1 ? "cpu-1-thread" : concat("cpu-", threads, "-threads"), n, median(ms), 0.0, frames};
+}
+
+Row benchRender(const gpu::Context& context, const synth::SynthPrograms& programs, const anim::MotionPair& pair,
+                const BenchOptions& o) {
+  Size size = parseSize(o.size);
+  crowd::ScenarioOptions scenario;
+  scenario.characters = o.renderCharacters;
+  scenario.seed = 42;
+  crowd::Crowd crowd = crowd::makeScenario(scenario);
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd);
+  render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
+  render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
+  render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
+                               size.width, size.height, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  gpu::CommandPool pool(context);
+  VkCommandBuffer cmd = pool.allocate();
+  gpu::Fence fence(context);
+  gpu::TimestampPool timestamps(context, 4);
+  std::vector<double> synthMs, renderMs;
+  for (int f = 0; f < o.warmup + o.frames; ++f) {
+    timestamps.reset();
+    gpu::beginCommands(cmd);
+    render::FrameTimestamps marks = render::recordCrowdFrame(cmd, context, programs, synth, renderer, camera,
+                                                             100.0f, targets, kDt, timestamps);
+    gpu::endCommands(cmd);
+    gpu::submit(context, cmd, fence.get());
+    fence.wait();
+    fence.reset();
+    if (f < o.warmup) continue;
+    render::FrameTimings t = render::readFrameTimings(timestamps, marks);
+    synthMs.push_back(t.synthesisMs);
+    renderMs.push_back(t.renderMs);
+  }
+  return {concat("gpu-synthesis+render-", o.size), o.renderCharacters, median(synthMs), median(renderMs), o.frames};
+}
+
+void runBench(BenchOptions& o) {
+  if (o.quick) {
+    o.counts = {1000};
+    o.frames = 5;
+    o.warmup = 1;
+    o.renderCharacters = 1000;
+    o.size = "320x180";
+  }
+  if (o.frames < 1 || o.warmup < 0) fail("--frames must be >= 1 and --warmup >= 0");
+  for (uint32_t n : o.counts)
+    if (n == 0 || n > 4000000) fail("--characters: each count must be 1..4000000, got ", n);
+  parseSize(o.size);
+  if (!o.json.empty()) ensureWritableDirectory(std::filesystem::absolute(o.json).parent_path());
+
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  gpu::ContextOptions contextOptions;
+  contextOptions.device = o.device;
+  gpu::Context context(contextOptions);
+  synth::SynthPrograms programs(context, pair.parents);
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+
+  std::vector<Row> rows;
+  auto report = [&](const Row& r) {
+    rows.push_back(r);
+    std::printf("%-34s %9u %14.3f %12.3f\n", r.variant.c_str(), r.characters, r.synthesisMs, r.renderMs);
+    std::fflush(stdout);
+  };
+  std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
+  std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
+  for (uint32_t n : o.counts) {
+    report(benchGpuSynthesis(context, programs, pair, n, o));
+    report(benchCpuSynthesis(pair, n, 1, o));
+    if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
+  }
+  report(benchRender(context, programs, pair, o));
+
+  nlohmann::json doc;
+  doc["device"] = context.info().name;
+  doc["driver"] = context.info().driver;
+  doc["jointsPerCharacter"] = pair.jointCount();
+  doc["cpuThreads"] = threads;
+  doc["framesMeasured"] = o.frames;
+  for (const Row& r : rows) {
+    doc["results"].push_back({{"variant", r.variant}, {"characters", r.characters},
+                              {"synthesisMsMedian", r.synthesisMs}, {"renderMsMedian", r.renderMs},
+                              {"frames", r.frames}});
+  }
+  if (!o.json.empty()) {
+    writeTextFileAtomic(o.json, doc.dump(2) + "\n");
+    std::printf("wrote %s\n", o.json.c_str());
+  }
+}
+
+void addBenchCommand(CLI::App& app, int&) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench", "Measure synthesis (GPU vs CPU twin) and rendering speed");
+  cmd->add_option("--json", options->json, "Also write the results as JSON to this file");
+  cmd->add_option("--characters", options->counts, "Crowd sizes for the synthesis rows")->capture_default_str();
+  cmd->add_option("--frames", options->frames, "Measured frames per row (median reported)")->capture_default_str();
+  cmd->add_option("--warmup", options->warmup, "Frames run before measuring")->capture_default_str();
+  cmd->add_option("--render-characters", options->renderCharacters, "Crowd size of the render row")->capture_default_str();
+  cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
+  cmd->add_option("--device", options->device, "Vulkan device by index or name");
+  cmd->add_flag("--quick", options->quick, "A few frames of 1000 characters (smoke test)");
+  cmd->callback([options] { runBench(*options); });
+}
+
+const CommandRegistration kRegistration("bench", addBenchCommand);
+
+}  // namespace
+}  // namespace throng::tools
