@@ -16,8 +16,13 @@ struct UnitsGuess {
 UnitsGuess detectUnits(const Skeleton& skeleton);
 Clip scaleToMetres(const Clip& clip, float metresPerUnit);
 
-// Resample to a new frame time (slerp rotations, lerp root positions).
+// Resample to a new frame time (slerp rotations, lerp root positions). The duration is kept
+// exactly: the clip gets round(duration / frameTime) frames, so the frame time actually used
+// is the nearest one that divides the duration. A clip with a non-zero cycleTravel is a cycle
+// (the frame after the last is frame 0 moved by cycleTravel); any other holds its last frame.
 Clip resample(const Clip& clip, float frameTime);
+// The same with the frame count given (frame time = duration / frameCount).
+Clip resampleFrames(const Clip& clip, int frameCount, bool cyclic);
 
 struct LoopCut {
   int start = 0;   // first frame of the cycle
@@ -25,10 +30,18 @@ struct LoopCut {
   float error = 0; // pose + velocity distance between start and end (radians-ish, per joint)
   int length() const { return end - start; }
 };
-// Best cycle in [minFrames, maxFrames] frames by pose and velocity similarity.
+// Best cycle in [minFrames, maxFrames] frames by pose and velocity similarity (root
+// positions in metres). A leading calibration T-pose is skipped; when two or three cycles
+// match about as well as one, the single cycle is returned. Error when no cut fits.
 LoopCut findBestLoop(const Clip& clip, int minFrames, int maxFrames);
+// The distance findBestLoop scores a cut (start, end) with, to compare with other pairs.
+float loopError(const Clip& clip, int start, int end);
 // Frames [start, end) as a cyclic clip; cycleTravel = root(end) - root(start).
 Clip cutLoop(const Clip& clip, const LoopCut& cut);
+// cutLoop, then the pose and root-height mismatch left between frames end and start is
+// spread over the cycle (frame k gets k/length of it), so the cycle repeats without a pop
+// and without climbing or sinking: cycleTravel.y becomes 0. preparePair uses this.
+Clip closeSeam(const Clip& clip, const LoopCut& cut);
 
 // Rotates the whole clip about +y so its net travel points along +z and puts the first
 // frame's root above the origin.
@@ -49,7 +62,11 @@ struct PreparedPair {
   LoopCut slowLoop;
   LoopCut fastLoop;
 };
-// The whole preparation for a slow/fast pair; a topology mismatch is a clear Error.
+// The whole preparation for a slow/fast pair; a topology mismatch is a clear Error. Each clip:
+// toClip, metres, resample to options.frameTime, best loop of 0.4–1.6 s (closeSeam; a clip
+// too short for that, or cutLoops false, is one whole cycle whose travel is the mean root
+// velocity × duration), faceForwardZ; then both get the mean of the two cycle lengths in
+// frames (so frame f of one matches frame f of the other) and alignPhases.
 PreparedPair preparePair(const RawClip& slow, const RawClip& fast, const PairOptions& options);
 
 }  // namespace throng::anim
