@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Fresh machine → all tests: installs the packages, builds, runs every suite (GPU suites on
+# lavapipe with two threads and the Khronos validation layer), then the CPU suites again under
+# AddressSanitizer + UndefinedBehaviorSanitizer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc 2>/dev/null || echo 2)
+./scripts/install_deps.sh
+./scripts/build.sh
+export LP_NUM_THREADS=2 THRONG_VALIDATION=1
+ctest --preset release -j1
+cmake --preset asan
+cmake --build --preset asan -j"$jobs" --target throng $(ctest --test-dir build-asan -N -L cpu 2>/dev/null | sed -n 's/^ *Test *#[0-9]*: *//p')
+ctest --preset asan-cpu -j1
