@@ -1,0 +1,82 @@
+#include "storyboard/storyboard_json.h"
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+
+namespace throng::storyboard {
+namespace {
+using Json = nlohmann::ordered_json;
+constexpr int64_t kLimit = 1'000'000;
+
+int intField(const Json& object, const char* key, const std::string& where) {
+  if (!object.contains(key) || !object[key].is_number_integer() || object[key].get<int64_t>() < -kLimit ||
+      object[key].get<int64_t>() > kLimit)
+    fail(where, ": expected an integer \"", key, "\" within +-", kLimit);
+  return object[key].get<int>();
+}
+
+std::string stringField(const Json& object, const char* key, const std::string& where) {
+  if (!object.contains(key) || !object[key].is_string()) fail(where, ": expected a string \"", key, "\"");
+  return object[key].get<std::string>();
+}
+}  // namespace
+
+std::string storyboardToJson(const Storyboard& storyboard) {
+  Json root;
+  root["width"] = storyboard.width;
+  root["height"] = storyboard.height;
+  Json agents = Json::array();
+  for (const Glyph& g : storyboard.glyphs) {
+    Json a;
+    a["x"] = g.x;
+    a["y"] = g.y;
+    a["heading"] = headingName(g.heading);
+    a["state"] = stateName(g.state);
+    a["action"] = actionName(g.action);
+    a["group"] = g.group;
+    agents.push_back(std::move(a));
+  }
+  root["agents"] = std::move(agents);
+  Json invalid = Json::array();
+  for (const InvalidGlyph& g : storyboard.invalid) invalid.push_back(Json{{"x", g.x}, {"y", g.y}, {"reason", g.reason}});
+  root["invalid"] = std::move(invalid);
+  return root.dump();
+}
+
+Storyboard storyboardFromJson(std::string_view text, const std::string& source) {
+  Json root;
+  try {
+    root = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    fail(source, ": not valid JSON (", e.what(), ")");
+  }
+  if (!root.is_object()) fail(source, ": expected an object {\"width\", \"height\", \"agents\"}");
+  Storyboard storyboard;
+  storyboard.width = intField(root, "width", source);
+  storyboard.height = intField(root, "height", source);
+  if (!root.contains("agents") || !root["agents"].is_array()) fail(source, ": expected an array \"agents\"");
+  for (size_t i = 0; i < root["agents"].size(); ++i) {
+    const Json& a = root["agents"][i];
+    std::string where = concat(source, ": agents[", i, "]");
+    if (!a.is_object()) fail(where, ": expected an object");
+    Glyph g;
+    g.x = intField(a, "x", where);
+    g.y = intField(a, "y", where);
+    std::string heading = stringField(a, "heading", where), state = stringField(a, "state", where),
+                action = stringField(a, "action", where);
+    auto h = parseHeading(heading);
+    if (!h) fail(where, ": heading \"", heading, "\" (expected Top, Left, Down, Right, TopLeft, TopRight, LeftDown, RightDown)");
+    auto s = parseState(state);
+    if (!s) fail(where, ": state \"", state, "\" (expected stroll or hurried)");
+    auto act = parseAction(action);
+    if (!act) fail(where, ": action \"", action, "\" (expected walk, run, talk or jump)");
+    g.heading = *h, g.state = *s, g.action = *act;
+    g.group = a.contains("group") ? intField(a, "group", where) : 0;
+    if (g.group < 0) fail(where, ": group must be >= 0");
+    storyboard.glyphs.push_back(g);
+  }
+  return storyboard;
+}
+
+}  // namespace throng::storyboard
