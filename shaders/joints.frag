@@ -1,9 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Ray-casts the joint's ellipsoid (a unit sphere after the inverse affine map) through this
-// pixel, writes its true depth, and lights it: directional + sky ambient + a little rim so
-// silhouettes read at a distance.
+// Ray-casts the joint's ellipsoid through this pixel, writes its true depth, and shades it.
 #include "shared_types.h"
+#include "joint_sprite.glsl"
 
 layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
 layout(location = 0) flat in vec3 tint;
@@ -13,24 +12,11 @@ layout(location = 3) flat in vec4 inverse2;
 layout(location = 0) out vec4 color;
 
 void main() {
-  vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
-  vec3 eye = frame.eye.xyz;
-  vec3 dir = normalize(frame.rayForward.xyz + ndc.x * frame.rayRight.xyz + ndc.y * frame.rayDown.xyz);
-  mat3 inv = transpose(mat3(inverse0.xyz, inverse1.xyz, inverse2.xyz));
-  vec3 o = inv * eye + vec3(inverse0.w, inverse1.w, inverse2.w);
-  vec3 d = inv * dir;
-  float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
-  float disc = b * b - a * c;
-  if (disc < 0.0) discard;
-  float t = (-b - sqrt(disc)) / a;
-  if (t <= 0.0) discard;
-  vec3 hit = eye + t * dir;
-  vec4 clip = frame.viewProjection * vec4(hit, 1.0);
+  vec3 dir = pixelRay(gl_FragCoord.xy, frame);
+  float t;
+  vec3 n;
+  if (!hitJoint(frame.eye.xyz, dir, inverse0, inverse1, inverse2, t, n)) discard;
+  vec4 clip = frame.viewProjection * vec4(frame.eye.xyz + t * dir, 1.0);
   gl_FragDepth = clip.z / clip.w;
-  vec3 n = normalize(transpose(inv) * (o + t * d));
-  float diffuse = max(dot(n, frame.lightDirection.xyz), 0.0);
-  float sky = 0.5 + 0.5 * n.y;
-  float rim = pow(1.0 - max(dot(n, -dir), 0.0), 3.0);
-  vec3 col = tint * (0.28 + 0.22 * sky + 0.75 * diffuse) + 0.12 * rim;
-  color = vec4(pow(col, vec3(1.0 / 2.2)), 1.0);
+  color = vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0);
 }

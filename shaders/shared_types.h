@@ -68,8 +68,24 @@ THRONG_STRUCT(FrameUniforms) {
 THRONG_STRUCT(DrawPush) {
   uint jointCount;
   uint firstCharacter;    // vertex index + firstCharacter·jointCount is the global joint
-  uint flags;             // bit 0: tint by LOD level (reserved for the coverage pass)
+  uint flags;             // kDrawFromList: vertex i draws joint nearList[listBase + i]
+  uint listBase;
+};
+
+const uint kDrawFromList = 1u;
+
+// Push constants of the joint splat (compute path for small joints). Joints too wide to splat
+// are appended to nearList[listBase …] and counted in draws[chunk].vertexCount, an indirect
+// draw of exactly those joints.
+THRONG_STRUCT(SplatPush) {
+  uint jointCount;        // joints per character
+  uint firstCharacter;
+  uint jointTotal;        // joints in this chunk
+  float maxPixels;        // sprites wider than this are left to the graphics pipeline
+  uint chunk;
+  uint listBase;
   uint pad0;
+  uint pad1;
 };
 
 #ifdef __cplusplus

@@ -156,6 +156,10 @@ Context::Context(const ContextOptions& options)
   info_.timestampPeriodNs = chosen.properties.limits.timestampPeriod;
   info_.maxStorageBufferRange = chosen.properties.limits.maxStorageBufferRange;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
+  vkGetPhysicalDeviceFeatures2(physical_, &supported);
+  info_.int64Atomics = supported.features.shaderInt64 && supported12.shaderBufferInt64Atomics;
 
   uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
@@ -186,10 +190,12 @@ Context::Context(const ContextOptions& options)
   VkPhysicalDeviceVulkan12Features features12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
                                               &dynamicRendering};
   features12.hostQueryReset = VK_TRUE;
+  features12.shaderBufferInt64Atomics = info_.int64Atomics ? VK_TRUE : VK_FALSE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features12};
   features.features.multiDrawIndirect = VK_TRUE;
   features.features.drawIndirectFirstInstance = VK_TRUE;
   features.features.largePoints = VK_TRUE;
+  features.features.shaderInt64 = info_.int64Atomics ? VK_TRUE : VK_FALSE;
 
   VkDeviceCreateInfo deviceInfo{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
   deviceInfo.queueCreateInfoCount = 1;

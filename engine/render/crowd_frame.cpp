@@ -5,13 +5,15 @@
 namespace throng::render {
 
 FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
-                                 const synth::CrowdSynth& synth, const CrowdRenderer& renderer, const Camera& camera,
-                                 float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps) {
+                                 const synth::CrowdSynth& synth, CrowdRenderer& renderer, const Camera& camera,
+                                 float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps,
+                                 uint32_t frameSlot) {
   FrameTimestamps marks;
   marks.start = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
   synth::recordSynthesis(cmd, programs, synth, dt, context.info().maxStorageBufferRange);
   marks.synthesized = timestamps.write(cmd);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   DrawParams params;
   params.camera = camera;
   params.width = targets.width;
@@ -20,7 +22,7 @@ FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& contex
   params.jointCount = synth.jointCount();
   params.joints = &synth.joints;
   params.groundExtent = groundExtent;
-  renderer.record(cmd, targets.color, targets.colorView, targets.depth, targets.depthView, params, targets.finalLayout);
+  renderer.record(cmd, targets.color, targets.colorView, targets.depth, targets.depthView, params, targets.finalLayout, frameSlot);
   marks.rendered = timestamps.write(cmd);
   return marks;
 }

@@ -26,8 +26,9 @@ struct FrameTimings {
 };
 
 FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
-                                 const synth::CrowdSynth& synth, const CrowdRenderer& renderer, const Camera& camera,
-                                 float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps);
+                                 const synth::CrowdSynth& synth, CrowdRenderer& renderer, const Camera& camera,
+                                 float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps,
+                                 uint32_t frameSlot = 0);
 
 FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks);
 

@@ -5,16 +5,17 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "render/joint_splat.h"
 #include "synth/gpu_types.h"
 
 namespace throng::render {
 
 using gpu_types::DrawPush;
+using gpu_types::kDrawFromList;
 using gpu_types::FrameUniforms;
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match the GLSL push block");
 static_assert(sizeof(FrameUniforms) == 160, "FrameUniforms must match the GLSL std140 block");
 
-namespace {
 FrameUniforms makeFrameUniforms(const DrawParams& params) {
   const Camera& camera = params.camera;
   float aspect = float(params.width) / float(params.height);
@@ -32,9 +33,9 @@ FrameUniforms makeFrameUniforms(const DrawParams& params) {
   u.viewport = glm::vec4(float(params.width), float(params.height), camera.focalLengthPixels(float(params.height)), 0.0f);
   return u;
 }
-}  // namespace
 
-CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, VkFormat depthFormat) {
+CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, VkFormat depthFormat)
+    : context_(&context), splatSupported_(context.info().int64Atomics) {
   gpu::GraphicsPipelineDesc jointDesc;
   jointDesc.vertexShader = "joints.vert";
   jointDesc.fragmentShader = "joints.frag";
@@ -50,20 +51,61 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, 
   groundDesc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   ground_ = gpu::GraphicsProgram(context, groundDesc);
 
+  if (splatSupported_) {
+    splat_ = gpu::ComputeProgram(context, "joint_splat.comp");
+    gpu::GraphicsPipelineDesc resolveDesc = groundDesc;
+    resolveDesc.vertexShader = "splat_resolve.vert";
+    resolveDesc.fragmentShader = "splat_resolve.frag";
+    resolve_ = gpu::GraphicsProgram(context, resolveDesc);
+  }
   for (uint32_t i = 0; i < kFramesInFlight; ++i)
     frameUniforms_.emplace_back(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                 gpu::MemoryUse::HostVisible);
-  // One draw may bind at most maxStorageBufferRange bytes of joint matrices (128 MiB on lavapipe).
-  maxCharactersPerDraw_ = context.info().maxStorageBufferRange / 48u;
+}
+
+void CrowdRenderer::ensureVisibility(uint32_t width, uint32_t height) {
+  for (auto it = retiredVisibility_.begin(); it != retiredVisibility_.end();)
+    it = --it->second == 0 ? retiredVisibility_.erase(it) : std::next(it);
+  if (visibility_ && visibilityWidth_ == width && visibilityHeight_ == height) return;
+  if (visibility_) retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
+  visibility_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint64_t), gpu::kStorageUsage,
+                            gpu::MemoryUse::DeviceLocal);
+  visibilityWidth_ = width;
+  visibilityHeight_ = height;
+}
+
+void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
+  VkDeviceSize listBytes = std::max<VkDeviceSize>(16, VkDeviceSize(characterCount) * jointCount * 4);
+  size_t chunks = jointChunks(characterCount, jointCount, context_->info().maxStorageBufferRange).size();
+  VkDeviceSize drawBytes = std::max<VkDeviceSize>(16, chunks * 16);
+  // Lists only grow; a smaller crowd keeps the larger buffers.
+  if (!nearList_ || nearList_.size() < listBytes) {
+    if (nearList_) retiredVisibility_.emplace_back(std::move(nearList_), kFramesInFlight + 1);
+    nearList_ = gpu::Buffer(*context_, listBytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  }
+  if (!draws_ || draws_.size() < drawBytes) {
+    if (draws_) retiredVisibility_.emplace_back(std::move(draws_), kFramesInFlight + 1);
+    draws_ = gpu::Buffer(*context_, drawBytes, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                         gpu::MemoryUse::DeviceLocal);
+  }
 }
 
 void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth,
                            VkImageView depthView, const DrawParams& params, VkImageLayout finalLayout,
-                           uint32_t frameSlot) const {
+                           uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
   const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
   FrameUniforms frame = makeFrameUniforms(params);
   std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
+  const bool splat = splatSupported_ && params.splatMaxPixels > 0.0f && params.characterCount > 0;
+  ensureLists(params.characterCount, params.jointCount);
+  if (splat) {
+    ensureVisibility(params.width, params.height);
+    SplatJob job{params.joints, &uniforms, &visibility_, &draws_, &nearList_, params.width, params.height,
+                 params.characterCount, params.jointCount, params.splatMaxPixels,
+                 context_->info().maxStorageBufferRange};
+    job.record(cmd, splat_);
+  }
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
   gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -105,15 +147,29 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
 
   DrawPush push{};
   push.jointCount = params.jointCount;
-  const uint32_t perDraw = std::max(1u, maxCharactersPerDraw_ / std::max(1u, params.jointCount));
-  for (uint32_t first = 0; first < params.characterCount; first += perDraw) {
-    uint32_t count = std::min(perDraw, params.characterCount - first);
-    VkDeviceSize bytes = VkDeviceSize(count) * params.jointCount * 48u;
-    VkDeviceSize offset = VkDeviceSize(first) * params.jointCount * 48u;
-    gpu::Binding bindings[] = {gpu::storageBinding(0, *params.joints, offset, bytes), gpu::uniformBinding(1, uniforms)};
-    push.firstCharacter = first;
+  push.flags = splat ? kDrawFromList : 0u;
+  const std::vector<JointChunk> chunks =
+      jointChunks(params.characterCount, params.jointCount, context_->info().maxStorageBufferRange);
+  const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
+  for (size_t c = 0; c < chunks.size(); ++c) {
+    const JointChunk& chunk = chunks[c];
+    gpu::Binding bindings[] = {
+        gpu::storageBinding(0, *params.joints, chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
+        gpu::uniformBinding(1, uniforms), gpu::storageBinding(4, nearList_)};
+    push.firstCharacter = chunk.firstCharacter;
+    push.listBase = chunk.firstCharacter * params.jointCount;
     joints_.bind(cmd, bindings, &push, sizeof(push));
-    vkCmdDraw(cmd, count * params.jointCount, 1, 0, 0);
+    if (splat) {
+      vkCmdDrawIndirect(cmd, draws_.get(), c * 16, 1, 16);
+    } else {
+      vkCmdDraw(cmd, chunk.characterCount * params.jointCount, 1, 0, 0);
+    }
+  }
+  if (splat) {
+    gpu::Binding resolveBindings[] = {gpu::uniformBinding(1, uniforms),
+                                      gpu::storageBinding(2, visibility_)};
+    resolve_.bind(cmd, resolveBindings, nullptr, 0);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
   }
   vkCmdEndRenderingKHR(cmd);
 

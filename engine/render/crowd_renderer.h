@@ -8,6 +8,7 @@
 #include "gpu/graphics_pipeline.h"
 #include "gpu/image.h"
 #include "render/camera.h"
+#include "synth/gpu_types.h"
 
 namespace throng::render {
 
@@ -18,8 +19,14 @@ struct DrawParams {
   uint32_t jointCount = 0;
   const gpu::Buffer* joints = nullptr;  // JointMatrix per character per joint
   float groundExtent = 100.0f;
+  // Joints whose screen sprite is at most this wide go through the compute splat; 0 draws
+  // every joint with the graphics pipeline.
+  float splatMaxPixels = 24.0f;
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
 };
+
+// Camera, light and viewport of a frame as the shaders read them.
+gpu_types::FrameUniforms makeFrameUniforms(const DrawParams& params);
 
 // Frames that may be recorded before the first of them completes (uniform buffers per frame).
 constexpr uint32_t kFramesInFlight = 3;
@@ -28,18 +35,33 @@ class CrowdRenderer {
  public:
   CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, VkFormat depthFormat);
 
+  // False when the device lacks 64-bit buffer atomics: every joint is then drawn as a sprite.
+  bool splatSupported() const { return splatSupported_; }
+
   // Transitions `color` from UNDEFINED to COLOR_ATTACHMENT, draws, and leaves it in `finalLayout`
   // (TRANSFER_SRC_OPTIMAL for readback, PRESENT_SRC_KHR for a swapchain).
   // `frameSlot` < kFramesInFlight picks the uniform buffer; reuse a slot only after the frame
   // that last used it has completed.
+  // Not const: the splat's visibility buffer follows the target size (old buffers are kept
+  // until no frame in flight can use them).
   void record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth, VkImageView depthView,
-              const DrawParams& params, VkImageLayout finalLayout, uint32_t frameSlot = 0) const;
+              const DrawParams& params, VkImageLayout finalLayout, uint32_t frameSlot = 0);
 
  private:
   gpu::GraphicsProgram joints_;
   gpu::GraphicsProgram ground_;
   std::vector<gpu::Buffer> frameUniforms_;
-  uint32_t maxCharactersPerDraw_ = 0;
+  const gpu::Context* context_ = nullptr;
+  bool splatSupported_ = false;
+  gpu::ComputeProgram splat_;
+  gpu::GraphicsProgram resolve_;
+  gpu::Buffer visibility_;
+  gpu::Buffer draws_;     // indirect draws of the joints too wide to splat, one per chunk
+  gpu::Buffer nearList_;  // their indices
+  void ensureLists(uint32_t characterCount, uint32_t jointCount);
+  uint32_t visibilityWidth_ = 0, visibilityHeight_ = 0;
+  std::vector<std::pair<gpu::Buffer, uint32_t>> retiredVisibility_;  // buffers, records left before freeing
+  void ensureVisibility(uint32_t width, uint32_t height);
 };
 
 }  // namespace throng::render

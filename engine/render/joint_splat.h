@@ -1,0 +1,43 @@
+#pragma once
+// The compute path for small joints (a job: named inputs and outputs, validate(), record()).
+// Each joint ray-casts its ellipsoid over its few screen pixels and keeps the nearest hit per
+// pixel in a visibility buffer of (depth << 32 | colour); a full-screen pass resolves it into
+// the frame with depth. On lavapipe this is an order of magnitude cheaper than sending tens of
+// thousands of tiny sprites through the single-threaded vertex pipeline.
+#include <string>
+#include <vector>
+
+#include "gpu/buffer.h"
+#include "gpu/program.h"
+
+namespace throng::render {
+
+constexpr uint64_t kEmptyPixel = ~uint64_t(0);
+
+// Characters are processed in chunks whose joint matrices fit one storage-buffer binding;
+// the splat and the draw use the same chunks (chunk c's indirect draw is at draws[c]).
+struct JointChunk {
+  uint32_t firstCharacter = 0;
+  uint32_t characterCount = 0;
+};
+std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount, uint32_t maxStorageBufferRange);
+
+struct SplatJob {
+  const gpu::Buffer* joints = nullptr;        // input: JointMatrix per character per joint
+  const gpu::Buffer* frameUniforms = nullptr; // input: gpu_types::FrameUniforms
+  const gpu::Buffer* visibility = nullptr;    // output: width × height uint64, cleared first
+  const gpu::Buffer* draws = nullptr;         // output: VkDrawIndirectCommand per chunk (too-wide joints)
+  const gpu::Buffer* nearList = nullptr;      // output: chunk-local indices of too-wide joints
+  uint32_t width = 0, height = 0;
+  uint32_t characterCount = 0;
+  uint32_t jointCount = 0;                    // per character
+  float maxPixels = 16.0f;                    // wider sprites are left to the graphics pipeline
+  uint32_t maxStorageBufferRange = 0;         // chunk size of the joints binding
+
+  std::vector<std::string> validate() const;
+  // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the
+  // fragment-shader resolve.
+  void record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const;
+};
+
+}  // namespace throng::render

@@ -1,0 +1,123 @@
+#include "render/joint_splat_cpu.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "render/joint_splat.h"
+
+namespace throng::render {
+namespace {
+
+struct Sprite {
+  glm::vec4 inverse[3];
+  glm::vec2 lo, hi;
+  float sizePx = 0.0f;
+  bool visible = false;
+};
+
+float dotD(glm::vec4 a, glm::vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z - a.w * b.w; }
+
+// Mirrors jointSprite() in shaders/joint_sprite.glsl.
+Sprite jointSprite(const synth::JointMatrix& a, const gpu_types::FrameUniforms& frame) {
+  Sprite s;
+  glm::vec3 t(a.row0.w, a.row1.w, a.row2.w);
+  glm::vec3 b0(a.row0.x, a.row1.x, a.row2.x);
+  glm::vec3 b1 = 0.5f * glm::vec3(a.row0.y, a.row1.y, a.row2.y);
+  glm::vec3 b2(a.row0.z, a.row1.z, a.row2.z);
+  glm::vec3 centre = t + b1;
+  glm::vec3 lenSq(glm::dot(b0, b0), glm::dot(b1, b1), glm::dot(b2, b2));
+  glm::vec4 clip = frame.viewProjection * glm::vec4(centre, 1.0f);
+  float radius = std::sqrt(std::max(lenSq.x, std::max(lenSq.y, lenSq.z)));
+  s.visible = std::min(lenSq.x, std::min(lenSq.y, lenSq.z)) >= 1e-10f && clip.w > radius;
+  if (!s.visible) return s;
+  glm::vec3 r0 = b0 / lenSq.x, r1 = b1 / lenSq.y, r2 = b2 / lenSq.z;
+  s.inverse[0] = glm::vec4(r0, -glm::dot(r0, centre));
+  s.inverse[1] = glm::vec4(r1, -glm::dot(r1, centre));
+  s.inverse[2] = glm::vec4(r2, -glm::dot(r2, centre));
+  glm::mat4 t4 = frame.viewProjection * glm::mat4(glm::vec4(b0, 0), glm::vec4(b1, 0), glm::vec4(b2, 0), glm::vec4(centre, 1));
+  glm::vec4 rx(t4[0].x, t4[1].x, t4[2].x, t4[3].x), ry(t4[0].y, t4[1].y, t4[2].y, t4[3].y);
+  glm::vec4 rw(t4[0].w, t4[1].w, t4[2].w, t4[3].w);
+  float qa = dotD(rw, rw), bx = dotD(rx, rw), cx = dotD(rx, rx), by = dotD(ry, rw), cy = dotD(ry, ry);
+  if (qa >= 0.0f) {
+    s.visible = false;
+    return s;
+  }
+  float hx = std::sqrt(std::max(bx * bx - qa * cx, 0.0f)), hy = std::sqrt(std::max(by * by - qa * cy, 0.0f));
+  glm::vec2 ndcLo(std::min((bx + hx) / qa, (bx - hx) / qa), std::min((by + hy) / qa, (by - hy) / qa));
+  glm::vec2 ndcHi(std::max((bx + hx) / qa, (bx - hx) / qa), std::max((by + hy) / qa, (by - hy) / qa));
+  glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
+  s.lo = (ndcLo * 0.5f + 0.5f) * viewport;
+  s.hi = (ndcHi * 0.5f + 0.5f) * viewport;
+  s.sizePx = std::max(s.hi.x - s.lo.x, s.hi.y - s.lo.y) + 2.0f;
+  return s;
+}
+
+uint32_t hashIndex(uint32_t x) {
+  x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
+  return x;
+}
+
+glm::vec3 characterTint(uint32_t character) {
+  uint32_t h = hashIndex(character);
+  float hue = float(h & 1023u) / 1024.0f;
+  glm::vec3 k = glm::abs(glm::fract(glm::vec3(hue) + glm::vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f);
+  glm::vec3 rgb = glm::clamp(k - 1.0f, 0.0f, 1.0f);
+  return glm::mix(rgb, glm::vec3(0.85f), 0.25f) * (0.75f + 0.25f * float((h >> 10) & 3u) / 3.0f);
+}
+
+uint32_t packColour(glm::vec4 c) {
+  uint32_t out = 0;
+  for (int i = 0; i < 4; ++i) out |= uint32_t(std::lround(std::clamp(c[i], 0.0f, 1.0f) * 255.0f)) << (8 * i);
+  return out;
+}
+
+}  // namespace
+
+SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints, const gpu_types::FrameUniforms& frame,
+                              uint32_t jointCount, float maxPixels, uint32_t width, uint32_t height) {
+  SplatCpuResult result;
+  result.visibility.assign(size_t(width) * height, kEmptyPixel);
+  const glm::vec3 eye(frame.eye);
+  const glm::vec3 light(frame.lightDirection);
+  for (uint32_t joint = 0; joint < joints.size(); ++joint) {
+    Sprite s = jointSprite(joints[joint], frame);
+    if (!s.visible) continue;
+    if (s.sizePx > maxPixels) {
+      result.nearJoints.push_back(joint);
+      continue;
+    }
+    glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(s.lo - 0.5f)), glm::ivec2(0));
+    glm::ivec2 hi = glm::min(glm::ivec2(glm::floor(s.hi - 0.5f)), glm::ivec2(int(width) - 1, int(height) - 1));
+    glm::vec3 tint = characterTint(joint / jointCount);
+    glm::mat3 inv = glm::transpose(glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
+    glm::vec3 o = inv * eye + glm::vec3(s.inverse[0].w, s.inverse[1].w, s.inverse[2].w);
+    for (int y = lo.y; y <= hi.y; ++y) {
+      for (int x = lo.x; x <= hi.x; ++x) {
+        glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(frame.viewport.x, frame.viewport.y) * 2.0f - 1.0f;
+        glm::vec3 dir = glm::normalize(glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) + ndc.y * glm::vec3(frame.rayDown));
+        glm::vec3 d = inv * dir;
+        float a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 1.0f;
+        float disc = b * b - a * c;
+        float t = (-b - std::sqrt(std::max(disc, 0.0f))) / a;
+        if (!(disc >= 0.0f && t > 0.0f)) continue;
+        glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));
+        glm::vec4 clip = frame.viewProjection * glm::vec4(eye + t * dir, 1.0f);
+        float depth = clip.z / clip.w;
+        if (depth < 0.0f || depth > 1.0f) continue;
+        float diffuse = std::max(glm::dot(n, light), 0.0f);
+        float sky = 0.5f + 0.5f * n.y;
+        float rim = std::pow(1.0f - std::max(glm::dot(n, -dir), 0.0f), 3.0f);
+        glm::vec3 col = glm::pow(tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim, glm::vec3(1.0f / 2.2f));
+        uint32_t depthBits;
+        std::memcpy(&depthBits, &depth, sizeof(depthBits));
+        uint64_t packed = (uint64_t(depthBits) << 32) | packColour(glm::vec4(col, 1.0f));
+        uint64_t& pixel = result.visibility[size_t(y) * width + x];
+        pixel = std::min(pixel, packed);
+      }
+    }
+  }
+  return result;
+}
+
+}  // namespace throng::render

@@ -1,0 +1,49 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+// The far joints: one invocation per joint ray-casts its ellipsoid over the pixels of its small
+// screen square and keeps the nearest hit per pixel with a 64-bit atomicMin of
+// (depth bits << 32 | colour). Joints wider than push.maxPixels are listed for an indirect
+// draw by the graphics pipeline instead. CPU twin: render::splatJointsCpu.
+#include "shared_types.h"
+#include "joint_sprite.glsl"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer Joints { JointMatrix joints[]; };
+layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
+layout(std430, binding = 2) buffer Visibility { uint64_t visibility[]; };
+layout(std430, binding = 3) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
+layout(std430, binding = 4) writeonly buffer NearList { uint nearList[]; };
+layout(push_constant) uniform Push { SplatPush push; };
+
+void main() {
+  uint joint = gl_GlobalInvocationID.x;
+  if (joint >= push.jointTotal) return;
+  JointSprite s = jointSprite(joints[joint], frame);
+  if (!s.visible) return;
+  if (s.sizePx > push.maxPixels) {
+    uint slot = atomicAdd(draws[4 * push.chunk], 1u);
+    nearList[push.listBase + slot] = joint;
+    return;
+  }
+  // Pixels whose centres lie inside the bounding box.
+  ivec2 lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
+  ivec2 hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
+  vec3 tint = characterTint(joint / push.jointCount + push.firstCharacter);
+  uint width = uint(frame.viewport.x);
+  for (int y = lo.y; y <= hi.y; ++y) {
+    for (int x = lo.x; x <= hi.x; ++x) {
+      vec3 dir = pixelRay(vec2(x, y) + 0.5, frame);
+      float t;
+      vec3 n;
+      if (!hitJoint(frame.eye.xyz, dir, s.inverse0, s.inverse1, s.inverse2, t, n)) continue;
+      vec4 clip = frame.viewProjection * vec4(frame.eye.xyz + t * dir, 1.0);
+      float depth = clip.z / clip.w;
+      if (depth < 0.0 || depth > 1.0) continue;
+      uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0));
+      uint64_t packed = (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(colour);
+      atomicMin(visibility[uint(y) * width + uint(x)], packed);
+    }
+  }
+}

@@ -1,0 +1,122 @@
+// SplatJob: validity, then the GPU pass against its CPU twin on a real crowd.
+#include <doctest/doctest.h>
+
+#include <cstring>
+
+#include "anim/default_clips.h"
+#include "crowd/scenario.h"
+#include "gpu/commands.h"
+#include "gpu/program.h"
+#include "gpu_fixture.h"
+#include "render/crowd_renderer.h"
+#include "render/joint_splat.h"
+#include "render/joint_splat_cpu.h"
+#include "synth/cpu_synth.h"
+
+using namespace throng;
+
+TEST_CASE("SplatJob: validity") {
+  render::SplatJob job;
+  auto problems = job.validate();
+  std::string all;
+  for (auto& p : problems) all += p + "\n";
+  CHECK(all.find("'joints'") != std::string::npos);
+  CHECK(all.find("'frameUniforms'") != std::string::npos);
+  CHECK(all.find("'visibility'") != std::string::npos);
+  CHECK(all.find("'draws'") != std::string::npos);
+  CHECK(all.find("'nearList'") != std::string::npos);
+  CHECK(all.find("target size is zero") != std::string::npos);
+}
+
+TEST_CASE("SplatJob: chunks cover the crowd exactly") {
+  auto chunks = render::jointChunks(100000, 25, 128u << 20);
+  uint32_t next = 0;
+  for (auto& c : chunks) {
+    CHECK(c.firstCharacter == next);
+    CHECK(c.characterCount * 25u * 48u <= (128u << 20));
+    next += c.characterCount;
+  }
+  CHECK(next == 100000);
+  CHECK(render::jointChunks(0, 25, 1 << 20).empty());
+}
+
+TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
+  gpu::Context& ctx = test::gpuContext();
+  if (!ctx.info().int64Atomics) {
+    MESSAGE("SKIPPED: device lacks 64-bit buffer atomics");
+    return;
+  }
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 400;
+  options.seed = 3;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  const uint32_t joints = static_cast<uint32_t>(pair.jointCount());
+  std::vector<synth::JointMatrix> matrices(crowd.size() * joints);
+  synth::poseCrowdCpu(pair, crowd, matrices, 2);
+
+  const uint32_t width = 320, height = 180;
+  render::DrawParams params;
+  params.camera = render::cameraPreset("street", crowd::scenarioExtent(options));
+  params.width = width;
+  params.height = height;
+  gpu_types::FrameUniforms frame = render::makeFrameUniforms(params);
+  const float maxPixels = 12.0f;
+
+  gpu::Buffer jointBuffer = gpu::makeStorageBuffer<synth::JointMatrix>(ctx, matrices);
+  gpu::Buffer uniforms(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::HostVisible);
+  std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
+  gpu::Buffer visibility(ctx, VkDeviceSize(width) * height * 8, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer draws(ctx, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer nearList(ctx, VkDeviceSize(matrices.size()) * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  gpu::ComputeProgram program(ctx, "joint_splat.comp");
+  render::SplatJob job{&jointBuffer, &uniforms, &visibility, &draws, &nearList, width, height,
+                       static_cast<uint32_t>(crowd.size()), joints, maxPixels, ctx.info().maxStorageBufferRange};
+  REQUIRE(job.validate().empty());
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, program); });
+
+  render::SplatCpuResult cpu = render::splatJointsCpu(matrices, frame, joints, maxPixels, width, height);
+  auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
+  auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
+  auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
+  std::sort(gpuNear.begin(), gpuNear.end());
+
+  // Where two ellipsoids meet at nearly the same depth, float rounding may pick the other one:
+  // such pixels are counted apart (differentWinner), the rest must match in depth and colour.
+  size_t covered = 0, coverageMismatch = 0, colourMismatch = 0, differentWinner = 0;
+  float worstDepth = 0.0f;
+  for (size_t i = 0; i < gpuVisibility.size(); ++i) {
+    uint64_t g = gpuVisibility[i], c = cpu.visibility[i];
+    bool gHit = g != render::kEmptyPixel, cHit = c != render::kEmptyPixel;
+    covered += cHit;
+    if (gHit != cHit) {
+      ++coverageMismatch;
+      continue;
+    }
+    if (!gHit) continue;
+    float gd, cd;
+    uint32_t gBits = uint32_t(g >> 32), cBits = uint32_t(c >> 32);
+    std::memcpy(&gd, &gBits, 4);
+    std::memcpy(&cd, &cBits, 4);
+    if (std::abs(gd - cd) > 2e-6f) {  // NDC depth: 1e-6 is millimetres at 20 m
+      ++differentWinner;
+      continue;
+    }
+    worstDepth = std::max(worstDepth, std::abs(gd - cd));
+    for (int k = 0; k < 3; ++k) {
+      int gc = int((g >> (8 * k)) & 0xFF), cc = int((c >> (8 * k)) & 0xFF);
+      if (std::abs(gc - cc) > 2) ++colourMismatch;
+    }
+  }
+  MESSAGE("splat: ", covered, " pixels covered, ", coverageMismatch, " coverage mismatches, ", colourMismatch,
+          " colour mismatches, ", differentWinner, " pixels won by another joint, worst depth diff ", worstDepth, "; near joints GPU ", gpuNear.size(), " CPU ",
+          cpu.nearJoints.size());
+  CHECK(covered > 500);
+  CHECK(coverageMismatch <= covered / 200);  // silhouette pixels may flip on float rounding
+  CHECK(colourMismatch <= 3 * covered / 200);  // ≤ 0.5% of channels off by more than 2 levels
+  CHECK(differentWinner <= covered / 50);
+  CHECK(cpu.nearJoints.size() > 0);
+  CHECK(gpuNear == cpu.nearJoints);
+  CHECK(ctx.validationMessageCount() == 0);
+}
