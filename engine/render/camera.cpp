@@ -25,8 +25,8 @@ Camera cameraPreset(const std::string& name, float extent) {
   Camera c;
   extent = std::max(extent, 5.0f);
   if (name == "wide") {
-    c.eye = glm::vec3(0.0f, 1.25f * extent + 8.0f, -1.05f * extent - 6.0f);
-    c.target = glm::vec3(0.0f, 0.0f, -0.05f * extent);
+    c.eye = glm::vec3(0.0f, 0.62f * extent + 6.0f, -1.05f * extent - 6.0f);
+    c.target = glm::vec3(0.0f, 0.0f, -0.15f * extent);
   } else if (name == "top") {
     c.eye = glm::vec3(0.0f, 2.4f * extent + 10.0f, -0.02f * extent - 0.5f);
     c.target = glm::vec3(0.0f);
