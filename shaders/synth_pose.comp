@@ -182,6 +182,8 @@ void main() {
   vec4 yaw = yawQuat(place.w);
   vec3 origin = place.xyz;
   uint base = local * push.jointCount;
+  // The hierarchy is composed directly in world space (root = M · root pose), which saves a
+  // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
     vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], w);
     vec3 o = slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w;
@@ -191,24 +193,23 @@ void main() {
     vec4 orientation;
     float len;
     if (p < 0) {
-      globalPosition[j] = vec3(0.0, o.y, 0.0);
-      globalRotation[j] = q;
-      start = globalPosition[j] + quatRotate(q, vec3(0.0, -radius, 0.0));
-      orientation = q;
+      // The root is drawn as a sphere around it: a vertical "bone" of length 2r.
+      globalRotation[j] = quatMul(yaw, q);
+      globalPosition[j] = origin + vec3(0.0, scale * o.y, 0.0);
+      start = globalPosition[j] + quatRotate(globalRotation[j], vec3(0.0, -scale * radius, 0.0));
+      orientation = globalRotation[j];
       len = 2.0 * radius;
     } else {
       vec4 parentRotation = globalRotation[p];
       vec3 parentPosition = globalPosition[p];
-      globalPosition[j] = parentPosition + quatRotate(parentRotation, o);
+      globalPosition[j] = parentPosition + quatRotate(parentRotation, scale * o);
       globalRotation[j] = quatMul(parentRotation, q);
       len = length(o);
       vec3 dir = len > 1e-6 ? o / len : vec3(0.0, 1.0, 0.0);
       start = parentPosition;
       orientation = quatMul(parentRotation, alignYTo(dir));
-      if (len <= 1e-6) radius = 0.0;
+      if (len <= 1e-6) radius = 0.0;  // zero-length bones are not drawn
     }
-    vec4 world = quatMul(yaw, orientation);
-    vec3 t = origin + quatRotate(yaw, scale * start);
-    writeRows(base + uint(j), world, scale * vec3(radius, len, radius), t);
+    writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
   }
 }

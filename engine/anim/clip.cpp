@@ -36,22 +36,35 @@ Clip toClip(const RawClip& raw) {
   clip.frameTime = raw.frameTime;
   clip.rotations.reserve(size_t(raw.frameCount) * size_t(jointCount));
   clip.rootPositions.reserve(size_t(raw.frameCount));
-  const Joint& root = raw.skeleton.joints[0];
+  bool animated = false;
+  for (int j = 1; j < jointCount; ++j) {
+    for (Channel c : raw.skeleton.joints[size_t(j)].channels) animated = animated || !isRotation(c);
+  }
+  if (animated) clip.animatedOffsets.reserve(size_t(raw.frameCount) * size_t(jointCount));
   for (int f = 0; f < raw.frameCount; ++f) {
     const float* frame = raw.values.data() + size_t(f) * size_t(channelCount);
     for (int j = 0; j < jointCount; ++j) {
       const Joint& joint = raw.skeleton.joints[size_t(j)];
-      std::span<const float> values(frame + firstChannel[size_t(j)], joint.channels.size());
-      clip.rotations.push_back(channelsToQuat(joint.channels, values));
+      const float* values = frame + firstChannel[size_t(j)];
+      clip.rotations.push_back(channelsToQuat(joint.channels, {values, joint.channels.size()}));
+      if (j == 0) {
+        // Root: offset + position channels (every capture here has a zero root OFFSET).
+        glm::vec3 position = joint.offset;
+        for (size_t c = 0; c < joint.channels.size(); ++c) {
+          if (!isRotation(joint.channels[c])) position[channelAxis(joint.channels[c])] += values[c];
+        }
+        clip.rootPositions.push_back(position);
+      }
+      if (!animated) continue;
+      // Other joints: the channel values are the translation itself (Bandai Namco writes the
+      // OFFSET again for every bone, and the hips' real height and sway per frame). The
+      // root's entry stays its OFFSET: rootPositions holds its translation.
+      glm::vec3 offset = joint.offset;
+      for (size_t c = 0; j > 0 && c < joint.channels.size(); ++c) {
+        if (!isRotation(joint.channels[c])) offset[channelAxis(joint.channels[c])] = values[c];
+      }
+      clip.animatedOffsets.push_back(offset);
     }
-    // Root: offset + position channels, in file units (scaleToMetres converts later).
-    // Position channels of other joints (Bandai Namco writes 6 on every joint) are not
-    // used: the skeleton's offsets stand for the bones, and only rotations are blended.
-    glm::vec3 position = root.offset;
-    for (size_t c = 0; c < root.channels.size(); ++c) {
-      if (!isRotation(root.channels[c])) position[channelAxis(root.channels[c])] += frame[c];
-    }
-    clip.rootPositions.push_back(position);
   }
   return clip;
 }

@@ -98,6 +98,8 @@ Clip copyHeader(const Clip& clip, int frameCount) {
   out.cycleTravel = clip.cycleTravel;
   out.rotations.reserve(size_t(frameCount) * size_t(clip.jointCount()));
   out.rootPositions.reserve(size_t(frameCount));
+  if (!clip.animatedOffsets.empty())
+    out.animatedOffsets.reserve(size_t(frameCount) * size_t(clip.jointCount()));
   return out;
 }
 
@@ -108,6 +110,10 @@ Clip wholeCycle(const Clip& clip, int first, LoopCut& cut) {
   out.rotations.assign(clip.rotations.begin() + ptrdiff_t(first) * clip.jointCount(),
                        clip.rotations.end());
   out.rootPositions.assign(clip.rootPositions.begin() + first, clip.rootPositions.end());
+  if (!clip.animatedOffsets.empty()) {
+    out.animatedOffsets.assign(clip.animatedOffsets.begin() + ptrdiff_t(first) * clip.jointCount(),
+                               clip.animatedOffsets.end());
+  }
   int n = out.frameCount;
   out.cycleTravel =
       n > 1 ? (out.rootPositions.back() - out.rootPositions.front()) * (float(n) / float(n - 1))
@@ -182,6 +188,7 @@ Clip scaleToMetres(const Clip& clip, float metresPerUnit) {
     if (joint.endSite) *joint.endSite *= metresPerUnit;
   }
   for (glm::vec3& p : out.rootPositions) p *= metresPerUnit;
+  for (glm::vec3& o : out.animatedOffsets) o *= metresPerUnit;
   out.cycleTravel *= metresPerUnit;
   return out;
 }
@@ -218,6 +225,14 @@ Clip resampleFrames(const Clip& clip, int frameCount, bool cyclic) {
     glm::vec3 p0 = clip.rootPositions[size_t(i0)];
     glm::vec3 p1 = clip.rootPositions[size_t(i1)] + offset1;
     out.rootPositions.push_back(t == 0.0f ? p0 : p0 + t * (p1 - p0));
+    if (clip.animatedOffsets.empty()) continue;
+    // Local offsets do not travel: past the end of a cycle they are frame 0's.
+    const size_t joints = size_t(clip.jointCount());
+    for (size_t j = 0; j < joints; ++j) {
+      glm::vec3 a = clip.animatedOffsets[size_t(i0) * joints + j];
+      glm::vec3 b = clip.animatedOffsets[size_t(i1) * joints + j];
+      out.animatedOffsets.push_back(t == 0.0f ? a : a + t * (b - a));
+    }
   }
   return out;
 }
@@ -245,6 +260,10 @@ Clip cutLoop(const Clip& clip, const LoopCut& cut) {
                        clip.rotations.begin() + cut.end * joints);
   out.rootPositions.assign(clip.rootPositions.begin() + cut.start,
                            clip.rootPositions.begin() + cut.end);
+  if (!clip.animatedOffsets.empty()) {
+    out.animatedOffsets.assign(clip.animatedOffsets.begin() + cut.start * joints,
+                               clip.animatedOffsets.begin() + cut.end * joints);
+  }
   out.cycleTravel = clip.rootPositions[size_t(cut.end)] - clip.rootPositions[size_t(cut.start)];
   return out;
 }
@@ -264,6 +283,14 @@ Clip closeSeam(const Clip& clip, const LoopCut& cut) {
       q = glm::normalize(quatMul(slerpShortest(glm::vec4(0, 0, 0, 1), r, t), q));
     }
     out.rootPositions[size_t(k)].y -= t * rise;
+    // Animated offsets close the same way: with a root that only slides (Bandai Namco), the
+    // hips' height mismatch is here, and spreading it keeps the cycle from climbing.
+    if (out.animatedOffsets.empty()) continue;
+    for (int j = 1; j < joints; ++j) {
+      glm::vec3 gap = clip.animatedOffsets[size_t(cut.start) * size_t(joints) + size_t(j)] -
+                      clip.animatedOffsets[size_t(cut.end) * size_t(joints) + size_t(j)];
+      out.animatedOffsets[size_t(k) * size_t(joints) + size_t(j)] += t * gap;
+    }
   }
   out.cycleTravel.y = 0.0f;
   return out;

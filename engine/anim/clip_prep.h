@@ -14,12 +14,14 @@ struct UnitsGuess {
 };
 // Guess the unit from the skeleton's rest height (a person is ~1.5–2.0 m tall).
 UnitsGuess detectUnits(const Skeleton& skeleton);
+// Offsets, End Sites, root positions, animated offsets and travel, times metresPerUnit.
 Clip scaleToMetres(const Clip& clip, float metresPerUnit);
 
-// Resample to a new frame time (slerp rotations, lerp root positions). The duration is kept
-// exactly: the clip gets round(duration / frameTime) frames, so the frame time actually used
-// is the nearest one that divides the duration. A clip with a non-zero cycleTravel is a cycle
-// (the frame after the last is frame 0 moved by cycleTravel); any other holds its last frame.
+// Resample to a new frame time (slerp rotations, lerp root positions and animated offsets).
+// The duration is kept exactly: the clip gets round(duration / frameTime) frames, so the
+// frame time actually used is the nearest one that divides the duration. A clip with a
+// non-zero cycleTravel is a cycle (the frame after the last is frame 0 moved by cycleTravel,
+// with frame 0's animated offsets); any other holds its last frame.
 Clip resample(const Clip& clip, float frameTime);
 // The same with the frame count given (frame time = duration / frameCount).
 Clip resampleFrames(const Clip& clip, int frameCount, bool cyclic);
@@ -31,20 +33,23 @@ struct LoopCut {
   int length() const { return end - start; }
 };
 // Best cycle in [minFrames, maxFrames] frames by pose and velocity similarity (root
-// positions in metres). A leading calibration T-pose is skipped; when two or three cycles
-// match about as well as one, the single cycle is returned. Error when no cut fits.
+// positions and animated offsets in metres). A leading calibration T-pose is skipped; when
+// two or three cycles match about as well as one, the single cycle is returned. Error when
+// no cut fits.
 LoopCut findBestLoop(const Clip& clip, int minFrames, int maxFrames);
 // The distance findBestLoop scores a cut (start, end) with, to compare with other pairs.
 float loopError(const Clip& clip, int start, int end);
 // Frames [start, end) as a cyclic clip; cycleTravel = root(end) - root(start).
 Clip cutLoop(const Clip& clip, const LoopCut& cut);
-// cutLoop, then the pose and root-height mismatch left between frames end and start is
-// spread over the cycle (frame k gets k/length of it), so the cycle repeats without a pop
-// and without climbing or sinking: cycleTravel.y becomes 0. preparePair uses this.
+// cutLoop, then the pose, root-height and animated-offset mismatch left between frames end
+// and start is spread over the cycle (frame k gets k/length of it), so the cycle repeats
+// without a pop and without climbing or sinking: cycleTravel.y becomes 0. preparePair uses
+// this.
 Clip closeSeam(const Clip& clip, const LoopCut& cut);
 
 // Rotates the whole clip about +y so its net travel points along +z and puts the first
-// frame's root above the origin.
+// frame's root above the origin. Animated offsets are local to their parents, which turn
+// with the root, so they stay as they are.
 Clip faceForwardZ(const Clip& clip);
 
 // Rotates `fast` cyclically so its left-foot contact falls at the same phase as in `slow`.

@@ -27,6 +27,11 @@ struct LoopFeatures {
   std::vector<float> speed;      // horizontal root speed
   std::vector<float> height;     // root height
   std::vector<float> climb;      // vertical root velocity
+  // Non-root joints' animated offsets and their velocities (empty when not animated):
+  // compared in metres like the root, since a root that only slides leaves the hips'
+  // height and bob to them.
+  std::vector<glm::vec3> offset;
+  std::vector<glm::vec3> offsetVelocity;
 
   size_t at(int frame, int joint = 0) const {
     return size_t(frame) * size_t(joints) + size_t(joint);
@@ -44,6 +49,11 @@ LoopFeatures computeFeatures(const Clip& clip) {
   out.speed.resize(size_t(out.frames));
   out.height.resize(size_t(out.frames));
   out.climb.resize(size_t(out.frames));
+  const bool animated = !clip.animatedOffsets.empty();
+  if (animated) {
+    out.offset = clip.animatedOffsets;
+    out.offsetVelocity.assign(cells, glm::vec3(0.0f));
+  }
   const int usable = out.frames - out.first;
   for (int f = out.first; f < out.frames; ++f) {
     // Central differences; at the ends the second-order one-sided ones, which agree with
@@ -70,16 +80,19 @@ LoopFeatures computeFeatures(const Clip& clip) {
       }
       out.omega[out.at(f, j)] = omega;
     }
+    // The same differences for a series of positions, `stride` apart.
+    auto derivative = [&](const std::vector<glm::vec3>& p, size_t stride, size_t index) {
+      auto at = [&](int frame) { return p[size_t(frame) * stride + index]; };
+      if (central) return (at(f + 1) - at(f - 1)) * (0.5f / clip.frameTime);
+      if (usable >= 3) return (2.0f * (at(near) - at(f)) - 0.5f * (at(far) - at(f))) * scale;
+      if (usable == 2) return (at(near) - at(f)) * scale;
+      return glm::vec3(0.0f);
+    };
     const std::vector<glm::vec3>& p = clip.rootPositions;
-    glm::vec3 velocity(0.0f);
-    if (central) {
-      velocity = (p[size_t(f + 1)] - p[size_t(f - 1)]) * (0.5f / clip.frameTime);
-    } else if (usable >= 3) {
-      velocity =
-          (2.0f * (p[size_t(near)] - p[size_t(f)]) - 0.5f * (p[size_t(far)] - p[size_t(f)])) *
-          scale;
-    } else if (usable == 2) {
-      velocity = (p[size_t(near)] - p[size_t(f)]) * scale;
+    glm::vec3 velocity = derivative(p, 1, 0);
+    for (int j = 1; animated && j < out.joints; ++j) {
+      out.offsetVelocity[out.at(f, j)] =
+          derivative(clip.animatedOffsets, size_t(out.joints), size_t(j));
     }
     out.speed[size_t(f)] = glm::length(glm::vec2(velocity.x, velocity.z));
     out.height[size_t(f)] = p[size_t(f)].y;
@@ -97,7 +110,14 @@ float distance(const LoopFeatures& features, int a, int b) {
   }
   const float joints = float(features.joints);
   const size_t fa = size_t(a), fb = size_t(b);
-  return pose / joints + kVelocityTime * omega / joints +
+  float offsets = 0.0f;
+  for (int j = 1; !features.offset.empty() && j < features.joints; ++j) {
+    const size_t ja = features.at(a, j), jb = features.at(b, j);
+    offsets +=
+        glm::length(features.offset[ja] - features.offset[jb]) +
+        kVelocityTime * glm::length(features.offsetVelocity[ja] - features.offsetVelocity[jb]);
+  }
+  return pose / joints + kVelocityTime * omega / joints + offsets +
          kVelocityTime * std::abs(features.speed[fa] - features.speed[fb]) +
          kVelocityTime * std::abs(features.climb[fa] - features.climb[fb]) +
          std::abs(features.height[fa] - features.height[fb]);

@@ -121,6 +121,10 @@ int alignPhases(const Clip& slow, Clip& fast) {
     }
     std::copy_n(old.rotations.begin() + ptrdiff_t(size_t(source) * joints), joints,
                 fast.rotations.begin() + ptrdiff_t(size_t(i) * joints));
+    if (!old.animatedOffsets.empty()) {  // local: no travel to add
+      std::copy_n(old.animatedOffsets.begin() + ptrdiff_t(size_t(source) * joints), joints,
+                  fast.animatedOffsets.begin() + ptrdiff_t(size_t(i) * joints));
+    }
     fast.rootPositions[size_t(i)] = old.rootPositions[size_t(source)] + travel;
   }
   glm::vec3 move = old.rootPositions[0] - fast.rootPositions[0];

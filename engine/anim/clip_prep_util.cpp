@@ -37,11 +37,12 @@ std::vector<glm::vec3> globalPositions(const Clip& clip, int frame) {
     const Joint& joint = clip.skeleton.joints[size_t(j)];
     glm::vec4 local = clip.rotation(frame, j);
     if (joint.parent < 0) {
-      position[size_t(j)] = clip.rootPositions[size_t(frame)];
+      position[size_t(j)] = clip.offset(frame, j);
       orientation[size_t(j)] = local;
     } else {
       glm::vec4 parent = orientation[size_t(joint.parent)];
-      position[size_t(j)] = position[size_t(joint.parent)] + quatRotate(parent, joint.offset);
+      position[size_t(j)] =
+          position[size_t(joint.parent)] + quatRotate(parent, clip.offset(frame, j));
       orientation[size_t(j)] = quatMul(parent, local);
     }
   }
@@ -82,6 +83,10 @@ void checkClip(const Clip& clip) {
          " joints of rotations and one root position per frame at a positive frame time, found ",
          clip.rotations.size(), " rotations, ", clip.rootPositions.size(),
          " root positions, frame time ", clip.frameTime);
+  }
+  if (!clip.animatedOffsets.empty() && clip.animatedOffsets.size() != clip.rotations.size()) {
+    fail("clip ", clip.name, ": expected no animated offsets or one per joint per frame (",
+         clip.rotations.size(), "), found ", clip.animatedOffsets.size());
   }
   for (int j = 0; j < clip.jointCount(); ++j) {
     int parent = clip.skeleton.joints[size_t(j)].parent;

@@ -24,7 +24,8 @@ glm::vec3 rotationVector(glm::vec4 q);
 // facing different directions compare by pitch and roll only.
 glm::vec4 removeYaw(glm::vec4 q);
 
-// Global position of every joint at `frame` (root at rootPositions[frame]).
+// Global position of every joint at `frame` (root at rootPositions[frame], the others at
+// their offsets of that frame: Clip::offset).
 std::vector<glm::vec3> globalPositions(const Clip& clip, int frame);
 
 // Mean over joints of the rotation angle between frames a and b.
@@ -34,7 +35,8 @@ float meanPoseAngle(const Clip& clip, int a, int b);
 // captures start with one), else 0.
 int firstUsableFrame(const Clip& clip);
 
-// Throws an Error naming the clip unless its arrays match frameCount and jointCount.
+// Throws an Error naming the clip unless its arrays match frameCount and jointCount
+// (animatedOffsets: empty or one per joint per frame).
 void checkClip(const Clip& clip);
 
 }  // namespace throng::anim::prep

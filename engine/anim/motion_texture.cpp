@@ -18,8 +18,7 @@ MotionTexture bakeMotionTexture(const Clip& clip) {
     glm::vec4* row = &tex.texels[size_t(f) * tex.width()];
     for (int j = 0; j < tex.jointCount; ++j) {
       row[2 * j] = clip.rotation(f, j);
-      glm::vec3 offset = j == 0 ? clip.rootPositions[f] : clip.skeleton.joints[j].offset;
-      row[2 * j + 1] = glm::vec4(offset, 0.0f);
+      row[2 * j + 1] = glm::vec4(clip.offset(f, j), 0.0f);  // per frame when animated
     }
   }
   return tex;

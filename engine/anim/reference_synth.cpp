@@ -21,9 +21,10 @@ glm::vec3 rootAt(const MotionTexture& tex, int k) {
 
 glm::vec3 mixVec(glm::vec3 a, glm::vec3 b, float w) { return a * (1.0f - w) + b * w; }
 
+// Rotation taking +y onto the unit vector d; |(d.z, 0, -d.x, 1 + d.y)|² = 2(1 + d.y).
 glm::vec4 alignYTo(glm::vec3 d) {
   if (d.y < -0.9999f) return glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-  return glm::normalize(glm::vec4(d.z, 0.0f, -d.x, 1.0f + d.y));
+  return glm::vec4(d.z, 0.0f, -d.x, 1.0f + d.y) * (1.0f / std::sqrt(2.0f + 2.0f * d.y));
 }
 
 void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
@@ -84,15 +85,17 @@ void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm
                    std::span<glm::vec4> out) {
   const int joints = pair.jointCount();
   THRONG_CHECK(static_cast<int>(out.size()) >= 3 * joints, "joint matrix output too small");
-  thread_local std::vector<PoseJoint> pose;
-  pose.resize(joints);
-  poseCharacterSpace(pair, motion.x, motion.y, pose);
-  int fs = frameAt(motion.x, pair.slow.frameCount);
-  int ff = frameAt(motion.x, pair.fast.frameCount);
-  glm::vec4 yaw = yawQuat(placement.w);
-  float scale = motion.w;
-  glm::vec3 origin(placement.x, placement.y, placement.z);
+  thread_local std::vector<PoseJoint> world;
+  world.resize(joints);
+  const float phase = motion.x, w = motion.y, scale = motion.w;
+  const int fs = frameAt(phase, pair.slow.frameCount);
+  const int ff = frameAt(phase, pair.fast.frameCount);
+  const glm::vec4 yaw = yawQuat(placement.w);
+  const glm::vec3 origin(placement.x, placement.y, placement.z);
+  // Composed directly in world space, like the GPU pass (root = M · root pose).
   for (int j = 0; j < joints; ++j) {
+    glm::vec4 q = slerpFast(pair.slow.rotation(fs, j), pair.fast.rotation(ff, j), w);
+    glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), w);
     int p = pair.parents[j];
     float radius = pair.jointRadius[j];
     glm::vec3 start;
@@ -100,20 +103,21 @@ void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm
     float length;
     if (p < 0) {
       // The root is drawn as a sphere around it: a vertical "bone" of length 2r.
-      start = pose[j].position + quatRotate(pose[j].rotation, glm::vec3(0.0f, -radius, 0.0f));
-      orientation = pose[j].rotation;
+      world[j].rotation = quatMul(yaw, q);
+      world[j].position = origin + glm::vec3(0.0f, scale * o.y, 0.0f);
+      start = world[j].position + quatRotate(world[j].rotation, glm::vec3(0.0f, -scale * radius, 0.0f));
+      orientation = world[j].rotation;
       length = 2.0f * radius;
     } else {
-      glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), motion.y);
+      world[j].position = world[p].position + quatRotate(world[p].rotation, scale * o);
+      world[j].rotation = quatMul(world[p].rotation, q);
       length = glm::length(o);
       glm::vec3 dir = length > 1e-6f ? o / length : glm::vec3(0.0f, 1.0f, 0.0f);
-      start = pose[p].position;
-      orientation = quatMul(pose[p].rotation, alignYTo(dir));
+      start = world[p].position;
+      orientation = quatMul(world[p].rotation, alignYTo(dir));
       if (length <= 1e-6f) radius = 0.0f;  // zero-length bones are not drawn
     }
-    glm::vec4 world = quatMul(yaw, orientation);
-    glm::vec3 t = origin + quatRotate(yaw, scale * start);
-    writeRows(world, scale * glm::vec3(radius, length, radius), t, &out[3 * j]);
+    writeRows(orientation, scale * glm::vec3(radius, length, radius), start, &out[3 * j]);
   }
 }
 

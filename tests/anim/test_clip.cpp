@@ -1,4 +1,7 @@
-// toClip: quaternions per joint per frame and the root's position.
+// toClip: quaternions per joint per frame, the root's position and the other joints'
+// per-frame translations.
+#include <algorithm>
+
 #include <doctest/doctest.h>
 #include <glm/gtc/quaternion.hpp>
 
@@ -68,12 +71,39 @@ TEST_CASE("toClip converts every joint's channels in its own order") {
   for (const glm::vec4& q : clip.rotations) CHECK(glm::length(q) == doctest::Approx(1.0f));
 }
 
-TEST_CASE("root position is its offset plus the position channels; other positions unused") {
+TEST_CASE("root position is its offset plus the channels; other joints' channels replace") {
   Clip clip = toClip(parseBvh(kSmall, "small.bvh"));
   CHECK(clip.rootPositions[0] == glm::vec3(11, 22, 33));
   CHECK(clip.rootPositions[1] == glm::vec3(0, 0, 0));
-  // The spine's position channels (7 8 9) change neither its offset nor its rotation.
+  // The spine's position channels (7 8 9, then 0 0 0) are its translation at that frame;
+  // the head has none and keeps its OFFSET. The skeleton keeps the rest offsets.
+  REQUIRE(clip.animatedOffsets.size() == 6);
+  CHECK(clip.offset(0, 1) == glm::vec3(7, 8, 9));
+  CHECK(clip.offset(1, 1) == glm::vec3(0, 0, 0));
+  CHECK(clip.offset(0, 2) == glm::vec3(0, 5, 0));
+  CHECK(clip.offset(1, 2) == glm::vec3(0, 5, 0));
+  CHECK(clip.offset(0, 0) == clip.rootPositions[0]);  // the root: its global position
+  CHECK(clip.offset(1, 0) == clip.rootPositions[1]);
   CHECK(clip.skeleton.joints[1].offset == glm::vec3(0, 10, 0));
+}
+
+TEST_CASE("a joint's single position channel replaces only the component it names") {
+  // BVH files give a joint 3 rotations or all 6 channels; a RawClip built in code may name
+  // fewer, and toClip keeps the OFFSET's other components.
+  RawClip raw;
+  raw.sourceName = "hips";
+  raw.skeleton.joints.push_back(Joint{"Root", -1, {0, 0, 0}, {Channel::Xposition}, std::nullopt});
+  raw.skeleton.joints.push_back(
+      Joint{"Hips", 0, {1, 90, 2}, {Channel::Zrotation, Channel::Yposition}, std::nullopt});
+  raw.frameCount = 2;
+  raw.frameTime = 0.1f;
+  raw.channelCount = 3;
+  raw.values = {0, 0, 85, 5, 90, 88};
+  Clip clip = toClip(raw);
+  CHECK(clip.offset(0, 1) == glm::vec3(1, 85, 2));
+  CHECK(clip.offset(1, 1) == glm::vec3(1, 88, 2));
+  CHECK(clip.rootPositions[1] == glm::vec3(5, 0, 0));
+  CHECK(near(clip.rotation(1, 1), axisRotation(Channel::Zrotation, 90.0f)));
 }
 
 TEST_CASE("a root without position channels stays at its offset") {
@@ -93,6 +123,7 @@ Frame Time: 0.5
   Clip clip = toClip(parseBvh(text, "rooted.bvh"));
   REQUIRE(clip.rootPositions.size() == 3);
   for (const glm::vec3& p : clip.rootPositions) CHECK(p == glm::vec3(4, 5, 6));
+  CHECK(clip.animatedOffsets.empty());
   CHECK(clip.rotation(2, 0).z == doctest::Approx(std::sin(glm::radians(10.0f))));
 }
 
@@ -120,4 +151,41 @@ TEST_CASE("toClip on real captures: T-pose frame is identity and the root travel
   // A run along +z: about 3.5 m/s over 1.2 s at ~0.0564 m/unit is tens of units.
   float travel = clip.rootPositions.back().z - clip.rootPositions[1].z;
   CHECK(std::abs(travel) > 30.0f);
+  CHECK(clip.animatedOffsets.empty());  // only the root has position channels
+}
+
+TEST_CASE("toClip on Bandai Namco: the hips carry the height and sway, the root slides") {
+  struct Case {
+    const char* file;
+    float low, high;  // the hips' Yposition over the file, centimetres
+  };
+  for (Case c : {Case{"bvh/bandai_namco/dataset-1_run_normal_001.bvh", 84.659f, 94.2034f},
+                 Case{"bvh/bandai_namco/dataset-1_dash_normal_001.bvh", 82.5403f, 89.7401f}}) {
+    if (!throng::test::haveSharedData(c.file)) return;
+    Clip clip = toClip(loadBvh(throng::test::sharedDataDir() / c.file));
+    CAPTURE(c.file);
+    const int hips = clip.skeleton.findJoint("Hips");
+    const int spine = clip.skeleton.findJoint("Spine");
+    REQUIRE(hips == 1);
+    REQUIRE(spine > hips);
+    REQUIRE(clip.animatedOffsets.size() == clip.rotations.size());
+    float low = 1e9f, high = -1e9f;
+    for (int f = 0; f < clip.frameCount; ++f) {
+      CHECK(clip.rootPositions[size_t(f)].y == 0.0f);  // the root only slides
+      low = std::min(low, clip.offset(f, hips).y);
+      high = std::max(high, clip.offset(f, hips).y);
+      // The other bones write their OFFSET again every frame.
+      glm::vec3 rest = clip.skeleton.joints[size_t(spine)].offset;
+      CHECK(glm::length(clip.offset(f, spine) - rest) < 1e-4f);
+    }
+    CHECK(low == doctest::Approx(c.low));
+    CHECK(high == doctest::Approx(c.high));
+    // The rest OFFSET (93.99) is the T-pose height, above most of the motion.
+    CHECK(clip.skeleton.joints[size_t(hips)].offset.y == doctest::Approx(93.9915f));
+  }
+  if (!throng::test::haveSharedData("bvh/bandai_namco/dataset-1_run_normal_001.bvh")) return;
+  Clip run = toClip(
+      loadBvh(throng::test::sharedDataDir() / "bvh/bandai_namco/dataset-1_run_normal_001.bvh"));
+  CHECK(run.offset(0, 1) == glm::vec3(-0.454435f, 86.083f, 8.33909e-14f));
+  CHECK(run.offset(3, 1).y == doctest::Approx(92.1612f));
 }

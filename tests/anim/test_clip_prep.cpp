@@ -9,12 +9,15 @@
 #include "anim/bvh.h"
 #include "anim/clip_prep.h"
 #include "anim/clip_prep_util.h"
+#include "clip_fixtures.h"
 #include "core/error.h"
 #include "core/math.h"
 #include "test_support.h"
 
 using namespace throng::anim;
 using throng::kPi;
+using throng::test::periodicClip;
+using throng::test::personSkeleton;
 
 namespace {
 
@@ -27,67 +30,6 @@ const char* const kBandaiWalk = "bvh/bandai_namco/dataset-1_walk_normal_002.bvh"
 
 RawClip load(const char* relative) {
   return loadBvh(throng::test::sharedDataDir() / relative);
-}
-
-// An upright 1.75 m skeleton in metres: hips at 0, head top at 0.8, soles at -0.95.
-Skeleton personSkeleton() {
-  Skeleton s;
-  auto add = [&](const char* name, int parent, glm::vec3 offset) {
-    s.joints.push_back(Joint{name, parent, offset, {}, std::nullopt});
-  };
-  add("Hips", -1, {0, 0, 0});
-  add("Spine", 0, {0, 0.25f, 0});
-  add("Head", 1, {0, 0.35f, 0});
-  s.joints.back().endSite = glm::vec3(0, 0.2f, 0);
-  for (int side = 0; side < 2; ++side) {
-    float x = side == 0 ? 0.1f : -0.1f;
-    int first = s.jointCount();
-    add(side == 0 ? "LeftUpLeg" : "RightUpLeg", 0, {x, -0.05f, 0});
-    add(side == 0 ? "LeftLeg" : "RightLeg", first, {0, -0.45f, 0});
-    add(side == 0 ? "LeftFoot" : "RightFoot", first + 1, {0, -0.42f, 0});
-    s.joints.back().endSite = glm::vec3(0, -0.03f, 0.12f);
-  }
-  return s;
-}
-
-glm::vec4 axisAngle(float angle, glm::vec3 axis) {
-  return throng::toVec4(glm::angleAxis(angle, glm::normalize(axis)));
-}
-
-// A gait-like clip with an exact period of `period` frames: legs swing in antiphase (so half
-// a period is a different pose), the body bobs twice per cycle and moves along `direction`.
-// `wobble` (radians) adds a spine motion with twice the period: two cycles then match
-// exactly, one only nearly, as in real capture.
-Clip periodicClip(int frames, int period, glm::vec3 direction = {0, 0, 1}, float speed = 3.0f,
-                  float wobble = 0.0f) {
-  Clip clip;
-  clip.name = "periodic";
-  clip.skeleton = personSkeleton();
-  clip.frameCount = frames;
-  clip.frameTime = 1.0f / 30.0f;
-  float heading = std::atan2(direction.x, direction.z);
-  for (int f = 0; f < frames; ++f) {
-    float phase = 2.0f * kPi * float(f) / float(period);
-    float swing = 0.5f + 0.5f * std::sin(phase);  // left hip: lowest foot at 3/4 of the cycle
-    float swingRight = 0.5f - 0.5f * std::sin(phase);
-    glm::vec4 rotations[9] = {
-        throng::quatMul(throng::yawQuat(heading),
-                        axisAngle(0.1f + 0.05f * std::sin(2 * phase), {1, 0, 0.3f})),
-        axisAngle(0.2f + 0.1f * std::sin(phase + 1.0f) + wobble * std::sin(0.5f * phase),
-                  {0, 1, 0.2f}),
-        axisAngle(0.15f * std::cos(phase), {1, 0.5f, 0}),
-        axisAngle(swing, {1, 0, 0}),
-        axisAngle(-0.4f - 0.3f * std::sin(phase + 0.5f), {1, 0, 0}),
-        axisAngle(0.3f + 0.2f * std::cos(phase), {1, 0, 0.1f}),
-        axisAngle(swingRight, {1, 0, 0}),
-        axisAngle(-0.4f + 0.3f * std::sin(phase + 0.5f), {1, 0, 0}),
-        axisAngle(0.3f - 0.2f * std::cos(phase), {1, 0, 0.1f}),
-    };
-    clip.rotations.insert(clip.rotations.end(), std::begin(rotations), std::end(rotations));
-    glm::vec3 ahead = glm::normalize(direction) * (speed * clip.frameTime * float(f));
-    clip.rootPositions.push_back(ahead + glm::vec3(0, 1.0f + 0.03f * std::cos(2 * phase), 0));
-  }
-  return clip;
 }
 
 // The same clip after a calibration frame with every joint at identity (as CMU starts).
