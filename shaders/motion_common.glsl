@@ -17,29 +17,44 @@ vec4 slerpShortest(vec4 a, vec4 b, float t) {
   return wa * a + wb * b;
 }
 
-// Series slerp, mirrors slerpFast in engine/core/math.h (see there for the error bound).
+// Series slerp, mirrors slerpFast in engine/core/math.h (see there for the error bound). The
+// t-dependent terms are computed once per character (makeSlerpWeights) and reused by all joints.
 const int kSlerpTerms = 12;
 const float kSlerpOnePlusMu = 1.894;
 
-float slerpSeriesWeight(float t, float xm1) {
-  float r = 1.0;
-  for (int i = kSlerpTerms; i >= 1; --i) {
+struct SlerpWeights {
+  float t;
+  float termsT[kSlerpTerms];
+  float termsD[kSlerpTerms];
+};
+
+SlerpWeights makeSlerpWeights(float t) {
+  SlerpWeights s;
+  s.t = t;
+  float d = 1.0 - t;
+  [[unroll]] for (int i = 1; i <= kSlerpTerms; ++i) {
     float u = 1.0 / float(i * (2 * i + 1));
     float v = float(i) / float(2 * i + 1);
     if (i == kSlerpTerms) {
       u *= kSlerpOnePlusMu;
       v *= kSlerpOnePlusMu;
     }
-    r = 1.0 + (u * t * t - v) * xm1 * r;
+    s.termsT[i - 1] = u * t * t - v;
+    s.termsD[i - 1] = u * d * d - v;
   }
-  return t * r;
+  return s;
 }
 
-vec4 slerpFast(vec4 a, vec4 b, float t) {
+vec4 slerpFast(vec4 a, vec4 b, SlerpWeights s) {
   float cosTheta = dot(a, b);
   float sign = cosTheta < 0.0 ? -1.0 : 1.0;
   float xm1 = sign * cosTheta - 1.0;
-  return slerpSeriesWeight(1.0 - t, xm1) * a + (sign * slerpSeriesWeight(t, xm1)) * b;
+  float rT = 1.0, rD = 1.0;
+  [[unroll]] for (int i = kSlerpTerms - 1; i >= 0; --i) {
+    rT = 1.0 + s.termsT[i] * xm1 * rT;
+    rD = 1.0 + s.termsD[i] * xm1 * rD;
+  }
+  return ((1.0 - s.t) * rD) * a + (sign * s.t * rT) * b;
 }
 
 vec4 quatMul(vec4 a, vec4 b) {

@@ -1,5 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 // Root motion (DESIGN eq. 10), one invocation per character: advance the phase, move the root by
 // the blended per-frame displacement rotated by the heading and scaled; w changes to wTarget
 // only when the cycle ends. CPU twin: anim::stepCharacter.

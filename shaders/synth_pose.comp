@@ -181,11 +181,12 @@ void main() {
   int fastRow = ff * 2 * kJointCount;
   vec4 yaw = yawQuat(place.w);
   vec3 origin = place.xyz;
+  SlerpWeights weights = makeSlerpWeights(w);
   uint base = local * push.jointCount;
   // The hierarchy is composed directly in world space (root = M · root pose), which saves a
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
-    vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], w);
+    vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], weights);
     vec3 o = slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w;
     int p = parentOf(j);
     float radius = jointRadius[j];

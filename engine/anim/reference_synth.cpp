@@ -92,9 +92,10 @@ void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm
   const int ff = frameAt(phase, pair.fast.frameCount);
   const glm::vec4 yaw = yawQuat(placement.w);
   const glm::vec3 origin(placement.x, placement.y, placement.z);
+  const SlerpWeights weights = makeSlerpWeights(w);
   // Composed directly in world space, like the GPU pass (root = M · root pose).
   for (int j = 0; j < joints; ++j) {
-    glm::vec4 q = slerpFast(pair.slow.rotation(fs, j), pair.fast.rotation(ff, j), w);
+    glm::vec4 q = slerpFast(pair.slow.rotation(fs, j), pair.fast.rotation(ff, j), weights);
     glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), w);
     int p = pair.parents[j];
     float radius = pair.jointRadius[j];

@@ -33,26 +33,44 @@ inline glm::vec4 slerpShortest(glm::vec4 a, glm::vec4 b, float t) {
 constexpr int kSlerpTerms = 12;
 constexpr float kSlerpOnePlusMu = 1.894f;
 
-inline float slerpSeriesWeight(float t, float xm1) {
-  float r = 1.0f;
-  for (int i = kSlerpTerms; i >= 1; --i) {
+// The parts of the series that depend only on t: (u_i t² − v_i) for the weights of both ends.
+// A character blends all its joints with one t, so these are computed once per character.
+struct SlerpWeights {
+  float t = 0.0f;
+  float termsT[kSlerpTerms];      // for sin(tθ)/sin θ
+  float termsD[kSlerpTerms];      // for sin((1−t)θ)/sin θ
+};
+
+inline SlerpWeights makeSlerpWeights(float t) {
+  SlerpWeights s;
+  s.t = t;
+  float d = 1.0f - t;
+  for (int i = 1; i <= kSlerpTerms; ++i) {
     float u = 1.0f / float(i * (2 * i + 1));
     float v = float(i) / float(2 * i + 1);
     if (i == kSlerpTerms) {
       u *= kSlerpOnePlusMu;
       v *= kSlerpOnePlusMu;
     }
-    r = 1.0f + (u * t * t - v) * xm1 * r;
+    s.termsT[i - 1] = u * t * t - v;
+    s.termsD[i - 1] = u * d * d - v;
   }
-  return t * r;
+  return s;
 }
 
-inline glm::vec4 slerpFast(glm::vec4 a, glm::vec4 b, float t) {
+inline glm::vec4 slerpFast(glm::vec4 a, glm::vec4 b, const SlerpWeights& s) {
   float cosTheta = glm::dot(a, b);
   float sign = cosTheta < 0.0f ? -1.0f : 1.0f;
   float xm1 = sign * cosTheta - 1.0f;
-  return slerpSeriesWeight(1.0f - t, xm1) * a + (sign * slerpSeriesWeight(t, xm1)) * b;
+  float rT = 1.0f, rD = 1.0f;
+  for (int i = kSlerpTerms - 1; i >= 0; --i) {
+    rT = 1.0f + s.termsT[i] * xm1 * rT;
+    rD = 1.0f + s.termsD[i] * xm1 * rD;
+  }
+  return ((1.0f - s.t) * rD) * a + (sign * s.t * rT) * b;
 }
+
+inline glm::vec4 slerpFast(glm::vec4 a, glm::vec4 b, float t) { return slerpFast(a, b, makeSlerpWeights(t)); }
 
 inline glm::quat toQuat(glm::vec4 q) { return glm::quat(q.w, q.x, q.y, q.z); }
 inline glm::vec4 toVec4(glm::quat q) { return glm::vec4(q.x, q.y, q.z, q.w); }
