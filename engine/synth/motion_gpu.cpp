@@ -18,6 +18,7 @@ GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPa
   GpuMotionPair gpuPair;
   gpuPair.slow = uploadMotionTexture(context, pair.slow);
   gpuPair.fast = uploadMotionTexture(context, pair.fast);
+  gpuPair.parents = gpu::makeStorageBuffer<int32_t>(context, pair.parents);
   gpuPair.parentsHost = pair.parents;
   gpuPair.jointRadius = gpu::makeStorageBuffer<float>(context, pair.jointRadius);
   gpuPair.slowTexels = gpu::makeStorageBuffer<glm::vec4>(context, pair.slow.texels);

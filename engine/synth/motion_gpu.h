@@ -1,6 +1,6 @@
 #pragma once
 // A slow/fast motion pair on the GPU: two RGBA32F motion textures sampled with texelFetch,
-// the joint radii as an SSBO (the parent array is baked into the pose pipeline).
+// the parent array and the joint radii as SSBOs.
 #include "anim/motion_texture.h"
 #include "gpu/buffer.h"
 #include "gpu/image.h"
@@ -10,7 +10,8 @@ namespace throng::synth {
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;
-  std::vector<int32_t> parentsHost;
+  gpu::Buffer parents;                // int32 per joint, root −1 (DESIGN's parent array)
+  std::vector<int32_t> parentsHost;   // the same on the host (the pose pipeline bakes it in)
   gpu::Buffer jointRadius;
   // The same texels as SSBOs: the pose pass reads these, because on lavapipe a buffer load is
   // several times cheaper than texelFetch (see README, benchmarks).
