@@ -11,6 +11,9 @@ layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer SlowMotion { vec4 slowMotion[]; };
 layout(std430, binding = 1) readonly buffer FastMotion { vec4 fastMotion[]; };
 layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
+// Offsets of joints whose offset never changes: (slow, fast) at (2j, 2j + 1). Read at a
+// constant index, so every lane shares one load instead of gathering per lane.
+layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = 3) readonly buffer Placement { vec4 placement[]; };
 layout(std430, binding = 4) readonly buffer Motion { vec4 motion[]; };
 layout(std430, binding = 5) writeonly buffer Joints { JointMatrix joints[]; };
@@ -84,6 +87,13 @@ layout(constant_id = 61) const int kParent60 = -1;
 layout(constant_id = 62) const int kParent61 = -1;
 layout(constant_id = 63) const int kParent62 = -1;
 layout(constant_id = 64) const int kParent63 = -1;
+// Bit j set: joint j's offset changes over frames (read per lane from the motion texels).
+layout(constant_id = 65) const uint kAnimatedOffsetsLow = 1u;
+layout(constant_id = 66) const uint kAnimatedOffsetsHigh = 0u;
+bool offsetAnimated(int j) {
+  return j < 32 ? ((kAnimatedOffsetsLow >> uint(j)) & 1u) != 0u : ((kAnimatedOffsetsHigh >> uint(j - 32)) & 1u) != 0u;
+}
+
 // A switch rather than an array: glslang has no constant arrays of specialization constants,
 // and once the loop is unrolled every call folds to one constant.
 int parentOf(int j) {
@@ -187,7 +197,9 @@ void main() {
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
     vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], weights);
-    vec3 o = slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w;
+    vec3 o = offsetAnimated(j)
+                 ? slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w
+                 : constantOffsets[2 * j].xyz * (1.0 - w) + constantOffsets[2 * j + 1].xyz * w;
     int p = parentOf(j);
     float radius = jointRadius[j];
     vec3 start;

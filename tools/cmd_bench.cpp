@@ -141,7 +141,7 @@ void runBench(BenchOptions& o) {
   gpu::ContextOptions contextOptions;
   contextOptions.device = o.device;
   gpu::Context context(contextOptions);
-  synth::SynthPrograms programs(context, pair.parents);
+  synth::SynthPrograms programs(context, pair);
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
 
   std::vector<Row> rows;

@@ -43,7 +43,7 @@ void runRender(RenderOptions& o) {
   contextOptions.device = o.scene.device;
   contextOptions.validation = o.validation;
   gpu::Context context(contextOptions);
-  synth::SynthPrograms programs(context, pair.parents);
+  synth::SynthPrograms programs(context, pair);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd);

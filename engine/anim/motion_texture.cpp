@@ -43,6 +43,12 @@ MotionPair makeMotionPair(const Clip& slow, const Clip& fast) {
   pair.fast = bakeMotionTexture(fast);
   pair.parents = slow.skeleton.parents();
   for (int j = 0; j < slow.jointCount(); ++j) pair.jointRadius.push_back(boneRadius(slow.skeleton.joints[j], j));
+  for (int j = 0; j < slow.jointCount(); ++j) {
+    bool animated = j == 0;
+    for (const MotionTexture* tex : {&pair.slow, &pair.fast})
+      for (int f = 1; f < tex->frameCount && !animated; ++f) animated = tex->offset(f, j) != tex->offset(0, j);
+    pair.animatedOffset.push_back(animated);
+  }
   return pair;
 }
 

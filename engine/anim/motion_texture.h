@@ -34,6 +34,9 @@ struct MotionPair {
   MotionTexture fast;
   std::vector<int32_t> parents;
   std::vector<float> jointRadius;
+  // Per joint: true when its offset changes from frame to frame in either clip (the root's
+  // position always does). Other joints' offsets are constants the pose pass reads once.
+  std::vector<bool> animatedOffset;
   int jointCount() const { return slow.jointCount; }
 };
 

@@ -19,6 +19,17 @@ GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPa
   gpuPair.slow = uploadMotionTexture(context, pair.slow);
   gpuPair.fast = uploadMotionTexture(context, pair.fast);
   gpuPair.parents = gpu::makeStorageBuffer<int32_t>(context, pair.parents);
+  std::vector<glm::vec4> offsets(128, glm::vec4(0.0f));
+  for (int j = 0; j < pair.jointCount(); ++j) {
+    offsets[2 * j] = glm::vec4(pair.slow.offset(0, j), 0.0f);
+    offsets[2 * j + 1] = glm::vec4(pair.fast.offset(0, j), 0.0f);
+  }
+  gpuPair.constantOffsets = gpu::Buffer(context, offsets.size() * sizeof(glm::vec4),
+                                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        gpu::MemoryUse::DeviceLocal);
+  gpu::uploadBytes(context, gpuPair.constantOffsets,
+                   {reinterpret_cast<const uint8_t*>(offsets.data()), offsets.size() * sizeof(glm::vec4)});
+  gpuPair.animatedOffset = pair.animatedOffset;
   gpuPair.parentsHost = pair.parents;
   gpuPair.jointRadius = gpu::makeStorageBuffer<float>(context, pair.jointRadius);
   gpuPair.slowTexels = gpu::makeStorageBuffer<glm::vec4>(context, pair.slow.texels);

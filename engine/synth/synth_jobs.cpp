@@ -13,21 +13,27 @@ void throwIfInvalid(const std::string& job, const std::vector<std::string>& prob
 }
 
 namespace {
-// Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j.
-std::vector<uint32_t> poseSpecialization(const std::vector<int32_t>& parents) {
+// Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j,
+// [65], [66] the bit mask of joints whose offsets change over frames.
+std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair) {
+  const std::vector<int32_t>& parents = pair.parents;
   if (parents.empty() || parents.size() > 64)
     fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
-  std::vector<uint32_t> values(65, static_cast<uint32_t>(-1));
+  std::vector<uint32_t> values(67, static_cast<uint32_t>(-1));
   values[0] = static_cast<uint32_t>(parents.size());
   for (size_t j = 0; j < parents.size(); ++j) values[1 + j] = static_cast<uint32_t>(parents[j]);
+  values[65] = values[66] = 0;
+  for (size_t j = 0; j < pair.animatedOffset.size(); ++j)
+    if (pair.animatedOffset[j]) values[65 + j / 32] |= 1u << (j % 32);
   return values;
 }
 }  // namespace
 
-SynthPrograms::SynthPrograms(const gpu::Context& context, const std::vector<int32_t>& parents)
+SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp"),
-      pose(context, "synth_pose.comp", poseSpecialization(parents)),
-      poseParents(parents) {}
+      pose(context, "synth_pose.comp", poseSpecialization(pair)),
+      poseParents(pair.parents),
+      poseAnimatedOffsets(pair.animatedOffset) {}
 
 std::vector<std::string> RootMotionJob::validate() const {
   std::vector<std::string> problems;
@@ -81,7 +87,7 @@ std::vector<std::string> PoseJob::validate() const {
 
 void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("PoseJob", validate());
-  if (programs.poseParents != motion->parentsHost)
+  if (programs.poseParents != motion->parentsHost || programs.poseAnimatedOffsets != motion->animatedOffset)
     fail("PoseJob: the pose program was specialized for another skeleton (", programs.poseParents.size(),
          " joints) than the motion pair's (", motion->parentsHost.size(), " joints)");
   uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
@@ -99,6 +105,7 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
       gpu::storageBinding(3, crowd->placement),
       gpu::storageBinding(4, crowd->motion),
       gpu::storageBinding(5, *joints, jointsOffset, bytes),
+      gpu::uniformBinding(6, motion->constantOffsets),
   };
   gpu::dispatch(cmd, programs.pose, bindings, push, count);
 }

@@ -17,8 +17,9 @@ namespace throng::synth {
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram pose;
-  std::vector<int32_t> poseParents;  // the skeleton `pose` was specialized for
-  SynthPrograms(const gpu::Context& context, const std::vector<int32_t>& parents);
+  std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
+  std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
+  SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair);
 };
 
 // Eq. 10 on the GPU; twin: anim::stepCharacter.

@@ -7,6 +7,7 @@
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "synth/cpu_synth.h"
+#include "synth/crowd_synth.h"
 #include "synth/synth_jobs.h"
 #include "synth_fixtures.h"
 
@@ -29,7 +30,7 @@ struct Comparison {
 
 Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd, int frames, float dt) {
   gpu::Context& ctx = test::gpuContext();
-  synth::SynthPrograms programs(ctx, pair.parents);
+  synth::SynthPrograms programs(ctx, pair);
   GpuCrowdRun run{synth::uploadMotionPair(ctx, pair), crowd::uploadCrowd(ctx, cpuCrowd), {}};
   const size_t jointCount = cpuCrowd.size() * pair.jointCount();
   run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointMatrix), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
@@ -65,7 +66,7 @@ TEST_CASE("PoseJob: validity") {
   CHECK(problems[0].find("'motion'") != std::string::npos);
   CHECK(problems[1].find("'crowd'") != std::string::npos);
   CHECK(problems[2].find("'joints'") != std::string::npos);
-  CHECK_THROWS_WITH_AS(job.record(VK_NULL_HANDLE, synth::SynthPrograms(test::gpuContext(), {-1})), doctest::Contains("PoseJob is invalid"), Error);
+  CHECK_THROWS_WITH_AS(job.record(VK_NULL_HANDLE, synth::SynthPrograms(test::gpuContext(), test::syntheticPair(3, 4, 4, 1))), doctest::Contains("PoseJob is invalid"), Error);
 }
 
 TEST_CASE("PoseJob: an output buffer too small for the chunk is reported") {
@@ -140,4 +141,28 @@ TEST_CASE("GPU vs CPU twin on real capture: CMU 35_17 run/jog + 09_01 run (loops
   MESSAGE(clips.description, ": max |GPU - CPU| joints ", worst.joints);
   CHECK(worst.joints <= 1e-4f);
   CHECK(worst.placement <= 1e-4f);
+}
+
+TEST_CASE("recordSynthesis (the frame orchestrator) matches the CPU twin on the built-in pair") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 500;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  synth::SynthPrograms programs(ctx, pair);
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, crowd);
+  // A small binding limit forces several pose chunks.
+  const VkDeviceSize chunkBytes = VkDeviceSize(128) * pair.jointCount() * sizeof(synth::JointMatrix);
+  for (int f = 0; f < 3; ++f) {
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordSynthesis(cmd, programs, gpuSynth, 1 / 30.0f, chunkBytes); });
+    synth::stepCrowdCpu(pair, crowd, 1 / 30.0f, 2);
+  }
+  std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
+  synth::poseCrowdCpu(pair, crowd, cpuJoints, 2);
+  auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, cpuJoints.size());
+  float worst = test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12);
+  MESSAGE("orchestrated synthesis: max |GPU - CPU| ", worst);
+  CHECK(worst <= 1e-4f);
+  CHECK(ctx.validationMessageCount() == 0);
 }
