@@ -48,9 +48,29 @@ THRONG_STRUCT(PosePush) {
   uint slowFrames;
   uint fastFrames;
   uint firstCharacter;    // dispatch in chunks: output index = character - firstCharacter
+  uint cacheEnabled;      // 1: characters whose speed bucket is cached take their pose from it
+  uint segmentCount;      // cache entries hold one pose per (slow frame, fast frame) segment
+  float bucketWidth;      // speed-weight bucket width of the cache
+};
+
+// The motion cache's counters and FIFO state (DESIGN §3.4), kept on the GPU.
+THRONG_STRUCT(CacheCounters) {
+  uint hits;              // requested buckets found resident (one lookup per bucket per frame)
+  uint misses;            // requested buckets synthesized and inserted
+  uint evictions;         // entries dropped, oldest first, to make room
+  uint entries;           // resident entries
+  uint head;              // next slot to fill (the oldest entry once full)
+  uint capacity;          // entries that fit the byte budget
+  uint bucketCount;
   uint pad0;
-  uint pad1;
-  uint pad2;
+};
+
+// Push constants of the cache passes.
+THRONG_STRUCT(CachePush) {
+  uint characterCount;
+  uint segmentCount;
+  uint slotCount;         // capacity (fill pass: slots × segments invocations)
+  float bucketWidth;
 };
 
 // Per-frame camera and light for the joint and ground draws (a uniform buffer).

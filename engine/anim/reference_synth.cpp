@@ -81,17 +81,13 @@ void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<
   }
 }
 
-void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
-                   std::span<glm::vec4> out) {
+void poseCharacterFrames(const MotionPair& pair, int fs, int ff, float w, float heading, glm::vec3 origin,
+                         float scale, std::span<glm::vec4> out) {
   const int joints = pair.jointCount();
   THRONG_CHECK(static_cast<int>(out.size()) >= 3 * joints, "joint matrix output too small");
   thread_local std::vector<PoseJoint> world;
   world.resize(joints);
-  const float phase = motion.x, w = motion.y, scale = motion.w;
-  const int fs = frameAt(phase, pair.slow.frameCount);
-  const int ff = frameAt(phase, pair.fast.frameCount);
-  const glm::vec4 yaw = yawQuat(placement.w);
-  const glm::vec3 origin(placement.x, placement.y, placement.z);
+  const glm::vec4 yaw = yawQuat(heading);
   const SlerpWeights weights = makeSlerpWeights(w);
   // Composed directly in world space, like the GPU pass (root = M · root pose).
   for (int j = 0; j < joints; ++j) {
@@ -121,6 +117,14 @@ void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm
     writeRows(orientation, scale * glm::vec3(radius, length, radius), start, &out[3 * j]);
   }
 }
+
+void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
+                   std::span<glm::vec4> out) {
+  poseCharacterFrames(pair, frameAt(motion.x, pair.slow.frameCount), frameAt(motion.x, pair.fast.frameCount), motion.y,
+                      placement.w, glm::vec3(placement), motion.w, out);
+}
+
+int poseFrame(float phase, int frames) { return frameAt(phase, frames); }
 
 glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p) {
   return glm::vec3(glm::dot(glm::vec3(rows[0]), p) + rows[0].w, glm::dot(glm::vec3(rows[1]), p) + rows[1].w,

@@ -28,6 +28,14 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
 void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
                    std::span<glm::vec4> out);
 
+// The same at explicit slow/fast frames and speed weight, placed by heading, origin and scale;
+// heading 0, origin 0, scale 1 gives the character-space pose the motion cache stores.
+void poseCharacterFrames(const MotionPair& pair, int slowFrame, int fastFrame, float w, float heading,
+                         glm::vec3 origin, float scale, std::span<glm::vec4> out);
+
+// The frame of a clip shown at a phase in [0, 1) (what the pose pass samples).
+int poseFrame(float phase, int frames);
+
 // Character-space joint positions and global rotations (for tests and metrics).
 struct PoseJoint {
   glm::vec3 position;

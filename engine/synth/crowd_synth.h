@@ -4,6 +4,7 @@
 #include "anim/motion_texture.h"
 #include "crowd/crowd.h"
 #include "gpu/buffer.h"
+#include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
 #include "synth/synth_jobs.h"
 
@@ -14,14 +15,16 @@ struct CrowdSynth {
   GpuMotionPair motion;
   crowd::CrowdBuffers crowd;
   gpu::Buffer joints;  // crowd.count × jointCount JointMatrix
+  GpuMotionCache cache;
   anim::Steering steering = anim::Steering::KeepHeading;
 
   uint32_t jointCount() const { return motion.jointCount; }
 };
 
-CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd);
+CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd,
+                          const MotionCacheOptions& cache = {});
 
-// Root motion, then the pose pass in chunks that each bind at most `maxBindingBytes` of output.
+// Root motion, the motion cache when enabled, then the pose pass in chunks that each bind at most `maxBindingBytes` of output.
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
                      VkDeviceSize maxBindingBytes);
 

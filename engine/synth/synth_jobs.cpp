@@ -1,6 +1,7 @@
 #include "synth/synth_jobs.h"
 
 #include "core/error.h"
+#include "gpu/commands.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
@@ -32,8 +33,51 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair) {
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp"),
       pose(context, "synth_pose.comp", poseSpecialization(pair)),
+      cacheLookup(context, "cache_lookup.comp"),
+      cacheInsert(context, "cache_insert.comp"),
+      cacheFill(context, "cache_fill.comp", poseSpecialization(pair)),
       poseParents(pair.parents),
-      poseAnimatedOffsets(pair.animatedOffset) {}
+      poseAnimatedOffsets(pair.animatedOffset) {
+  const int32_t none[] = {-1};
+  noCacheSlots = gpu::makeStorageBuffer<int32_t>(context, none);
+  noCacheData = gpu::Buffer(context, sizeof(JointMatrix), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+}
+
+std::vector<std::string> CacheJob::validate() const {
+  std::vector<std::string> problems;
+  if (!motion) problems.push_back("input 'motion' (GPU motion textures) is missing");
+  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
+  if (!cache) problems.push_back("input/output 'cache' is missing");
+  if (cache && !cache->options.enabled) problems.push_back("the cache is disabled");
+  if (cache && motion && cache->jointCount != motion->jointCount)
+    problems.push_back(concat("the cache holds ", cache->jointCount, " joints per pose, the motion pair has ",
+                              motion->jointCount));
+  return problems;
+}
+
+void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
+  throwIfInvalid("CacheJob", validate());
+  CachePush push{crowd->count, cache->segmentCount, cache->capacity, cache->options.bucketWidth};
+  gpu::Binding lookup[] = {gpu::storageBinding(0, crowd->motion), gpu::storageBinding(1, cache->counters),
+                           gpu::storageBinding(2, cache->requested)};
+  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, crowd->count);
+  gpu::computeToComputeBarrier(cmd);
+  gpu::Binding insert[] = {gpu::storageBinding(1, cache->counters), gpu::storageBinding(2, cache->requested),
+                           gpu::storageBinding(3, cache->bucketSlot), gpu::storageBinding(4, cache->slotBucket),
+                           gpu::storageBinding(5, cache->fresh)};
+  gpu::dispatch(cmd, programs.cacheInsert, insert, nullptr, 0, 1);
+  gpu::computeToComputeBarrier(cmd);
+  if (cache->capacity > 0) {
+    gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels), gpu::storageBinding(1, motion->fastTexels),
+                           gpu::storageBinding(2, motion->jointRadius), gpu::uniformBinding(6, motion->constantOffsets),
+                           gpu::storageBinding(7, cache->slotBucket), gpu::storageBinding(8, cache->fresh),
+                           gpu::storageBinding(9, cache->segmentFrames), gpu::storageBinding(10, cache->data)};
+    gpu::dispatch(cmd, programs.cacheFill, fill, push, cache->capacity * cache->segmentCount);
+    gpu::computeToComputeBarrier(cmd);
+    vkCmdFillBuffer(cmd, cache->fresh.get(), 0, VK_WHOLE_SIZE, 0u);
+    gpu::computeToComputeBarrier(cmd);
+  }
+}
 
 std::vector<std::string> RootMotionJob::validate() const {
   std::vector<std::string> problems;
@@ -97,6 +141,10 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   push.slowFrames = motion->slowFrames;
   push.fastFrames = motion->fastFrames;
   push.firstCharacter = firstCharacter;
+  const bool cached = cache && cache->options.enabled && cache->capacity > 0;
+  push.cacheEnabled = cached ? 1u : 0u;
+  push.segmentCount = cached ? cache->segmentCount : 0u;
+  push.bucketWidth = cached ? cache->options.bucketWidth : 1.0f;
   VkDeviceSize bytes = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, motion->slowTexels),
@@ -106,6 +154,8 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
       gpu::storageBinding(4, crowd->motion),
       gpu::storageBinding(5, *joints, jointsOffset, bytes),
       gpu::uniformBinding(6, motion->constantOffsets),
+      cached ? gpu::storageBinding(7, cache->bucketSlot) : gpu::storageBinding(7, programs.noCacheSlots),
+      cached ? gpu::storageBinding(8, cache->data) : gpu::storageBinding(8, programs.noCacheData),
   };
   gpu::dispatch(cmd, programs.pose, bindings, push, count);
 }

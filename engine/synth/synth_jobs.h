@@ -8,6 +8,7 @@
 #include "anim/reference_synth.h"
 #include "crowd/crowd.h"
 #include "gpu/program.h"
+#include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
 
 namespace throng::synth {
@@ -17,6 +18,11 @@ namespace throng::synth {
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram pose;
+  gpu::ComputeProgram cacheLookup;
+  gpu::ComputeProgram cacheInsert;
+  gpu::ComputeProgram cacheFill;       // specialized like `pose`
+  gpu::Buffer noCacheSlots;            // bindings for a pose pass without a cache
+  gpu::Buffer noCacheData;
   std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
   SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair);
@@ -42,6 +48,18 @@ struct PoseJob {
   uint32_t firstCharacter = 0;                  // the chunk [first, first + count)
   uint32_t characterCount = 0;                  // 0: every character from firstCharacter
   VkDeviceSize jointsOffset = 0;                // where the chunk's output starts in `joints`
+  const GpuMotionCache* cache = nullptr; // optional input: cached poses by speed bucket
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+};
+
+// The motion cache for this frame: lookup (per character), insert (FIFO, once per bucket) and
+// fill (synthesize fresh entries); then PoseJob serves cached characters from it.
+struct CacheJob {
+  const GpuMotionPair* motion = nullptr;        // input
+  const crowd::CrowdBuffers* crowd = nullptr;   // input: speed weights
+  const GpuMotionCache* cache = nullptr;        // input and output
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;

@@ -1,0 +1,98 @@
+#include "synth/motion_cache_cpu.h"
+
+#include <cmath>
+
+#include "anim/reference_synth.h"
+#include "core/error.h"
+#include "synth/cpu_synth.h"
+
+namespace throng::synth {
+
+MotionCacheCpu::MotionCacheCpu(const anim::MotionPair& pair, const MotionCacheOptions& options)
+    : pair_(&pair), options_(options) {
+  validateCacheOptions(options);
+  bucketCount_ = speedBucketCount(options.bucketWidth);
+  segments_ = cacheSegments(pair.slow.frameCount, pair.fast.frameCount);
+  entryBytes_ = uint64_t(segments_.size()) * pair.jointCount() * sizeof(JointMatrix);
+  capacity_ = options.enabled ? static_cast<uint32_t>(options.budgetBytes / entryBytes_) : 0u;
+  bucketSlot_.assign(bucketCount_, -1);
+  slotBucket_.assign(capacity_, -1);
+  entries_.resize(capacity_);
+  stats_.budgetBytes = options.budgetBytes;
+}
+
+void MotionCacheCpu::update(const crowd::Crowd& crowd) {
+  std::vector<bool> requested(bucketCount_, false);
+  for (const glm::vec4& m : crowd.motion) requested[speedBucket(m.y, options_.bucketWidth, bucketCount_)] = true;
+  std::vector<uint32_t> fresh;
+  for (uint32_t b = 0; b < bucketCount_; ++b) {
+    if (!requested[b]) continue;
+    if (bucketSlot_[b] >= 0) {
+      ++stats_.hits;
+      continue;
+    }
+    ++stats_.misses;
+    if (capacity_ == 0) continue;
+    uint32_t slot = head_;
+    int32_t previous = slotBucket_[slot];
+    if (previous >= 0) {
+      bucketSlot_[previous] = -1;
+      ++stats_.evictions;
+    } else {
+      ++stats_.entries;
+    }
+    bucketSlot_[b] = static_cast<int32_t>(slot);
+    slotBucket_[slot] = static_cast<int32_t>(b);
+    fresh.push_back(slot);
+    head_ = (slot + 1) % capacity_;
+  }
+  const size_t joints = static_cast<size_t>(pair_->jointCount());
+  for (uint32_t slot : fresh) {
+    if (slotBucket_[slot] < 0) continue;
+    float w = bucketSpeed(static_cast<uint32_t>(slotBucket_[slot]), options_.bucketWidth);
+    std::vector<JointMatrix>& entry = entries_[slot];
+    entry.assign(segments_.size() * joints, JointMatrix{});
+    for (size_t k = 0; k < segments_.size(); ++k) {
+      if (segments_[k].x < 0) continue;
+      auto* rows = reinterpret_cast<glm::vec4*>(&entry[k * joints]);
+      anim::poseCharacterFrames(*pair_, segments_[k].x, segments_[k].y, w, 0.0f, glm::vec3(0.0f), 1.0f,
+                                std::span<glm::vec4>(rows, 3 * joints));
+    }
+  }
+  stats_.bytesUsed = uint64_t(stats_.entries) * entryBytes_;
+}
+
+bool MotionCacheCpu::pose(const glm::vec4& placement, const glm::vec4& motion, std::span<JointMatrix> out) const {
+  if (capacity_ == 0) return false;
+  int32_t slot = bucketSlot_[speedBucket(motion.y, options_.bucketWidth, bucketCount_)];
+  if (slot < 0) return false;
+  const size_t joints = static_cast<size_t>(pair_->jointCount());
+  int segment = anim::poseFrame(motion.x, pair_->slow.frameCount) + anim::poseFrame(motion.x, pair_->fast.frameCount);
+  const JointMatrix* cached = &entries_[slot][size_t(segment) * joints];
+  float c = std::cos(placement.w), s = std::sin(placement.w), scale = motion.w;
+  for (size_t j = 0; j < joints; ++j) {
+    const JointMatrix& p = cached[j];
+    out[j].row0 = scale * (c * p.row0 + s * p.row2) + glm::vec4(0.0f, 0.0f, 0.0f, placement.x);
+    out[j].row1 = scale * p.row1 + glm::vec4(0.0f, 0.0f, 0.0f, placement.y);
+    out[j].row2 = scale * (c * p.row2 - s * p.row0) + glm::vec4(0.0f, 0.0f, 0.0f, placement.z);
+  }
+  return true;
+}
+
+MotionCacheStats MotionCacheCpu::stats() const { return stats_; }
+
+void poseCrowdCpuCached(const anim::MotionPair& pair, const MotionCacheCpu& cache, const crowd::Crowd& crowd,
+                        std::span<JointMatrix> out, unsigned threads) {
+  const size_t joints = static_cast<size_t>(pair.jointCount());
+  THRONG_CHECK(out.size() >= crowd.size() * joints, "joint matrix output too small");
+  parallelFor(crowd.size(), threads, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      std::span<JointMatrix> mine = out.subspan(i * joints, joints);
+      if (cache.pose(crowd.placement[i], crowd.motion[i], mine)) continue;
+      anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i],
+                          std::span<glm::vec4>(reinterpret_cast<glm::vec4*>(mine.data()), 3 * joints));
+    }
+  });
+}
+
+}  // namespace throng::synth

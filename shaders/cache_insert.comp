@@ -1,0 +1,39 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Motion cache, step 2 (a single invocation, buckets in ascending order): each requested bucket
+// is a hit when resident, else a miss that takes the FIFO head slot, evicting the oldest entry
+// when the budget is full. A bucket requested by many characters is looked up (and synthesized)
+// once. CPU twin: synth::MotionCacheCpu::update.
+#include "shared_types.h"
+
+layout(local_size_x = 1) in;
+layout(std430, binding = 1) buffer Counters { CacheCounters counters; };
+layout(std430, binding = 2) buffer Requested { uint requested[]; };
+layout(std430, binding = 3) buffer BucketSlot { int bucketSlot[]; };
+layout(std430, binding = 4) buffer SlotBucket { int slotBucket[]; };
+layout(std430, binding = 5) buffer Fresh { uint fresh[]; };
+
+void main() {
+  for (uint b = 0u; b < counters.bucketCount; ++b) {
+    if (requested[b] == 0u) continue;
+    requested[b] = 0u;
+    if (bucketSlot[b] >= 0) {
+      counters.hits += 1u;
+      continue;
+    }
+    counters.misses += 1u;
+    if (counters.capacity == 0u) continue;
+    uint slot = counters.head;
+    int previous = slotBucket[slot];
+    if (previous >= 0) {
+      bucketSlot[previous] = -1;
+      counters.evictions += 1u;
+    } else {
+      counters.entries += 1u;
+    }
+    bucketSlot[b] = int(slot);
+    slotBucket[slot] = int(b);
+    fresh[slot] = 1u;
+    counters.head = (slot + 1u) % counters.capacity;
+  }
+}

@@ -1,0 +1,17 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Motion cache, step 1 (one invocation per character): flag the speed bucket it needs this frame.
+#include "shared_types.h"
+#include "cache_common.glsl"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = 1) buffer Counters { CacheCounters counters; };
+layout(std430, binding = 2) writeonly buffer Requested { uint requested[]; };
+layout(push_constant) uniform Push { CachePush push; };
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= push.characterCount) return;
+  requested[speedBucket(motion[i].y, push.bucketWidth, counters.bucketCount)] = 1u;
+}

@@ -1,0 +1,152 @@
+// The motion cache: validity, segments, FIFO decisions and counters on a scripted sequence of
+// speeds (CPU twin and GPU, frame by frame), and cached output equal to synthesized output.
+#include <doctest/doctest.h>
+
+#include <set>
+
+#include "anim/default_clips.h"
+#include "anim/reference_synth.h"
+#include "core/error.h"
+#include "crowd/scenario.h"
+#include "gpu/commands.h"
+#include "gpu_fixture.h"
+#include "synth/cpu_synth.h"
+#include "synth/crowd_synth.h"
+#include "synth/motion_cache_cpu.h"
+#include "synth_fixtures.h"
+
+using namespace throng;
+
+namespace {
+anim::MotionPair builtInPair() {
+  anim::ClipPair clips = anim::defaultRunPair();
+  return anim::makeMotionPair(clips.slow, clips.fast);
+}
+
+// A crowd whose characters all run at the given speed weights (round-robin), random phases.
+crowd::Crowd crowdAt(const std::vector<float>& speeds, size_t n) {
+  crowd::ScenarioOptions options;
+  options.characters = static_cast<uint32_t>(n);
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  for (size_t i = 0; i < n; ++i) crowd.motion[i].y = crowd.motion[i].z = speeds[i % speeds.size()];
+  return crowd;
+}
+}  // namespace
+
+TEST_CASE("CacheJob: validity") {
+  synth::CacheJob job;
+  auto problems = job.validate();
+  REQUIRE(problems.size() == 3);
+  CHECK(problems[2].find("'cache'") != std::string::npos);
+  gpu::Context& ctx = test::gpuContext();
+  anim::MotionPair pair = builtInPair();
+  synth::GpuMotionCache disabled = synth::makeGpuMotionCache(ctx, pair, {});
+  job.cache = &disabled;
+  problems = job.validate();
+  CHECK(std::find(problems.begin(), problems.end(), "the cache is disabled") != problems.end());
+  CHECK_THROWS_WITH_AS(synth::validateCacheOptions({true, 0.0f, 1}), doctest::Contains("--bucket-width"), Error);
+}
+
+TEST_CASE("cache segments: every (slow frame, fast frame) pair of a cycle has its own slot") {
+  for (auto [fs, ff] : {std::pair{23, 20}, std::pair{21, 21}, std::pair{30, 24}}) {
+    auto segments = synth::cacheSegments(fs, ff);
+    std::set<std::pair<int, int>> seen;
+    for (int k = 0; k < 4000; ++k) {
+      float phase = (k + 0.5f) / 4000.0f;
+      int a = anim::poseFrame(phase, fs), b = anim::poseFrame(phase, ff);
+      REQUIRE(segments[size_t(a + b)] == glm::ivec2(a, b));
+      seen.insert({a, b});
+    }
+    size_t used = 0;
+    for (auto& s : segments) used += s.x >= 0;
+    CHECK(used == seen.size());
+  }
+}
+
+TEST_CASE("motion cache: FIFO order, budget and exact counters on a scripted sequence (CPU twin and GPU)") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::MotionPair pair = builtInPair();
+  synth::MotionCacheOptions options;
+  options.enabled = true;
+  options.bucketWidth = 0.1f;
+  synth::MotionCacheCpu probe(pair, options);
+  const uint64_t entryBytes = probe.stats().budgetBytes / std::max(1u, probe.capacity());
+  options.budgetBytes = 2 * entryBytes + entryBytes / 2;  // room for exactly two entries
+  synth::MotionCacheCpu cpu(pair, options);
+  REQUIRE(cpu.capacity() == 2);
+
+  // frame: speeds requested → expected cumulative (hits, misses, evictions)
+  struct Step {
+    std::vector<float> speeds;
+    uint32_t hits, misses, evictions;
+  };
+  const Step script[] = {
+      {{0.2f}, 0, 1, 0},              // miss: 0.2 inserted
+      {{0.2f}, 1, 1, 0},              // hit
+      {{0.4f, 0.6f}, 1, 3, 1},        // two misses, 0.2 (oldest) evicted
+      {{0.2f, 0.6f}, 2, 4, 2},        // 0.6 hits; 0.2 misses again and evicts 0.4
+      {{0.6f, 0.2f, 0.6f}, 4, 4, 2},  // both resident: one lookup each, whatever the count
+  };
+  crowd::Crowd crowd = crowdAt({0.2f}, 64);
+  synth::SynthPrograms programs(ctx, pair);
+  synth::CrowdSynth gpu = synth::makeCrowdSynth(ctx, pair, crowd, options);
+  REQUIRE(gpu.cache.capacity == 2);
+  std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
+  for (const Step& step : script) {
+    crowd = crowdAt(step.speeds, 64);
+    gpu::uploadBytes(ctx, gpu.crowd.motion, {reinterpret_cast<const uint8_t*>(crowd.motion.data()), crowd.motion.size() * 16});
+    gpu::uploadBytes(ctx, gpu.crowd.placement, {reinterpret_cast<const uint8_t*>(crowd.placement.data()), crowd.placement.size() * 16});
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordSynthesis(cmd, programs, gpu, 0.0f, 1u << 27); });
+    cpu.update(crowd);
+    synth::MotionCacheStats g = synth::readCacheStats(gpu.cache), c = cpu.stats();
+    CHECK(c.hits == step.hits);
+    CHECK(c.misses == step.misses);
+    CHECK(c.evictions == step.evictions);
+    CHECK(g.hits == c.hits);
+    CHECK(g.misses == c.misses);
+    CHECK(g.evictions == c.evictions);
+    CHECK(g.entries == c.entries);
+    CHECK(g.bytesUsed <= options.budgetBytes);
+    // Cached output: GPU equals the CPU twin, and both equal plain synthesis at that speed.
+    synth::poseCrowdCpuCached(pair, cpu, crowd, cpuJoints, 2);
+    std::vector<synth::JointMatrix> direct(cpuJoints.size());
+    synth::poseCrowdCpu(pair, crowd, direct, 2);
+    auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpu.joints, cpuJoints.size());
+    CHECK(test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12) <= 1e-4f);
+    CHECK(test::maxAbsDifference(&direct[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12) <= 1e-4f);
+  }
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("motion cache: a crowd over many frames matches the uncached path at bucketed speeds") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::MotionPair pair = builtInPair();
+  synth::MotionCacheOptions options;
+  options.enabled = true;
+  options.bucketWidth = 0.05f;
+  crowd::ScenarioOptions scenario;
+  scenario.characters = 2000;
+  crowd::Crowd crowd = crowd::makeScenario(scenario);
+  for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, options.bucketWidth);
+  synth::SynthPrograms programs(ctx, pair);
+  synth::CrowdSynth cached = synth::makeCrowdSynth(ctx, pair, crowd, options);
+  synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd);
+  for (int f = 0; f < 5; ++f) {
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, programs, cached, 1 / 30.0f, 1u << 27);
+      synth::recordSynthesis(cmd, programs, plain, 1 / 30.0f, 1u << 27);
+    });
+  }
+  size_t n = crowd.size() * pair.jointCount();
+  auto a = gpu::readback<synth::JointMatrix>(ctx, cached.joints, n);
+  auto b = gpu::readback<synth::JointMatrix>(ctx, plain.joints, n);
+  float worst = test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12);
+  synth::MotionCacheStats stats = synth::readCacheStats(cached.cache);
+  MESSAGE("cache vs no cache over 5 frames: max diff ", worst, "; hits ", stats.hits, " misses ", stats.misses,
+          " entries ", stats.entries, " bytes ", stats.bytesUsed);
+  CHECK(worst <= 1e-4f);
+  CHECK(stats.misses == 21);  // every bucket of width 0.05 once
+  CHECK(stats.hits == 4 * 21);
+  CHECK(stats.bytesUsed <= stats.budgetBytes);
+  CHECK(ctx.validationMessageCount() == 0);
+}
