@@ -78,6 +78,15 @@ vec4 alignYTo(vec3 d) {
   return vec4(d.z, 0.0, -d.x, 1.0 + d.y) * inversesqrt(2.0 + 2.0 * d.y);
 }
 
+// A speed weight in [lo, hi] drawn for a character at a speed-change epoch (PCG hash); mirrors
+// anim::retargetSpeed.
+float retargetSpeed(uint character, uint epoch, uint seed, float lo, float hi) {
+  uint h = character * 747796405u + epoch * 2891336453u + seed * 1181783497u + 12345u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  h = (h >> 22u) ^ h;
+  return lo + (hi - lo) * float(h >> 8) * (1.0 / 16777216.0);
+}
+
 uint frameAt(float phase, uint frames) { return min(uint(phase * float(frames)), frames - 1u); }
 
 #endif

@@ -39,6 +39,10 @@ void main() {
   float scale = m.w;
   place.x += scale * (d.x * c + d.z * s);
   place.z += scale * (-d.x * s + d.z * c);
+  if (push.retargetEpoch > 0u) {
+    float target = retargetSpeed(i, push.retargetEpoch, push.seed, push.minSpeedWeight, push.maxSpeedWeight);
+    m.z = push.bucketWidth > 0.0 ? min(floor(target / push.bucketWidth + 0.5) * push.bucketWidth, 1.0) : target;
+  }
   float wraps = floor(phase1);
   m.x = phase1 - wraps;
   if (wraps > 0.0) m.y = m.z;

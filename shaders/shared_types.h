@@ -36,9 +36,13 @@ THRONG_STRUCT(RootMotionPush) {
   float dt;
   float slowDuration;     // seconds per cycle
   float fastDuration;
-  float pad0;
+  float bucketWidth;      // > 0: new target speeds are quantized to motion-cache buckets
   vec4 slowCycleTravel;   // xyz: root displacement over one slow cycle
   vec4 fastCycleTravel;
+  uint retargetEpoch;     // > 0: every character draws a new target speed weight this step
+  uint seed;
+  float minSpeedWeight;   // range of the new targets
+  float maxSpeedWeight;
 };
 
 // Push constants of the pose pass (blend + hierarchy + A = J·M).

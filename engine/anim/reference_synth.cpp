@@ -38,6 +38,19 @@ void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
 
 }  // namespace
 
+float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo, float hi) {
+  uint32_t h = character * 747796405u + epoch * 2891336453u + seed * 1181783497u + 12345u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  h = (h >> 22u) ^ h;
+  return lo + (hi - lo) * float(h >> 8) * (1.0f / 16777216.0f);
+}
+
+void applyRetarget(uint32_t character, const SpeedRetarget& r, glm::vec4& motion) {
+  if (r.epoch == 0) return;
+  float target = retargetSpeed(character, r.epoch, r.seed, r.lo, r.hi);
+  motion.z = r.bucketWidth > 0.0f ? std::min(std::floor(target / r.bucketWidth + 0.5f) * r.bucketWidth, 1.0f) : target;
+}
+
 float circleHeading(glm::vec2 p) {
   // Counter-clockwise tangent (-z, x) seen from above; heading θ faces (sin θ, cos θ).
   return std::atan2(-p.y, p.x);
@@ -45,6 +58,11 @@ float circleHeading(glm::vec2 p) {
 
 void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
                    Steering steering) {
+  stepCharacter(pair, placement, motion, dt, steering, SpeedRetarget{}, 0);
+}
+
+void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
+                   Steering steering, const SpeedRetarget& retarget, uint32_t character) {
   const MotionTexture& slow = pair.slow;
   const MotionTexture& fast = pair.fast;
   float w = motion.y;
@@ -59,6 +77,7 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
   float scale = motion.w;
   placement.x += scale * (d.x * c + d.z * s);
   placement.z += scale * (-d.x * s + d.z * c);
+  applyRetarget(character, retarget, motion);
   float wraps = std::floor(phase1);
   motion.x = phase1 - wraps;
   if (wraps > 0.0f) motion.y = motion.z;

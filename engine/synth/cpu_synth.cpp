@@ -24,10 +24,12 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
   for (std::thread& w : workers) w.join();
 }
 
-void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads) {
+void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads,
+                  const anim::SpeedRetarget& retarget) {
   parallelFor(crowd.size(), threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i)
-      anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], dt, crowd.steering);
+      anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], dt, crowd.steering, retarget,
+                          static_cast<uint32_t>(i));
   });
 }
 

@@ -10,7 +10,8 @@
 
 namespace throng::synth {
 
-void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads = 1);
+void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads = 1,
+                  const anim::SpeedRetarget& retarget = {});
 // `out` holds crowd.size() × jointCount joint matrices.
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, std::span<JointMatrix> out,
                   unsigned threads = 1);

@@ -1,6 +1,7 @@
 #include "synth/crowd_synth.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "gpu/commands.h"
 #include "synth/gpu_types.h"
@@ -20,9 +21,20 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
   return synth;
 }
 
+anim::SpeedRetarget SpeedSchedule::advance(float dt) {
+  anim::SpeedRetarget retarget;
+  if (period <= 0.0f) return retarget;
+  auto epochOf = [&](double t) { return static_cast<uint32_t>(std::floor(t / period)); };
+  uint32_t before = epochOf(time);
+  time += dt;
+  uint32_t after = epochOf(time);
+  if (after != before) retarget = {after, seed, lo, hi, bucketWidth};
+  return retarget;
+}
+
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
-                     VkDeviceSize maxBindingBytes) {
-  RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering};
+                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget) {
+  RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering, retarget};
   root.record(cmd, programs);
   gpu::computeToComputeBarrier(cmd);
   const bool cached = synth.cache.options.enabled;

@@ -26,6 +26,18 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
 
 // Root motion, the motion cache when enabled, then the pose pass in chunks that each bind at most `maxBindingBytes` of output.
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
-                     VkDeviceSize maxBindingBytes);
+                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget = {});
+
+// Speed changes every `period` seconds (paper: 5 s): tells each step whether it starts a new
+// epoch, and the speed range and buckets the new targets are drawn from.
+struct SpeedSchedule {
+  float period = 0.0f;  // 0: speeds never change
+  uint32_t seed = 1;
+  float lo = 0.0f, hi = 1.0f;
+  float bucketWidth = 0.0f;
+  double time = 0.0;
+  // Advances the clock by dt; the retarget to pass to this step's root motion.
+  anim::SpeedRetarget advance(float dt);
+};
 
 }  // namespace throng::synth

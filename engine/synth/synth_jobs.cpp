@@ -101,6 +101,11 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
   push.dt = dt;
   push.slowDuration = clips->slow.duration();
   push.fastDuration = clips->fast.duration();
+  push.bucketWidth = retarget.bucketWidth;
+  push.retargetEpoch = retarget.epoch;
+  push.seed = retarget.seed;
+  push.minSpeedWeight = retarget.lo;
+  push.maxSpeedWeight = retarget.hi;
   push.slowCycleTravel = glm::vec4(clips->slow.cycleTravel, 0.0f);
   push.fastCycleTravel = glm::vec4(clips->fast.cycleTravel, 0.0f);
   gpu::Binding bindings[] = {

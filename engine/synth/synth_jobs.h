@@ -35,6 +35,7 @@ struct RootMotionJob {
   const crowd::CrowdBuffers* crowd = nullptr;   // input and output (updated in place)
   float dt = 0.0f;
   anim::Steering steering = anim::Steering::KeepHeading;
+  anim::SpeedRetarget retarget;                 // speed changes over time (epoch 0: none)
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;

@@ -166,3 +166,38 @@ TEST_CASE("recordSynthesis (the frame orchestrator) matches the CPU twin on the 
   CHECK(worst <= 1e-4f);
   CHECK(ctx.validationMessageCount() == 0);
 }
+
+TEST_CASE("speed changes every T seconds: new targets drawn per epoch, applied at cycle end (GPU = CPU)") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 800;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  synth::SynthPrograms programs(ctx, pair);
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, crowd);
+  synth::SpeedSchedule gpuSchedule{0.5f, 9, 0.2f, 0.8f, 0.1f}, cpuSchedule = gpuSchedule;
+  const float dt = 1 / 30.0f;
+  int epochs = 0;
+  for (int f = 0; f < 44; ++f) {  // 1.47 s: changes at 0.5 s and 1.0 s
+    anim::SpeedRetarget r = gpuSchedule.advance(dt);
+    epochs += r.epoch > 0;
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordSynthesis(cmd, programs, gpuSynth, dt, 1u << 27, r); });
+    synth::stepCrowdCpu(pair, crowd, dt, 2, cpuSchedule.advance(dt));
+  }
+  CHECK(epochs == 2);
+  crowd::Crowd gpuCrowd;
+  crowd::downloadCrowd(ctx, gpuSynth.crowd, gpuCrowd);
+  size_t changed = 0;
+  for (size_t i = 0; i < crowd.size(); ++i) {
+    REQUIRE(gpuCrowd.motion[i].z == crowd.motion[i].z);  // same target, exactly
+    REQUIRE(gpuCrowd.motion[i].y == crowd.motion[i].y);
+    CHECK(crowd.motion[i].z >= 0.2f - 1e-6f);
+    CHECK(crowd.motion[i].z <= 0.8f + 1e-6f);
+    CHECK(std::abs(crowd.motion[i].z * 10.0f - std::round(crowd.motion[i].z * 10.0f)) < 1e-4f);  // bucketed
+    changed += crowd.motion[i].y == crowd.motion[i].z;
+  }
+  CHECK(test::maxAbsDifference(&gpuCrowd.placement[0].x, &crowd.placement[0].x, crowd.size() * 4) <= 1e-4f);
+  CHECK(changed > crowd.size() / 2);  // most characters finished a cycle since the last change
+  CHECK(ctx.validationMessageCount() == 0);
+}

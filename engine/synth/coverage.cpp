@@ -1,0 +1,203 @@
+#include "synth/coverage.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "core/math.h"
+#include "synth/synth_jobs.h"
+
+namespace throng::synth {
+
+using namespace gpu_types;
+
+CoverageCamera coverageCamera(const glm::mat4& view, float fovYDegrees, uint32_t width, uint32_t height,
+                              float nearPlane) {
+  if (!(fovYDegrees > 0.0f && fovYDegrees < 180.0f)) fail("coverage camera: fovy must be in (0, 180) degrees, got ", fovYDegrees);
+  CoverageCamera camera;
+  camera.view = view;
+  camera.width = width;
+  camera.height = height;
+  camera.focalPixels = 0.5f * float(height) / std::tan(0.5f * glm::radians(fovYDegrees));
+  camera.nearPlane = nearPlane;
+  return camera;
+}
+
+CoverageParts makeCoverageParts(const BodyParts& parts, const CoverageThresholds& thresholds) {
+  if (parts.jointCount < 1 || parts.jointCount > 64)
+    fail("coverage: body parts describe ", parts.jointCount, " joints, expected 1..64");
+  CoverageParts out{};
+  out.baseLo = uint32_t(parts.baseMask);
+  out.baseHi = uint32_t(parts.baseMask >> 32);
+  out.allLo = uint32_t(parts.allMask);
+  out.allHi = uint32_t(parts.allMask >> 32);
+  for (int k = 0; k < kBodyPartCount; ++k) {
+    const BodyPart& part = parts.parts[size_t(k)];
+    float threshold = thresholds.pixels[size_t(k)];
+    if (!(threshold >= 0.0f)) fail("coverage: the ", bodyPartName(k), " threshold must be >= 0 pixels, got ", threshold);
+    if (part.centreJoint < 0 || part.centreJoint >= parts.jointCount)
+      fail("coverage: the ", bodyPartName(k), " has centre joint ", part.centreJoint, " of ", parts.jointCount);
+    CoveragePart& p = out.parts[k];
+    p.centre = glm::vec4(part.meanCentre, part.radius);
+    p.joint = uint32_t(part.centreJoint);
+    p.threshold = threshold;
+    // The root's matrix is a vertical "bone" of length 2r centred on it (see synth_pose.comp).
+    p.bonePoint = part.centreJoint == 0 ? 0.5f : 1.0f;
+    p.maskLo = uint32_t(part.activates);
+    p.maskHi = uint32_t(part.activates >> 32);
+  }
+  return out;
+}
+
+CoveragePush makeCoveragePush(const CoverageCamera& camera, uint32_t jointCount, uint32_t firstCharacter,
+                              uint32_t characterCount, uint32_t flags) {
+  CoveragePush push{};
+  push.view = camera.view;
+  const float f = camera.focalPixels, halfW = 0.5f * float(camera.width), halfH = 0.5f * float(camera.height);
+  push.viewport = glm::vec4(float(camera.width), float(camera.height), f, camera.nearPlane);
+  const float nx = std::sqrt(f * f + halfW * halfW), ny = std::sqrt(f * f + halfH * halfH);
+  push.frustum = glm::vec4(f / nx, halfW / nx, f / ny, halfH / ny);
+  push.characterCount = characterCount;
+  push.firstCharacter = firstCharacter;
+  push.jointCount = jointCount;
+  push.flags = flags;
+  return push;
+}
+
+// Mirrored operation for operation by sphereCoverage in coverage.comp.
+float sphereCoveragePixels(const CoveragePush& push, glm::vec3 worldCentre, float radius) {
+  const glm::vec4 v = push.view * glm::vec4(worldCentre, 1.0f);
+  const glm::vec3 o(v.x, v.y, -v.z);  // camera space looking down +z
+  const float f = push.viewport.z, nearPlane = push.viewport.w;
+  const float screen = push.viewport.x * push.viewport.y;
+  const float l2 = glm::dot(o, o), r2 = radius * radius;
+  if (l2 <= r2) return screen;
+  if (o.z + radius <= nearPlane) return 0.0f;
+  // Signed distances to the side planes |x|·f − z·W/2 = 0 (normalized): beyond r is outside.
+  if (std::abs(o.x) * push.frustum.x - o.z * push.frustum.y > radius) return 0.0f;
+  if (std::abs(o.y) * push.frustum.z - o.z * push.frustum.w > radius) return 0.0f;
+  if (o.z <= radius) return screen;
+  const float d = o.z * o.z - r2;
+  const float area = kPi * f * f * r2 * std::sqrt(l2 - r2) / (d * std::sqrt(d));
+  return std::min(area, screen);
+}
+
+CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
+                               glm::vec4 motion, const JointMatrix* joints, const CoverageMask& previous,
+                               float* areas) {
+  const uint64_t previousMask = maskBits(previous);
+  const bool readJoints = (push.flags & kCoverageReadJoints) != 0u && joints != nullptr;
+  const float c = std::cos(placement.w), s = std::sin(placement.w);
+  const float scale = motion.w;
+  uint64_t mask = uint64_t(parts.baseLo) | (uint64_t(parts.baseHi) << 32);
+  uint32_t active = 0;
+  for (uint32_t k = 0; k < kCoveragePartCount; ++k) {
+    const CoveragePart& part = parts.parts[k];
+    glm::vec3 centre;
+    if (readJoints && ((previousMask >> part.joint) & 1u) != 0u) {
+      // The pose pass wrote this joint last frame: its position is A·(0, bonePoint, 0, 1).
+      const JointMatrix& a = joints[part.joint];
+      centre = glm::vec3(a.row0.y * part.bonePoint + a.row0.w, a.row1.y * part.bonePoint + a.row1.w,
+                         a.row2.y * part.bonePoint + a.row2.w);
+    } else {
+      // Not synthesized: the centre joint's mean character-space position, placed like the root.
+      const glm::vec3 m = glm::vec3(part.centre) * scale;
+      centre = glm::vec3(placement) + glm::vec3(m.x * c + m.z * s, m.y, -m.x * s + m.z * c);
+    }
+    const float area = sphereCoveragePixels(push, centre, part.centre.w * scale);
+    if (areas) areas[k] = area;
+    if (area >= part.threshold) {
+      mask |= uint64_t(part.maskLo) | (uint64_t(part.maskHi) << 32);
+      active |= 1u << k;
+    }
+  }
+  CoverageMask out{};
+  out.lo = uint32_t(mask);
+  out.hi = uint32_t(mask >> 32);
+  const uint64_t all = uint64_t(parts.allLo) | (uint64_t(parts.allHi) << 32);
+  const uint64_t base = uint64_t(parts.baseLo) | (uint64_t(parts.baseHi) << 32);
+  out.level = mask == all ? kLevelNear : (mask == base ? kLevelFar : kLevelMid);
+  out.parts = active;
+  return out;
+}
+
+void coverageCpu(const CoverageCamera& camera, const CoverageParts& parts, uint32_t jointCount,
+                 const crowd::Crowd& crowd, std::span<const JointMatrix> joints, std::span<CoverageMask> masks,
+                 std::span<float> areas) {
+  const size_t n = crowd.size();
+  if (masks.size() != n) fail("coverageCpu: ", masks.size(), " masks for ", n, " characters");
+  if (!joints.empty() && joints.size() != n * jointCount)
+    fail("coverageCpu: ", joints.size(), " joint matrices, expected ", n, " × ", jointCount);
+  if (!areas.empty() && areas.size() != n * kCoveragePartCount)
+    fail("coverageCpu: ", areas.size(), " areas, expected 5 × ", n);
+  uint32_t flags = (joints.empty() ? 0u : kCoverageReadJoints) | (areas.empty() ? 0u : kCoverageWriteAreas);
+  const CoveragePush push = makeCoveragePush(camera, jointCount, 0, uint32_t(n), flags);
+  for (size_t i = 0; i < n; ++i) {
+    masks[i] = coverageCharacter(push, parts, crowd.placement[i], crowd.motion[i],
+                                 joints.empty() ? nullptr : &joints[i * jointCount], masks[i],
+                                 areas.empty() ? nullptr : &areas[i * kCoveragePartCount]);
+  }
+}
+
+bool parentsBeforeChildren(uint64_t mask, std::span<const int32_t> parents) {
+  for (size_t j = 0; j < parents.size() && j < 64; ++j)
+    if (((mask >> j) & 1u) && parents[j] >= 0 && !((mask >> parents[j]) & 1u)) return false;
+  return true;
+}
+
+std::vector<std::string> CoverageJob::validate() const {
+  std::vector<std::string> problems;
+  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
+  if (crowd && (!crowd->placement || !crowd->motion)) problems.push_back("crowd buffers are not allocated");
+  if (!parts || !*parts) problems.push_back("input 'parts' (uniform CoverageParts) is missing");
+  if (!masks || !*masks) problems.push_back("input/output 'masks' buffer is missing");
+  if (jointCount < 1 || jointCount > 64) problems.push_back(concat("jointCount must be 1..64, got ", jointCount));
+  if (camera.width == 0 || camera.height == 0) problems.push_back("camera viewport is empty");
+  if (!(camera.focalPixels > 0.0f)) problems.push_back(concat("camera focal length must be > 0 pixels, got ", camera.focalPixels));
+  if (!(camera.nearPlane >= 0.0f)) problems.push_back(concat("camera near plane must be >= 0, got ", camera.nearPlane));
+  if (parts && *parts && parts->size() < sizeof(CoverageParts))
+    problems.push_back(concat("input 'parts' holds ", parts->size(), " bytes, CoverageParts needs ", sizeof(CoverageParts)));
+  if (!crowd || !problems.empty()) return problems;
+  if (firstCharacter > crowd->count) problems.push_back("firstCharacter is past the end of the crowd");
+  const uint32_t count = characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
+  const VkDeviceSize end = VkDeviceSize(firstCharacter) + count;
+  if (end > crowd->count) problems.push_back("chunk runs past the end of the crowd");
+  if (masks->size() < end * sizeof(CoverageMask))
+    problems.push_back(concat("input/output 'masks' holds ", masks->size(), " bytes, characters up to ", end, " need ",
+                              end * sizeof(CoverageMask)));
+  if (joints && *joints) {
+    VkDeviceSize need = VkDeviceSize(count) * jointCount * sizeof(JointMatrix);
+    if (jointsOffset + need > joints->size())
+      problems.push_back(concat("input 'joints' holds ", joints->size(), " bytes, the chunk needs ", need,
+                                " at offset ", jointsOffset));
+  }
+  if (areas && *areas && areas->size() < end * kCoveragePartCount * sizeof(float))
+    problems.push_back(concat("output 'areas' holds ", areas->size(), " bytes, characters up to ", end, " need ",
+                              end * kCoveragePartCount * sizeof(float)));
+  return problems;
+}
+
+void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
+  throwIfInvalid("CoverageJob", validate());
+  const uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
+  if (count == 0) return;
+  const bool readJoints = joints && *joints, writeAreas = areas && *areas;
+  const CoveragePush push = makeCoveragePush(camera, jointCount, firstCharacter, count,
+                                             (readJoints ? kCoverageReadJoints : 0u) | (writeAreas ? kCoverageWriteAreas : 0u));
+  // Unused optional bindings get a stand-in buffer the shader never touches (flags say so).
+  gpu::Binding bindings[] = {
+      gpu::uniformBinding(0, *parts, 0, sizeof(CoverageParts)),
+      gpu::storageBinding(1, crowd->placement),
+      gpu::storageBinding(2, crowd->motion),
+      readJoints ? gpu::storageBinding(3, *joints, jointsOffset, VkDeviceSize(count) * jointCount * sizeof(JointMatrix))
+                 : gpu::storageBinding(3, crowd->placement),
+      gpu::storageBinding(4, *masks),
+      writeAreas ? gpu::storageBinding(5, *areas) : gpu::storageBinding(5, *masks),
+  };
+  gpu::dispatch(cmd, program, bindings, push, count);
+}
+
+gpu::ComputeProgram makeCoverageProgram(const gpu::Context& context) {
+  return gpu::ComputeProgram(context, "coverage.comp");
+}
+
+}  // namespace throng::synth
