@@ -52,9 +52,13 @@ THRONG_STRUCT(PosePush) {
   uint slowFrames;
   uint fastFrames;
   uint firstCharacter;    // dispatch in chunks: output index = character - firstCharacter
-  uint cacheEnabled;      // 1: characters whose speed bucket is cached take their pose from it
+  uint fromList;          // 1: invocation k poses characterList[listBase + k], k < listCounts[countIndex]
+  uint listBase;
+  uint countIndex;
   uint segmentCount;      // cache entries hold one pose per (slow frame, fast frame) segment
   float bucketWidth;      // speed-weight bucket width of the cache
+  uint pad0;
+  uint pad1;
 };
 
 // The motion cache's counters and FIFO state (DESIGN §3.4), kept on the GPU.
@@ -71,10 +75,14 @@ THRONG_STRUCT(CacheCounters) {
 
 // Push constants of the cache passes.
 THRONG_STRUCT(CachePush) {
-  uint characterCount;
+  uint characterCount;    // classify: characters of this chunk
   uint segmentCount;
   uint slotCount;         // capacity (fill pass: slots × segments invocations)
   float bucketWidth;
+  uint firstCharacter;    // classify: the chunk
+  uint chunk;             // classify: counts at listCounts[2·chunk] (cached), [2·chunk + 1] (not)
+  uint listStride;        // classify: the uncached list starts listStride entries after the cached one
+  uint pad0;
 };
 
 // Per-frame camera and light for the joint and ground draws (a uniform buffer).

@@ -35,7 +35,8 @@ void runRender(RenderOptions& o) {
 
   anim::ClipPair clips = loadSceneClips(o.scene);
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::Crowd crowd = crowd::makeScenario(o.scene.scenario);
+  crowd::Crowd crowd = makeSceneCrowd(o.scene);
+  synth::SpeedSchedule speeds = sceneSpeedSchedule(o.scene);
   render::Camera camera = sceneCamera(o.scene);
   logInfo(concat("clips: ", clips.description));
 
@@ -46,7 +47,7 @@ void runRender(RenderOptions& o) {
   synth::SynthPrograms programs(context, pair);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd);
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, sceneCacheOptions(o.scene));
   render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
                                size.width, size.height, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   const float groundExtent = 1.6f * crowd::scenarioExtent(o.scene.scenario) + 40.0f;
@@ -61,7 +62,7 @@ void runRender(RenderOptions& o) {
     timestamps.reset();
     gpu::beginCommands(cmd);
     render::FrameTimestamps marks = render::recordCrowdFrame(cmd, context, programs, synth, renderer, camera,
-                                                             groundExtent, targets, o.scene.dt, timestamps);
+                                                             groundExtent, targets, o.scene.dt, timestamps, 0, speeds.advance(o.scene.dt));
     render::recordReadback(cmd, target);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
@@ -86,6 +87,11 @@ void runRender(RenderOptions& o) {
               synth.jointCount(), size.width, size.height, outDir.string().c_str());
   std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n", median(synthMs),
               median(renderMs), context.info().name.c_str());
+  if (synth.cache.options.enabled) {
+    synth::MotionCacheStats c = synth::readCacheStats(synth.cache);
+    std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n", c.hits, c.misses,
+                c.evictions, c.entries, c.bytesUsed / 1048576.0, c.budgetBytes / 1048576.0);
+  }
 }
 
 void addRenderCommand(CLI::App& app, int&) {

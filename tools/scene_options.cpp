@@ -22,6 +22,11 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--size", o.size, "Image size WxH")->capture_default_str();
   command.add_option("--device", o.device, "Vulkan device by index or name (also $THRONG_DEVICE)");
   command.add_option("--dt", o.dt, "Simulated seconds per frame")->capture_default_str();
+  command.add_flag("--cache", o.cache, "Motion cache: characters share synthesized clips per speed bucket");
+  command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB")->capture_default_str();
+  command.add_option("--bucket-width", o.bucketWidth, "Motion cache speed-weight bucket width")->capture_default_str();
+  command.add_option("--speed-period", o.speedPeriod, "Seconds between speed changes (0: never; paper: 5)")
+      ->capture_default_str();
 }
 
 Size parseSize(const std::string& text) {
@@ -40,6 +45,9 @@ void validateSceneOptions(SceneOptions& o) {
   if (!(o.dt > 0.0f && o.dt <= 1.0f)) fail("--dt: expected seconds in (0, 1], got ", o.dt);
   if (o.fovY != 0.0f && !(o.fovY > 1.0f && o.fovY < 170.0f)) fail("--fov: expected 1..170 degrees, got ", o.fovY);
   parseSize(o.size);
+  if (!(o.cacheBudgetMb >= 0.0f && o.cacheBudgetMb <= 65536.0f)) fail("--cache-budget: expected 0..65536 MB, got ", o.cacheBudgetMb);
+  if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
+  synth::validateCacheOptions(sceneCacheOptions(o));
   crowd::makeScenario([&] {  // validates the scenario options on a one-character crowd
     crowd::ScenarioOptions probe = o.scenario;
     probe.characters = 1;
@@ -51,6 +59,28 @@ void validateSceneOptions(SceneOptions& o) {
 anim::ClipPair loadSceneClips(const SceneOptions& o) {
   if (o.slowClip.empty()) return anim::defaultRunPair();
   return anim::loadClipPair(o.slowClip, o.fastClip);
+}
+
+synth::MotionCacheOptions sceneCacheOptions(const SceneOptions& o) {
+  return {o.cache, o.bucketWidth, static_cast<uint64_t>(double(o.cacheBudgetMb) * 1024.0 * 1024.0)};
+}
+
+crowd::Crowd makeSceneCrowd(const SceneOptions& o) {
+  crowd::Crowd crowd = crowd::makeScenario(o.scenario);
+  if (o.cache) {
+    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, o.bucketWidth);
+  }
+  return crowd;
+}
+
+synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& o) {
+  synth::SpeedSchedule schedule;
+  schedule.period = o.speedPeriod;
+  schedule.seed = static_cast<uint32_t>(o.scenario.seed);
+  schedule.lo = o.scenario.minSpeedWeight;
+  schedule.hi = o.scenario.maxSpeedWeight;
+  schedule.bucketWidth = o.cache ? o.bucketWidth : 0.0f;
+  return schedule;
 }
 
 render::Camera sceneCamera(const SceneOptions& o) {

@@ -9,6 +9,7 @@
 #include "anim/default_clips.h"
 #include "crowd/scenario.h"
 #include "render/camera.h"
+#include "synth/crowd_synth.h"
 
 namespace throng::tools {
 
@@ -22,6 +23,10 @@ struct SceneOptions {
   std::string size = "1280x720";
   std::string device;
   float dt = 1.0f / 30.0f;
+  bool cache = false;
+  float cacheBudgetMb = 20.0f;
+  float bucketWidth = 0.05f;
+  float speedPeriod = 0.0f;     // seconds between speed changes (paper: 5); 0 = never
 };
 
 void addSceneOptions(CLI::App& command, SceneOptions& options);
@@ -35,6 +40,10 @@ Size parseSize(const std::string& text);
 // Checks everything that does not need a file or a GPU; throws Error on the first problem.
 void validateSceneOptions(SceneOptions& options);
 anim::ClipPair loadSceneClips(const SceneOptions& options);
+// The scenario's crowd; with the cache on, speed weights sit on bucket speeds.
+crowd::Crowd makeSceneCrowd(const SceneOptions& options);
+synth::MotionCacheOptions sceneCacheOptions(const SceneOptions& options);
+synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& options);
 render::Camera sceneCamera(const SceneOptions& options);
 
 }  // namespace throng::tools

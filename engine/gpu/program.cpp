@@ -136,6 +136,28 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& shader
   pipeline_ = Handle<VkPipeline>(pipeline, [device](VkPipeline p) { vkDestroyPipeline(device, p, nullptr); });
 }
 
+namespace {
+void bindForDispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
+                     const void* pushConstants, size_t pushSize) {
+  const std::string& name = program.name();
+  if (pushSize != program.layout().pushConstantSize)
+    fail(name, ": push constants of ", pushSize, " bytes given, shader declares ",
+         program.layout().pushConstantSize);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.pipeline());
+  pushBindings(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), bindings, name);
+  if (pushSize > 0)
+    vkCmdPushConstants(cmd, program.layout().layout, program.layout().stages, 0,
+                       static_cast<uint32_t>(pushSize), pushConstants);
+}
+}  // namespace
+
+void dispatchIndirect(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
+                      const void* pushConstants, size_t pushSize, const Buffer& args, VkDeviceSize offset) {
+  if (offset + 12 > args.size()) fail(program.name(), ": indirect arguments at ", offset, " overflow their buffer");
+  bindForDispatch(cmd, program, bindings, pushConstants, pushSize);
+  vkCmdDispatchIndirect(cmd, args.get(), offset);
+}
+
 void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
               const void* pushConstants, size_t pushSize, uint32_t threadCount) {
   const std::string& name = program.name();
@@ -145,11 +167,7 @@ void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<cons
   if (threadCount == 0) return;
   uint32_t groups = (threadCount + program.localSizeX() - 1) / program.localSizeX();
   if (groups > 65535u) fail(name, ": ", groups, " workgroups exceed the 65535 limit; dispatch in chunks");
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.pipeline());
-  pushBindings(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, program.layout(), bindings, name);
-  if (pushSize > 0)
-    vkCmdPushConstants(cmd, program.layout().layout, program.layout().stages, 0,
-                       static_cast<uint32_t>(pushSize), pushConstants);
+  bindForDispatch(cmd, program, bindings, pushConstants, pushSize);
   vkCmdDispatch(cmd, groups, 1, 1);
 }
 

@@ -7,10 +7,10 @@ namespace throng::render {
 FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
                                  const synth::CrowdSynth& synth, CrowdRenderer& renderer, const Camera& camera,
                                  float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps,
-                                 uint32_t frameSlot) {
+                                 uint32_t frameSlot, const anim::SpeedRetarget& retarget) {
   FrameTimestamps marks;
   marks.start = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-  synth::recordSynthesis(cmd, programs, synth, dt, context.info().maxStorageBufferRange);
+  synth::recordSynthesis(cmd, programs, synth, dt, context.info().maxStorageBufferRange, retarget);
   marks.synthesized = timestamps.write(cmd);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);

@@ -283,7 +283,12 @@ std::optional<BodyParts> buildParts(const Tree& tree, const Layout& layout) {
     for (int j : part.joints)
       for (int a = j; a >= 0; a = tree.parent[size_t(a)]) closed |= uint64_t(1) << a;
     part.activates = closed & ~out.baseMask;
-    for (int j : part.joints) part.radius = std::max(part.radius, tree.boneDistance(part.centreJoint, j));
+    // Bone paths bound the distance in every pose, whatever the BVH's rest pose looks like
+    // (Bandai Namco lays every bone along +x). The torso's sphere starts at the pelvis: a
+    // root below it (Bandai's ground-level joint_Root) would make the sphere body-sized.
+    for (int j : part.joints)
+      if (j == pelvis || !tree.isAncestor(j, pelvis))
+        part.radius = std::max(part.radius, tree.boneDistance(part.centreJoint, j));
   }
   // Until setMeanCentres sees the motion: the rest pose standing on the ground.
   float floor = 0.0f;

@@ -27,19 +27,24 @@ static_assert(sizeof(CoveragePart) == 48, "CoveragePart must match the GLSL std1
 static_assert(sizeof(CoverageParts) == 256, "CoverageParts must match the GLSL std140 block");
 static_assert(sizeof(CoverageMask) == 16, "CoverageMask must match the GLSL std430 struct");
 
-// Default thresholds (pixels of a part's projected sphere). With the default camera (1280×720,
-// fovy 45°: f = 869 px) and the built-in skeleton (torso radius 0.34 m, arms 0.46 m, legs
-// 0.52 m at scale 1) a character seen head-on switches far → mid at ≈ 69 m (the torso's
-// sphere falls under 64 px) and mid → near at ≈ 18 m (arms) / 20 m (legs) (1,600 px).
+// Default thresholds (pixels of a part's projected sphere), the paper's three levels on the
+// built-in 25-joint skeleton: far = 4 joints (Hips, Spine, Spine1, Spine2: always active), mid
+// = 7 (the torso part adds Spine3, Neck, Head), near = 25 (the limbs). Bone-path radii at scale
+// 1: torso 0.34 m, arms 0.46 m, legs 0.55 m. With the default camera (1280×720, fovy 45°:
+// f = 869 px), a character facing a camera 1.6 m above the ground switches far → mid at 65.5 m
+// (torso sphere ≥ 64 px) and mid → near at 17.8 m (arms) and 21.2 m (legs) (≥ 1,600 px); in
+// between the legs alone make it a 15-joint "mid". Measured by test_coverage.cpp.
 constexpr float kDefaultMidPixels = 64.0f;
 constexpr float kDefaultNearPixels = 1600.0f;
 
 // Per-part pixel thresholds (order: gpu_types::kPartLeftArm … kPartRightLeg). A part is active
-// when its area >= its threshold: 0 makes it always active, +inf never.
+// when its area >= its threshold: 0 makes it always active (even off screen), +inf never.
 struct CoverageThresholds {
   std::array<float, 5> pixels{kDefaultNearPixels, kDefaultNearPixels, kDefaultMidPixels, kDefaultNearPixels,
                               kDefaultNearPixels};
   static CoverageThresholds uniform(float value) { return {{value, value, value, value, value}}; }
+  // The two-level form the options expose: the torso at `mid`, the four limbs at `near`.
+  static CoverageThresholds levels(float mid, float near) { return {{near, near, mid, near, near}}; }
 };
 
 // The camera as the pass sees it: view matrix, viewport, focal length in pixels.
@@ -84,7 +89,17 @@ void coverageCpu(const CoverageCamera& camera, const CoverageParts& parts, uint3
 bool parentsBeforeChildren(uint64_t mask, std::span<const int32_t> parents);
 inline uint64_t maskBits(const CoverageMask& m) { return uint64_t(m.lo) | (uint64_t(m.hi) << 32); }
 
-// The coverage pass as a job: one invocation per character of the chunk.
+// The coverage pass as a job: one invocation per character of the chunk. Masks obey
+// parent-before-child by construction: each part's joint set is closed under ancestors when the
+// body parts are described (an active joint makes its ancestors active), and the union of
+// closed sets is closed.
+//
+// Sphere centres: without `joints`, each centre is the joint's mean character-space position
+// placed by the character's root (placement, heading, scale) — no dependency on the pose pass,
+// so coverage can run right after root motion in the same frame. With `joints` (the matrices
+// of the last pose pass), a centre joint that was active in the mask read from `masks` (last
+// frame's) is taken from its matrix, A·(0, bonePoint, 0, 1); the others are estimated, because
+// the pose pass did not write them. Zero-filled masks (a new crowd) mean "all estimated".
 struct CoverageJob {
   const crowd::CrowdBuffers* crowd = nullptr;  // input: placement (position, heading), motion (scale)
   const gpu::Buffer* parts = nullptr;          // input: uniform CoverageParts (makeCoverageParts)

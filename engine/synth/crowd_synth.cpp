@@ -18,6 +18,14 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
   VkDeviceSize bytes = VkDeviceSize(crowd.size()) * pair.jointCount() * sizeof(JointMatrix);
   synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   synth.cache = makeGpuMotionCache(context, pair, cache);
+  if (cache.enabled) {
+    // At most one chunk per character, so the counts never outgrow their buffers.
+    VkDeviceSize n = std::max<VkDeviceSize>(crowd.size(), 1);
+    synth.characterLists = gpu::Buffer(context, 2 * n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    synth.listCounts = gpu::Buffer(context, 2 * n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    synth.dispatchArgs = gpu::Buffer(context, 2 * n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                                     gpu::MemoryUse::DeviceLocal);
+  }
   return synth;
 }
 
@@ -38,13 +46,48 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
   root.record(cmd, programs);
   gpu::computeToComputeBarrier(cmd);
   const bool cached = synth.cache.options.enabled;
-  if (cached) CacheJob{&synth.motion, &synth.crowd, &synth.cache}.record(cmd, programs);
   const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
   // Also bounded by 65535 workgroups of 64 per dispatch.
   const uint32_t chunk = static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
-  for (uint32_t first = 0; first < synth.crowd.count; first += chunk) {
+  const uint32_t chunks = (synth.crowd.count + chunk - 1) / chunk;
+  if (cached) {
+    CacheJob{&synth.motion, &synth.crowd, &synth.cache}.record(cmd, programs);
+    vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(2) * chunks * 4, 0u);
+    gpu::computeToComputeBarrier(cmd);
+    for (uint32_t c = 0; c < chunks; ++c) {
+      uint32_t first = c * chunk;
+      CachePush push{std::min(chunk, synth.crowd.count - first), synth.cache.segmentCount, synth.cache.capacity,
+                     synth.cache.options.bucketWidth, first, c, synth.crowd.count, 0};
+      gpu::Binding bindings[] = {gpu::storageBinding(0, synth.crowd.motion), gpu::storageBinding(3, synth.cache.bucketSlot),
+                                 gpu::storageBinding(6, synth.characterLists), gpu::storageBinding(7, synth.listCounts)};
+      gpu::dispatch(cmd, programs.cacheClassify, bindings, push, push.characterCount);
+    }
+    gpu::computeToComputeBarrier(cmd);
+    const uint32_t counts = 2 * chunks;
+    gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts), gpu::storageBinding(8, synth.dispatchArgs)};
+    gpu::dispatch(cmd, programs.cacheArgs, argBindings, counts, counts);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  }
+  for (uint32_t c = 0; c < chunks; ++c) {
+    uint32_t first = c * chunk;
     PoseJob pose{&synth.motion, &synth.crowd, &synth.joints, first, std::min(chunk, synth.crowd.count - first),
-                 VkDeviceSize(first) * perCharacter, cached ? &synth.cache : nullptr};
+                 VkDeviceSize(first) * perCharacter};
+    if (!cached) {
+      pose.record(cmd, programs);
+      continue;
+    }
+    pose.characterList = &synth.characterLists;
+    pose.listCounts = &synth.listCounts;
+    pose.dispatchArgs = &synth.dispatchArgs;
+    pose.listBase = first + synth.crowd.count;  // the characters whose bucket is not resident
+    pose.countIndex = 2 * c + 1;
+    pose.argsOffset = VkDeviceSize(2 * c + 1) * 12;
+    pose.record(cmd, programs);
+    pose.listBase = first;  // the cached ones
+    pose.countIndex = 2 * c;
+    pose.argsOffset = VkDeviceSize(2 * c) * 12;
+    pose.cache = &synth.cache;
     pose.record(cmd, programs);
   }
   // The cache counters are read on the host after the frame.

@@ -16,6 +16,10 @@ struct CrowdSynth {
   crowd::CrowdBuffers crowd;
   gpu::Buffer joints;  // crowd.count × jointCount JointMatrix
   GpuMotionCache cache;
+  // With the cache on: per pose chunk, the characters served from the cache and the others.
+  gpu::Buffer characterLists;  // 2 × crowd.count (cached list, then uncached at + count)
+  gpu::Buffer listCounts;      // 2 per chunk
+  gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per count
   anim::Steering steering = anim::Steering::KeepHeading;
 
   uint32_t jointCount() const { return motion.jointCount; }

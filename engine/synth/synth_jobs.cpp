@@ -36,11 +36,12 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
       cacheLookup(context, "cache_lookup.comp"),
       cacheInsert(context, "cache_insert.comp"),
       cacheFill(context, "cache_fill.comp", poseSpecialization(pair)),
+      cacheClassify(context, "cache_classify.comp"),
+      cacheArgs(context, "cache_dispatch_args.comp"),
+      poseCached(context, "synth_pose_cached.comp", poseSpecialization(pair)),
       poseParents(pair.parents),
       poseAnimatedOffsets(pair.animatedOffset) {
-  const int32_t none[] = {-1};
-  noCacheSlots = gpu::makeStorageBuffer<int32_t>(context, none);
-  noCacheData = gpu::Buffer(context, sizeof(JointMatrix), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  noList = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
 }
 
 std::vector<std::string> CacheJob::validate() const {
@@ -126,6 +127,9 @@ std::vector<std::string> PoseJob::validate() const {
     if (firstCharacter > crowd->count) problems.push_back("firstCharacter is past the end of the crowd");
     uint32_t count = characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
     if (firstCharacter + count > crowd->count) problems.push_back("chunk runs past the end of the crowd");
+    if (cache && !characterList) problems.push_back("cached poses need the 'characterList' of cached characters");
+    if (characterList && (!listCounts || !dispatchArgs))
+      problems.push_back("a 'characterList' needs its 'listCounts' and 'dispatchArgs'");
     VkDeviceSize need = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
     if (jointsOffset + need > joints->size())
       problems.push_back(concat("output 'joints' holds ", joints->size(), " bytes, the chunk needs ", need,
@@ -146,11 +150,27 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   push.slowFrames = motion->slowFrames;
   push.fastFrames = motion->fastFrames;
   push.firstCharacter = firstCharacter;
-  const bool cached = cache && cache->options.enabled && cache->capacity > 0;
-  push.cacheEnabled = cached ? 1u : 0u;
-  push.segmentCount = cached ? cache->segmentCount : 0u;
-  push.bucketWidth = cached ? cache->options.bucketWidth : 1.0f;
+  const bool listed = characterList != nullptr;
+  push.fromList = listed ? 1u : 0u;
+  push.listBase = listBase;
+  push.countIndex = countIndex;
+  if (cache) {
+    push.segmentCount = cache->segmentCount;
+    push.bucketWidth = cache->options.bucketWidth;
+  }
   VkDeviceSize bytes = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
+  const gpu::Buffer& list = listed ? *characterList : programs.noList;
+  const gpu::Buffer& counts = listed ? *listCounts : programs.noList;
+  if (cache) {
+    gpu::Binding bindings[] = {
+        gpu::storageBinding(3, crowd->placement), gpu::storageBinding(4, crowd->motion),
+        gpu::storageBinding(5, *joints, jointsOffset, bytes), gpu::storageBinding(7, list),
+        gpu::storageBinding(8, counts), gpu::storageBinding(9, cache->bucketSlot),
+        gpu::storageBinding(10, cache->data),
+    };
+    gpu::dispatchIndirect(cmd, programs.poseCached, bindings, &push, sizeof(push), *dispatchArgs, argsOffset);
+    return;
+  }
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, motion->slowTexels),
       gpu::storageBinding(1, motion->fastTexels),
@@ -159,10 +179,14 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
       gpu::storageBinding(4, crowd->motion),
       gpu::storageBinding(5, *joints, jointsOffset, bytes),
       gpu::uniformBinding(6, motion->constantOffsets),
-      cached ? gpu::storageBinding(7, cache->bucketSlot) : gpu::storageBinding(7, programs.noCacheSlots),
-      cached ? gpu::storageBinding(8, cache->data) : gpu::storageBinding(8, programs.noCacheData),
+      gpu::storageBinding(7, list),
+      gpu::storageBinding(8, counts),
   };
-  gpu::dispatch(cmd, programs.pose, bindings, push, count);
+  if (listed) {
+    gpu::dispatchIndirect(cmd, programs.pose, bindings, &push, sizeof(push), *dispatchArgs, argsOffset);
+  } else {
+    gpu::dispatch(cmd, programs.pose, bindings, push, count);
+  }
 }
 
 }  // namespace throng::synth

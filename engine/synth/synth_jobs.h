@@ -21,8 +21,10 @@ struct SynthPrograms {
   gpu::ComputeProgram cacheLookup;
   gpu::ComputeProgram cacheInsert;
   gpu::ComputeProgram cacheFill;       // specialized like `pose`
-  gpu::Buffer noCacheSlots;            // bindings for a pose pass without a cache
-  gpu::Buffer noCacheData;
+  gpu::ComputeProgram cacheClassify;
+  gpu::ComputeProgram cacheArgs;
+  gpu::ComputeProgram poseCached;      // A = M · cached pose (specialized: joint count)
+  gpu::Buffer noList;                  // bindings for a pose pass over a plain range
   std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
   SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair);
@@ -49,7 +51,14 @@ struct PoseJob {
   uint32_t firstCharacter = 0;                  // the chunk [first, first + count)
   uint32_t characterCount = 0;                  // 0: every character from firstCharacter
   VkDeviceSize jointsOffset = 0;                // where the chunk's output starts in `joints`
-  const GpuMotionCache* cache = nullptr; // optional input: cached poses by speed bucket
+  // Optional: pose only the chunk-local characters listed at characterList[listBase …] (their
+  // number at listCounts[countIndex], the group count at dispatchArgs[argsOffset]).
+  const gpu::Buffer* characterList = nullptr;
+  const gpu::Buffer* listCounts = nullptr;
+  const gpu::Buffer* dispatchArgs = nullptr;
+  uint32_t listBase = 0, countIndex = 0;
+  VkDeviceSize argsOffset = 0;
+  const GpuMotionCache* cache = nullptr;        // set: the listed characters take cached poses
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;

@@ -1,0 +1,35 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Counting sort, pass 4, one thread per cell: agents of the cell by increasing index (so GPU
+// and CPU visit neighbours in one order and sum forces alike), and a copy of each agent's
+// position and velocity in that order for the neighbour scan: sorted[k] = (x, z, vx, vz).
+#include "crowd_types.h"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer Placement { vec4 placement[]; };
+layout(std430, binding = 1) readonly buffer Steer { vec4 steer[]; };
+layout(std430, binding = 2) readonly buffer Counts { uint counts[]; };
+layout(std430, binding = 3) readonly buffer Starts { uint starts[]; };
+layout(std430, binding = 4) buffer SortedIndex { uint sortedIndex[]; };
+layout(std430, binding = 5) writeonly buffer Sorted { vec4 sorted[]; };
+layout(push_constant) uniform Push { GridPush push; };
+
+void main() {
+  uint c = gl_GlobalInvocationID.x;
+  if (c >= push.cellCount) return;
+  uint first = starts[c];
+  uint end = first + counts[c];
+  for (uint k = first + 1u; k < end; ++k) {
+    uint v = sortedIndex[k];
+    uint j = k;
+    while (j > first && sortedIndex[j - 1u] > v) {
+      sortedIndex[j] = sortedIndex[j - 1u];
+      --j;
+    }
+    sortedIndex[j] = v;
+  }
+  for (uint k = first; k < end; ++k) {
+    uint i = sortedIndex[k];
+    sorted[k] = vec4(placement[i].xz, steer[i].xy);
+  }
+}

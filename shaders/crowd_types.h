@@ -1,0 +1,76 @@
+// Structs of the crowd steering passes (grid + avoidance), shared by C++ and GLSL like
+// shared_types.h. C++ includes this file through crowd/avoidance_types.h (static_asserts).
+#ifndef THRONG_CROWD_TYPES_H
+#define THRONG_CROWD_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace throng::gpu_types {
+using vec4 = glm::vec4;
+using uint = uint32_t;
+#define THRONG_CROWD_STRUCT(name) struct name
+#else
+#define THRONG_CROWD_STRUCT(name) struct name
+#endif
+
+// Per-agent buffers of the steering passes (structure of arrays beside placement/motion):
+//   goal[i]   = (target x, target z, max speed, active: 1 or 0)  the path-vector waypoint
+//   steer[i]  = (vx, vz, speed, flags)                            the velocity chosen this step
+//   sorted[k] = (x, z, vx, vz)                                    agent sortedIndex[k], cell order
+
+const uint kSteerPolicyNone = 0u;   // follow the path vectors, ignore others
+const uint kSteerPolicyRule = 1u;   // published rule: on overlap, a random heading in the gaze
+const uint kSteerPolicyTtc = 2u;    // anticipatory power law (Karamouzas et al. 2014)
+
+const uint kSteerFlagTurned = 1u;   // the rule turned the agent this step
+const uint kScanBlock = 1024u;      // cells per workgroup of the block scan (256 threads × 4)
+
+// Push constants of every grid pass (count, scan, scatter, cell sort).
+THRONG_CROWD_STRUCT(GridPush) {
+  uint agentCount;
+  uint cellCount;        // power of two: cells are hashed, cell & (cellCount - 1)
+  uint blockCount;       // ceil(cellCount / kScanBlock)
+  uint pad0;
+  float invCellSize;     // 1 / cell side in metres (multiplied, so GPU and CPU floor alike)
+  float pad1;
+  float pad2;
+  float pad3;
+};
+
+// Push constants of the steering pass.
+THRONG_CROWD_STRUCT(SteerPush) {
+  uint agentCount;
+  uint cellCount;
+  uint policy;           // kSteerPolicy*
+  uint step;             // step counter, hashed with agent and seed for the rule's random turn
+  uint seed;
+  int cellRange;         // neighbour cells scanned each side: ceil(sensing / cell)
+  float invCellSize;
+  float dt;
+  float invSecondsLeft;  // 1 / time until the current waypoint is due
+  float radius;          // safe radius of each cylinder (metres)
+  float sensing;         // neighbours farther than this are ignored
+  float lookahead;       // rule: seconds ahead the overlap is tested
+  float gazeAngle;       // rule: full width of the random turn (radians)
+  float ttcK;            // TTC: k (m²/s²·s^m), tau0 (s), relaxation xi (s), force cap (m/s²)
+  float ttcTau0;
+  float ttcXi;
+  float ttcMaxForce;
+  float slowSpeed;       // root speeds of the clip pair: speed → w (motion.z)
+  float fastSpeed;
+  float pad0;
+};
+
+// Push constants of the kinematic advance (position += velocity · dt).
+THRONG_CROWD_STRUCT(AdvancePush) {
+  uint agentCount;
+  float dt;
+  float pad0;
+  float pad1;
+};
+
+#ifdef __cplusplus
+}  // namespace throng::gpu_types
+#endif
+#endif
