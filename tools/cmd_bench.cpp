@@ -17,6 +17,7 @@
 #include "scene_options.h"
 #include "stats.h"
 #include "synth/cpu_synth.h"
+#include "bench_experiments.h"
 
 namespace throng::tools {
 namespace {
@@ -30,6 +31,7 @@ struct BenchOptions {
   std::string size = "1280x720";
   std::string device;
   bool quick = false;
+  std::string experiments;  // directory for the paper's experiments (CSV + PNG); empty: skip
 };
 
 struct Row {
@@ -135,6 +137,7 @@ void runBench(BenchOptions& o) {
     if (n == 0 || n > 4000000) fail("--characters: each count must be 1..4000000, got ", n);
   parseSize(o.size);
   if (!o.json.empty()) ensureWritableDirectory(std::filesystem::absolute(o.json).parent_path());
+  if (!o.experiments.empty()) ensureWritableDirectory(o.experiments);
 
   anim::ClipPair clips = anim::defaultRunPair();
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
@@ -158,6 +161,14 @@ void runBench(BenchOptions& o) {
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
   report(benchRender(context, programs, pair, o));
+  if (!o.experiments.empty()) {
+    ExperimentOptions experiment;
+    experiment.counts = o.counts;
+    experiment.outDir = o.experiments;
+    if (o.quick) experiment.frames = 8;
+    runCacheExperiment(context, programs, pair, experiment);
+    runHitRateExperiment(context, programs, pair, experiment);
+  }
 
   nlohmann::json doc;
   doc["device"] = context.info().name;
@@ -187,6 +198,8 @@ void addBenchCommand(CLI::App& app, int&) {
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
   cmd->add_flag("--quick", options->quick, "A few frames of 1000 characters (smoke test)");
+  cmd->add_option("--experiments", options->experiments,
+                  "Also run the paper's experiments (cache vs N, hit rate vs bucket width) into this directory");
   cmd->callback([options] { runBench(*options); });
 }
 

@@ -1,0 +1,129 @@
+#include "bench_experiments.h"
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "core/log.h"
+#include "crowd/scenario.h"
+#include "gpu/commands.h"
+#include "gpu/timestamps.h"
+#include "stats.h"
+#include "synth/crowd_synth.h"
+
+namespace throng::tools {
+namespace {
+
+struct CacheRun {
+  double medianMs = 0.0;
+  synth::MotionCacheStats stats;
+};
+
+CacheRun runWithSpeedChanges(const gpu::Context& context, const synth::SynthPrograms& programs,
+                             const anim::MotionPair& pair, uint32_t n, const synth::MotionCacheOptions& cache,
+                             const ExperimentOptions& o) {
+  crowd::ScenarioOptions scenario;
+  scenario.characters = n;
+  scenario.seed = 7;
+  crowd::Crowd crowd = crowd::makeScenario(scenario);
+  if (cache.enabled)
+    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache);
+  synth::SpeedSchedule schedule{o.speedPeriod, 7, 0.0f, 1.0f, cache.enabled ? cache.bucketWidth : 0.0f};
+  gpu::CommandPool pool(context);
+  VkCommandBuffer cmd = pool.allocate();
+  gpu::Fence fence(context);
+  gpu::TimestampPool timestamps(context, 2);
+  std::vector<double> ms;
+  for (int f = 0; f < o.frames; ++f) {
+    timestamps.reset();
+    gpu::beginCommands(cmd);
+    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+    synth::recordSynthesis(cmd, programs, synth, o.dt, context.info().maxStorageBufferRange, schedule.advance(o.dt));
+    timestamps.write(cmd);
+    gpu::endCommands(cmd);
+    gpu::submit(context, cmd, fence.get());
+    fence.wait();
+    fence.reset();
+    if (f >= 2) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
+  }
+  return {median(ms), synth::readCacheStats(synth.cache)};
+}
+
+}  // namespace
+
+bool plotCsv(const std::filesystem::path& csv, const std::filesystem::path& png, const std::string& title,
+             const std::string& xLabel, const std::string& yLabel, const std::vector<std::string>& series,
+             bool logX) {
+  if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+    logWarning(concat("gnuplot not found: ", png.string(), " not drawn (scripts/install_deps.sh installs it)"));
+    return false;
+  }
+  std::filesystem::path script = png;
+  script += ".gp";
+  std::ofstream gp(script);
+  gp << "set terminal pngcairo size 900,560 font ',11' noenhanced\n"
+     << "set output '" << png.string() << ".tmp'\n"
+     << "set datafile separator ','\nset key top left\nset grid\n"
+     << "set title '" << title << "'\nset xlabel '" << xLabel << "'\nset ylabel '" << yLabel << "'\n"
+     << (logX ? "set logscale x\n" : "") << "plot ";
+  for (size_t i = 0; i < series.size(); ++i)
+    gp << (i ? ", " : "") << "'" << csv.string() << "' using 1:" << (i + 2) << " with linespoints lw 2 title '"
+       << series[i] << "'";
+  gp << "\n";
+  gp.close();
+  bool ok = std::system(concat("gnuplot '", script.string(), "' 2>/dev/null").c_str()) == 0;
+  std::filesystem::remove(script);
+  std::filesystem::path tmp = png;
+  tmp += ".tmp";
+  if (ok) std::filesystem::rename(tmp, png);
+  else std::filesystem::remove(tmp);
+  return ok;
+}
+
+void runCacheExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,
+                        const anim::MotionPair& pair, const ExperimentOptions& o) {
+  std::string csv = "characters,no_cache_ms,cache_ms,cache_hits,cache_misses,cache_evictions,cache_bytes,budget_bytes\n";
+  std::printf("Fig. 11: synthesis with and without the motion cache, speeds changing every %.1f s\n", o.speedPeriod);
+  std::printf("%10s %14s %12s %8s %8s %10s %12s\n", "characters", "no cache ms", "cache ms", "hits", "misses",
+              "evictions", "cache bytes");
+  for (uint32_t n : o.counts) {
+    CacheRun plain = runWithSpeedChanges(context, programs, pair, n, {}, o);
+    CacheRun cached = runWithSpeedChanges(context, programs, pair, n, {true, 0.05f, 20ull << 20}, o);
+    if (cached.stats.bytesUsed > cached.stats.budgetBytes)
+      fail("motion cache exceeded its budget: ", cached.stats.bytesUsed, " > ", cached.stats.budgetBytes, " bytes");
+    std::printf("%10u %14.3f %12.3f %8u %8u %10u %12llu\n", n, plain.medianMs, cached.medianMs, cached.stats.hits,
+                cached.stats.misses, cached.stats.evictions, static_cast<unsigned long long>(cached.stats.bytesUsed));
+    csv += concat(n, ",", plain.medianMs, ",", cached.medianMs, ",", cached.stats.hits, ",", cached.stats.misses, ",",
+                  cached.stats.evictions, ",", cached.stats.bytesUsed, ",", cached.stats.budgetBytes, "\n");
+  }
+  writeTextFileAtomic(o.outDir / "cache_vs_n.csv", csv);
+  plotCsv(o.outDir / "cache_vs_n.csv", o.outDir / "cache_vs_n.png", "Synthesis with and without the motion cache",
+          "characters", "synthesis ms per frame (median)", {"no cache", "cache"}, true);
+}
+
+void runHitRateExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,
+                          const anim::MotionPair& pair, const ExperimentOptions& o) {
+  // A 1 MB budget holds about 20 entries of the built-in pair, so narrow buckets (more distinct
+  // speeds than entries) thrash the FIFO while wide ones all stay resident; the price of wide
+  // buckets is the speed quantization (mean |w − bucket speed| = width / 4).
+  const uint64_t budget = 1ull << 20;
+  std::string csv = "bucket_width,hit_rate,entries,misses,evictions\n";
+  std::printf("Cache hit rate vs bucket width (10000 characters, 1 MB budget, speeds changing every %.1f s)\n",
+              o.speedPeriod);
+  for (float width : {0.01f, 0.02f, 0.04f, 0.05f, 0.1f, 0.2f}) {
+    CacheRun run = runWithSpeedChanges(context, programs, pair, 10000, {true, width, budget}, o);
+    double rate = double(run.stats.hits) / std::max(1u, run.stats.hits + run.stats.misses);
+    std::printf("  width %.2f: hit rate %.3f (%u hits, %u misses, %u evictions, %u entries)\n", width, rate,
+                run.stats.hits, run.stats.misses, run.stats.evictions, run.stats.entries);
+    csv += concat(width, ",", rate, ",", run.stats.entries, ",", run.stats.misses, ",", run.stats.evictions, "\n");
+  }
+  writeTextFileAtomic(o.outDir / "hit_rate_vs_bucket.csv", csv);
+  plotCsv(o.outDir / "hit_rate_vs_bucket.csv", o.outDir / "hit_rate_vs_bucket.png", "Motion cache hit rate",
+          "bucket width (speed weight)", "hit rate per bucket lookup", {"hit rate"}, false);
+}
+
+}  // namespace throng::tools
