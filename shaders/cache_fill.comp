@@ -29,5 +29,5 @@ void main() {
   float w = bucketSpeed(uint(slotBucket[slot]), push.bucketWidth);
   uint base = (slot * push.segmentCount + segment) * uint(kJointCount);
   composePose(base, frames.x * 2 * kJointCount, frames.y * 2 * kJointCount, makeSlerpWeights(w), w,
-              vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0);
+              vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0, uvec2(0xFFFFFFFFu));
 }

@@ -15,11 +15,15 @@ layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = 2) buffer Visibility { uint64_t visibility[]; };
 layout(std430, binding = 3) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
 layout(std430, binding = 4) writeonly buffer NearList { uint nearList[]; };
+layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
 layout(push_constant) uniform Push { SplatPush push; };
 
 void main() {
   uint joint = gl_GlobalInvocationID.x;
   if (joint >= push.jointTotal) return;
+  uint character = joint / push.jointCount + push.firstCharacter;
+  uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
+  if ((push.flags & kDrawUseMasks) != 0u && !jointActive(mask, joint % push.jointCount)) return;
   JointSprite s = jointSprite(joints[joint], frame);
   if (!s.visible) return;
   if (s.sizePx > push.maxPixels) {
@@ -30,7 +34,7 @@ void main() {
   // Pixels whose centres lie inside the bounding box.
   ivec2 lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
   ivec2 hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
-  vec3 tint = characterTint(joint / push.jointCount + push.firstCharacter);
+  vec3 tint = (push.flags & kDrawTintLevel) != 0u ? levelTint(mask.z) : characterTint(character);
   uint width = uint(frame.viewport.x);
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {

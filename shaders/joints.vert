@@ -10,6 +10,7 @@
 layout(std430, binding = 0) readonly buffer Joints { JointMatrix joints[]; };
 layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = 4) readonly buffer NearList { uint nearList[]; };
+layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
 layout(push_constant) uniform Push { DrawPush push; };
 
 layout(location = 0) flat out vec3 tint;
@@ -19,8 +20,10 @@ layout(location = 3) flat out vec4 inverse2;
 
 void main() {
   uint joint = (push.flags & kDrawFromList) != 0u ? nearList[push.listBase + uint(gl_VertexIndex)] : uint(gl_VertexIndex);
+  uint character = joint / push.jointCount + push.firstCharacter;
+  uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
   JointSprite s = jointSprite(joints[joint], frame);
-  if (!s.visible) {
+  if (!s.visible || ((push.flags & kDrawUseMasks) != 0u && !jointActive(mask, joint % push.jointCount))) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
     gl_PointSize = 1.0;
     return;
@@ -28,7 +31,7 @@ void main() {
   inverse0 = s.inverse0;
   inverse1 = s.inverse1;
   inverse2 = s.inverse2;
-  tint = characterTint(joint / push.jointCount + push.firstCharacter);
+  tint = (push.flags & kDrawTintLevel) != 0u ? levelTint(mask.z) : characterTint(character);
   // The sprite is centred on the bounding box (not on the projected centre) so it covers it.
   vec2 boxCentreNdc = (s.lo + s.hi) / frame.viewport.xy - 1.0;
   gl_PointSize = min(s.sizePx, 255.0);

@@ -167,11 +167,14 @@ void writeRows(uint index, vec4 q, vec3 scale, vec3 t) {
 // slow/fast clips (their texel rows start at slowRow/fastRow), blended by w, placed by
 // M = T(origin)·R(yaw)·S(scale). With yaw = identity, origin = 0, scale = 1 this is the
 // character-space pose the motion cache stores.
+// Joints whose bit is clear in `activeJoints` (the coverage LOD mask) are neither blended nor written;
+// their children are never activeJoints (the mask keeps parents before children).
 void composePose(uint base, int slowRow, int fastRow, SlerpWeights weights, float w, vec4 yaw, vec3 origin,
-                 float scale) {
+                 float scale, uvec2 activeJoints) {
   // The hierarchy is composed directly in world space (root = M · root pose), which saves a
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
+    if (((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) == 0u) continue;
     vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], weights);
     vec3 o = offsetAnimated(j)
                  ? slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w

@@ -57,9 +57,11 @@ THRONG_STRUCT(PosePush) {
   uint countIndex;
   uint segmentCount;      // cache entries hold one pose per (slow frame, fast frame) segment
   float bucketWidth;      // speed-weight bucket width of the cache
-  uint pad0;
+  uint flags;             // kPoseUseMasks: skip the joints a character's LOD mask leaves out
   uint pad1;
 };
+
+const uint kPoseUseMasks = 1u;
 
 // The motion cache's counters and FIFO state (DESIGN §3.4), kept on the GPU.
 THRONG_STRUCT(CacheCounters) {
@@ -100,11 +102,13 @@ THRONG_STRUCT(FrameUniforms) {
 THRONG_STRUCT(DrawPush) {
   uint jointCount;
   uint firstCharacter;    // vertex index + firstCharacter·jointCount is the global joint
-  uint flags;             // kDrawFromList: vertex i draws joint nearList[listBase + i]
+  uint flags;             // kDraw* bits below
   uint listBase;
 };
 
-const uint kDrawFromList = 1u;
+const uint kDrawFromList = 1u;   // vertex i draws joint nearList[listBase + i]
+const uint kDrawUseMasks = 2u;   // skip joints the character's LOD mask leaves out
+const uint kDrawTintLevel = 4u;  // colour characters by LOD level (paper Fig. 8)
 
 // Push constants of the joint splat (compute path for small joints). Joints too wide to splat
 // are appended to nearList[listBase …] and counted in draws[chunk].vertexCount, an indirect
@@ -116,7 +120,7 @@ THRONG_STRUCT(SplatPush) {
   float maxPixels;        // sprites wider than this are left to the graphics pipeline
   uint chunk;
   uint listBase;
-  uint pad0;
+  uint flags;             // kDrawUseMasks, kDrawTintLevel
   uint pad1;
 };
 

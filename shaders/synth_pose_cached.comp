@@ -17,6 +17,7 @@ layout(std430, binding = 7) readonly buffer CharacterList { uint characterList[]
 layout(std430, binding = 8) readonly buffer ListCounts { uint listCounts[]; };
 layout(std430, binding = 9) readonly buffer BucketSlot { int bucketSlot[]; };
 layout(std430, binding = 10) readonly buffer CacheData { JointMatrix cacheData[]; };
+layout(std430, binding = 11) readonly buffer Masks { uvec4 masks[]; };
 layout(push_constant) uniform Push { PosePush push; };
 
 layout(constant_id = 0) const int kJointCount = 1;
@@ -35,7 +36,9 @@ void main() {
   uint entry = (uint(slot) * push.segmentCount + uint(fs + ff)) * uint(kJointCount);
   uint base = local * uint(kJointCount);
   float c = cos(place.w), s = sin(place.w), scale = m.w;
+  uvec2 activeJoints = (push.flags & kPoseUseMasks) != 0u ? masks[i].xy : uvec2(0xFFFFFFFFu);
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
+    if (((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) == 0u) continue;
     JointMatrix p = cacheData[entry + uint(j)];
     joints[base + uint(j)].row0 = scale * (c * p.row0 + s * p.row2) + vec4(0.0, 0.0, 0.0, place.x);
     joints[base + uint(j)].row1 = scale * p.row1 + vec4(0.0, 0.0, 0.0, place.y);

@@ -47,7 +47,8 @@ void runRender(RenderOptions& o) {
   synth::SynthPrograms programs(context, pair);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, sceneCacheOptions(o.scene));
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, sceneCacheOptions(o.scene),
+                                                  sceneLodOptions(o.scene, clips.slow.skeleton));
   render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
                                size.width, size.height, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   const float groundExtent = 1.6f * crowd::scenarioExtent(o.scene.scenario) + 40.0f;
@@ -62,7 +63,8 @@ void runRender(RenderOptions& o) {
     timestamps.reset();
     gpu::beginCommands(cmd);
     render::FrameTimestamps marks = render::recordCrowdFrame(cmd, context, programs, synth, renderer, camera,
-                                                             groundExtent, targets, o.scene.dt, timestamps, 0, speeds.advance(o.scene.dt));
+                                                             groundExtent, targets, o.scene.dt, timestamps, 0, speeds.advance(o.scene.dt),
+                                                             o.scene.lodTint);
     render::recordReadback(cmd, target);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());

@@ -27,6 +27,12 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--bucket-width", o.bucketWidth, "Motion cache speed-weight bucket width")->capture_default_str();
   command.add_option("--speed-period", o.speedPeriod, "Seconds between speed changes (0: never; paper: 5)")
       ->capture_default_str();
+  command.add_flag("--lod", o.lod, "Pixel-coverage joint LOD: far characters synthesize and draw fewer joints");
+  command.add_flag("--lod-tint", o.lodTint, "With --lod, colour characters by level (green near, yellow mid, red far)");
+  command.add_option("--lod-mid-pixels", o.lodMidPixels, "Torso sphere area (pixels) for the mid level")
+      ->capture_default_str();
+  command.add_option("--lod-near-pixels", o.lodNearPixels, "Limb sphere area (pixels) for all joints")
+      ->capture_default_str();
 }
 
 Size parseSize(const std::string& text) {
@@ -46,6 +52,9 @@ void validateSceneOptions(SceneOptions& o) {
   if (o.fovY != 0.0f && !(o.fovY > 1.0f && o.fovY < 170.0f)) fail("--fov: expected 1..170 degrees, got ", o.fovY);
   parseSize(o.size);
   if (!(o.cacheBudgetMb >= 0.0f && o.cacheBudgetMb <= 65536.0f)) fail("--cache-budget: expected 0..65536 MB, got ", o.cacheBudgetMb);
+  if (!(o.lodMidPixels >= 0.0f && o.lodNearPixels >= 0.0f))
+    fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
+  if (o.lodTint && !o.lod) fail("--lod-tint needs --lod");
   if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
   synth::validateCacheOptions(sceneCacheOptions(o));
   crowd::makeScenario([&] {  // validates the scenario options on a one-character crowd
@@ -81,6 +90,10 @@ synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& o) {
   schedule.hi = o.scenario.maxSpeedWeight;
   schedule.bucketWidth = o.cache ? o.bucketWidth : 0.0f;
   return schedule;
+}
+
+synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& skeleton) {
+  return {o.lod, synth::CoverageThresholds::levels(o.lodMidPixels, o.lodNearPixels), &skeleton};
 }
 
 render::Camera sceneCamera(const SceneOptions& o) {

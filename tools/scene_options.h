@@ -27,6 +27,10 @@ struct SceneOptions {
   float cacheBudgetMb = 20.0f;
   float bucketWidth = 0.05f;
   float speedPeriod = 0.0f;     // seconds between speed changes (paper: 5); 0 = never
+  bool lod = false;             // pixel-coverage joint LOD
+  bool lodTint = false;         // colour characters by LOD level
+  float lodMidPixels = synth::kDefaultMidPixels;    // torso sphere area for the mid level
+  float lodNearPixels = synth::kDefaultNearPixels;  // limb sphere area for all joints
 };
 
 void addSceneOptions(CLI::App& command, SceneOptions& options);
@@ -44,6 +48,7 @@ anim::ClipPair loadSceneClips(const SceneOptions& options);
 crowd::Crowd makeSceneCrowd(const SceneOptions& options);
 synth::MotionCacheOptions sceneCacheOptions(const SceneOptions& options);
 synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& options);
+synth::LodOptions sceneLodOptions(const SceneOptions& options, const anim::Skeleton& skeleton);
 render::Camera sceneCamera(const SceneOptions& options);
 
 }  // namespace throng::tools

@@ -7,10 +7,13 @@ namespace throng::render {
 FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
                                  const synth::CrowdSynth& synth, CrowdRenderer& renderer, const Camera& camera,
                                  float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps,
-                                 uint32_t frameSlot, const anim::SpeedRetarget& retarget) {
+                                 uint32_t frameSlot, const anim::SpeedRetarget& retarget, bool tintLevels) {
   FrameTimestamps marks;
   marks.start = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-  synth::recordSynthesis(cmd, programs, synth, dt, context.info().maxStorageBufferRange, retarget);
+  // The coverage LOD sees the frame through the same camera and viewport as the draw.
+  synth::CoverageCamera lodCamera = synth::coverageCamera(camera.view(), camera.fovYDegrees, targets.width,
+                                                          targets.height, camera.nearPlane);
+  synth::recordSynthesis(cmd, programs, synth, dt, context.info().maxStorageBufferRange, retarget, &lodCamera);
   marks.synthesized = timestamps.write(cmd);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
@@ -22,6 +25,8 @@ FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& contex
   params.jointCount = synth.jointCount();
   params.joints = &synth.joints;
   params.groundExtent = groundExtent;
+  params.masks = synth.lod ? &synth.masks : nullptr;
+  params.tintLevels = tintLevels;
   renderer.record(cmd, targets.color, targets.colorView, targets.depth, targets.depthView, params, targets.finalLayout, frameSlot);
   marks.rendered = timestamps.write(cmd);
   return marks;

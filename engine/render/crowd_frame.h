@@ -28,7 +28,8 @@ struct FrameTimings {
 FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
                                  const synth::CrowdSynth& synth, CrowdRenderer& renderer, const Camera& camera,
                                  float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps,
-                                 uint32_t frameSlot = 0, const anim::SpeedRetarget& retarget = {});
+                                 uint32_t frameSlot = 0, const anim::SpeedRetarget& retarget = {},
+                                 bool tintLevels = false);
 
 FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks);
 

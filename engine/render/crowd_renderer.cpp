@@ -16,6 +16,15 @@ using gpu_types::FrameUniforms;
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match the GLSL push block");
 static_assert(sizeof(FrameUniforms) == 160, "FrameUniforms must match the GLSL std140 block");
 
+namespace {
+uint32_t drawFlags(const DrawParams& params) {
+  uint32_t flags = 0;
+  if (params.masks) flags |= gpu_types::kDrawUseMasks;
+  if (params.masks && params.tintLevels) flags |= gpu_types::kDrawTintLevel;
+  return flags;
+}
+}  // namespace
+
 FrameUniforms makeFrameUniforms(const DrawParams& params) {
   const Camera& camera = params.camera;
   float aspect = float(params.width) / float(params.height);
@@ -58,6 +67,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, 
     resolveDesc.fragmentShader = "splat_resolve.frag";
     resolve_ = gpu::GraphicsProgram(context, resolveDesc);
   }
+  noMasks_ = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   for (uint32_t i = 0; i < kFramesInFlight; ++i)
     frameUniforms_.emplace_back(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                 gpu::MemoryUse::HostVisible);
@@ -103,7 +113,8 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
     ensureVisibility(params.width, params.height);
     SplatJob job{params.joints, &uniforms, &visibility_, &draws_, &nearList_, params.width, params.height,
                  params.characterCount, params.jointCount, params.splatMaxPixels,
-                 context_->info().maxStorageBufferRange};
+                 context_->info().maxStorageBufferRange, params.masks ? params.masks : &noMasks_,
+                 drawFlags(params)};
     job.record(cmd, splat_);
   }
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
@@ -147,7 +158,7 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
 
   DrawPush push{};
   push.jointCount = params.jointCount;
-  push.flags = splat ? kDrawFromList : 0u;
+  push.flags = (splat ? kDrawFromList : 0u) | drawFlags(params);
   const std::vector<JointChunk> chunks =
       jointChunks(params.characterCount, params.jointCount, context_->info().maxStorageBufferRange);
   const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
@@ -155,7 +166,8 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
     const JointChunk& chunk = chunks[c];
     gpu::Binding bindings[] = {
         gpu::storageBinding(0, *params.joints, chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
-        gpu::uniformBinding(1, uniforms), gpu::storageBinding(4, nearList_)};
+        gpu::uniformBinding(1, uniforms), gpu::storageBinding(4, nearList_),
+        gpu::storageBinding(5, params.masks ? *params.masks : noMasks_)};
     push.firstCharacter = chunk.firstCharacter;
     push.listBase = chunk.firstCharacter * params.jointCount;
     joints_.bind(cmd, bindings, &push, sizeof(push));

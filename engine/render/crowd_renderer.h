@@ -22,6 +22,8 @@ struct DrawParams {
   // Joints whose screen sprite is at most this wide go through the compute splat; 0 draws
   // every joint with the graphics pipeline.
   float splatMaxPixels = 24.0f;
+  const gpu::Buffer* masks = nullptr;   // coverage LOD: CoverageMask per character (null: all joints)
+  bool tintLevels = false;              // colour characters by LOD level (paper Fig. 8)
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
 };
 
@@ -58,6 +60,7 @@ class CrowdRenderer {
   gpu::Buffer visibility_;
   gpu::Buffer draws_;     // indirect draws of the joints too wide to splat, one per chunk
   gpu::Buffer nearList_;  // their indices
+  gpu::Buffer noMasks_;   // bound when no LOD masks are given
   void ensureLists(uint32_t characterCount, uint32_t jointCount);
   uint32_t visibilityWidth_ = 0, visibilityHeight_ = 0;
   std::vector<std::pair<gpu::Buffer, uint32_t>> retiredVisibility_;  // buffers, records left before freeing

@@ -36,6 +36,7 @@ std::vector<std::string> SplatJob::validate() const {
   if (joints && *joints && joints->size() < VkDeviceSize(characterCount) * jointCount * 48u)
     problems.push_back("input 'joints' is smaller than characterCount × jointCount matrices");
   if (maxStorageBufferRange == 0) problems.push_back("maxStorageBufferRange is zero");
+  if (!masks || !*masks) problems.push_back("input 'masks' buffer is missing (bind a small one when flags are 0)");
   size_t chunks = jointChunks(characterCount, jointCount, std::max(1u, maxStorageBufferRange)).size();
   if (!draws || !*draws) problems.push_back("output 'draws' buffer is missing");
   else if (draws->size() < chunks * 16) problems.push_back(concat("output 'draws' holds ", draws->size(), " bytes, ", chunks, " chunks need ", chunks * 16));
@@ -64,13 +65,14 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];
     SplatPush push{jointCount, chunk.firstCharacter, chunk.characterCount * jointCount, maxPixels,
-                   static_cast<uint32_t>(c), chunk.firstCharacter * jointCount, 0, 0};
+                   static_cast<uint32_t>(c), chunk.firstCharacter * jointCount, flags, 0};
     gpu::Binding bindings[] = {
         gpu::storageBinding(0, *joints, chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
         gpu::uniformBinding(1, *frameUniforms),
         gpu::storageBinding(2, *visibility, 0, pixels * sizeof(uint64_t)),
         gpu::storageBinding(3, *draws),
         gpu::storageBinding(4, *nearList),
+        gpu::storageBinding(5, *masks),
     };
     gpu::dispatch(cmd, program, bindings, push, push.jointTotal);
   }

@@ -33,6 +33,8 @@ struct SplatJob {
   uint32_t jointCount = 0;                    // per character
   float maxPixels = 16.0f;                    // wider sprites are left to the graphics pipeline
   uint32_t maxStorageBufferRange = 0;         // chunk size of the joints binding
+  const gpu::Buffer* masks = nullptr;         // input: CoverageMask per character (LOD), see flags
+  uint32_t flags = 0;                         // kDrawUseMasks, kDrawTintLevel
 
   std::vector<std::string> validate() const;
   // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the

@@ -2,14 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
+#include "core/error.h"
 #include "gpu/commands.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
 
+void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton, const CoverageThresholds& thresholds) {
+  BodyParts parts = describeBodyParts(skeleton);
+  setMeanCentres(parts, *synth.pair);
+  CoverageParts uniform = makeCoverageParts(parts, thresholds);
+  std::memcpy(synth.coverageParts.mapped(), &uniform, sizeof(uniform));
+}
+
 CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd,
-                          const MotionCacheOptions& cache) {
+                          const MotionCacheOptions& cache, const LodOptions& lod) {
   CrowdSynth synth;
   synth.pair = &pair;
   synth.motion = uploadMotionPair(context, pair);
@@ -18,6 +27,15 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
   VkDeviceSize bytes = VkDeviceSize(crowd.size()) * pair.jointCount() * sizeof(JointMatrix);
   synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   synth.cache = makeGpuMotionCache(context, pair, cache);
+  if (lod.enabled) {
+    if (!lod.skeleton) fail("LOD needs the skeleton to find the body parts");
+    synth.lod = true;
+    synth.coverageParts = gpu::Buffer(context, sizeof(CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                      gpu::MemoryUse::HostVisible);
+    setLodThresholds(synth, *lod.skeleton, lod.thresholds);
+    std::vector<CoverageMask> none(std::max<size_t>(crowd.size(), 1), CoverageMask{});
+    synth.masks = gpu::makeStorageBuffer<CoverageMask>(context, none);
+  }
   if (cache.enabled) {
     // At most one chunk per character, so the counts never outgrow their buffers.
     VkDeviceSize n = std::max<VkDeviceSize>(crowd.size(), 1);
@@ -41,10 +59,20 @@ anim::SpeedRetarget SpeedSchedule::advance(float dt) {
 }
 
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
-                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget) {
+                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget,
+                     const CoverageCamera* lodCamera) {
   RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering, retarget};
   root.record(cmd, programs);
   gpu::computeToComputeBarrier(cmd);
+  const bool lod = synth.lod && lodCamera;
+  if (lod) {
+    // Sphere centres estimated from placement and the clip's mean pose: no dependency on
+    // this frame's pose pass, which the masks then trim.
+    CoverageJob coverage{&synth.crowd, &synth.coverageParts, nullptr, &synth.masks, nullptr, *lodCamera,
+                         synth.jointCount()};
+    coverage.record(cmd, programs.coverage);
+    gpu::computeToComputeBarrier(cmd);
+  }
   const bool cached = synth.cache.options.enabled;
   const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
   // Also bounded by 65535 workgroups of 64 per dispatch.
@@ -73,6 +101,7 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
     uint32_t first = c * chunk;
     PoseJob pose{&synth.motion, &synth.crowd, &synth.joints, first, std::min(chunk, synth.crowd.count - first),
                  VkDeviceSize(first) * perCharacter};
+    pose.masks = lod ? &synth.masks : nullptr;
     if (!cached) {
       pose.record(cmd, programs);
       continue;

@@ -4,11 +4,19 @@
 #include "anim/motion_texture.h"
 #include "crowd/crowd.h"
 #include "gpu/buffer.h"
+#include "synth/coverage.h"
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
 #include "synth/synth_jobs.h"
 
 namespace throng::synth {
+
+// Pixel-coverage LOD: per-character joint masks from the camera, thresholds in pixels.
+struct LodOptions {
+  bool enabled = false;
+  CoverageThresholds thresholds;
+  const anim::Skeleton* skeleton = nullptr;  // joint names find the body parts
+};
 
 struct CrowdSynth {
   const anim::MotionPair* pair = nullptr;
@@ -20,17 +28,25 @@ struct CrowdSynth {
   gpu::Buffer characterLists;  // 2 × crowd.count (cached list, then uncached at + count)
   gpu::Buffer listCounts;      // 2 per chunk
   gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per count
+  // With LOD on: the body parts and thresholds (uniform) and each character's mask.
+  bool lod = false;
+  gpu::Buffer coverageParts;
+  gpu::Buffer masks;
   anim::Steering steering = anim::Steering::KeepHeading;
 
   uint32_t jointCount() const { return motion.jointCount; }
 };
 
 CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd,
-                          const MotionCacheOptions& cache = {});
+                          const MotionCacheOptions& cache = {}, const LodOptions& lod = {});
+// New thresholds for a running synthesis (call between frames, with no frame in flight).
+void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton, const CoverageThresholds& thresholds);
 
 // Root motion, the motion cache when enabled, then the pose pass in chunks that each bind at most `maxBindingBytes` of output.
+// With LOD on and `lodCamera` given, the coverage pass sets each character's mask first.
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
-                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget = {});
+                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget = {},
+                     const CoverageCamera* lodCamera = nullptr);
 
 // Speed changes every `period` seconds (paper: 5 s): tells each step whether it starts a new
 // epoch, and the speed range and buckets the new targets are drawn from.

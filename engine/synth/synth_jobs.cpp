@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
+#include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
@@ -39,6 +40,7 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
       cacheClassify(context, "cache_classify.comp"),
       cacheArgs(context, "cache_dispatch_args.comp"),
       poseCached(context, "synth_pose_cached.comp", poseSpecialization(pair)),
+      coverage(makeCoverageProgram(context)),
       poseParents(pair.parents),
       poseAnimatedOffsets(pair.animatedOffset) {
   noList = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
@@ -154,6 +156,8 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   push.fromList = listed ? 1u : 0u;
   push.listBase = listBase;
   push.countIndex = countIndex;
+  push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
+  const gpu::Buffer& maskBuffer = masks ? *masks : programs.noList;
   if (cache) {
     push.segmentCount = cache->segmentCount;
     push.bucketWidth = cache->options.bucketWidth;
@@ -166,7 +170,7 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
         gpu::storageBinding(3, crowd->placement), gpu::storageBinding(4, crowd->motion),
         gpu::storageBinding(5, *joints, jointsOffset, bytes), gpu::storageBinding(7, list),
         gpu::storageBinding(8, counts), gpu::storageBinding(9, cache->bucketSlot),
-        gpu::storageBinding(10, cache->data),
+        gpu::storageBinding(10, cache->data), gpu::storageBinding(11, maskBuffer),
     };
     gpu::dispatchIndirect(cmd, programs.poseCached, bindings, &push, sizeof(push), *dispatchArgs, argsOffset);
     return;
@@ -181,6 +185,7 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
       gpu::uniformBinding(6, motion->constantOffsets),
       gpu::storageBinding(7, list),
       gpu::storageBinding(8, counts),
+      gpu::storageBinding(11, maskBuffer),
   };
   if (listed) {
     gpu::dispatchIndirect(cmd, programs.pose, bindings, &push, sizeof(push), *dispatchArgs, argsOffset);

@@ -24,6 +24,7 @@ struct SynthPrograms {
   gpu::ComputeProgram cacheClassify;
   gpu::ComputeProgram cacheArgs;
   gpu::ComputeProgram poseCached;      // A = M · cached pose (specialized: joint count)
+  gpu::ComputeProgram coverage;        // pixel-coverage LOD (coverage.h)
   gpu::Buffer noList;                  // bindings for a pose pass over a plain range
   std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
@@ -59,6 +60,7 @@ struct PoseJob {
   uint32_t listBase = 0, countIndex = 0;
   VkDeviceSize argsOffset = 0;
   const GpuMotionCache* cache = nullptr;        // set: the listed characters take cached poses
+  const gpu::Buffer* masks = nullptr;           // optional input: CoverageMask per character (LOD)
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;

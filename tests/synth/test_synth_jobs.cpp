@@ -8,6 +8,7 @@
 #include "gpu_fixture.h"
 #include "synth/cpu_synth.h"
 #include "synth/crowd_synth.h"
+#include <glm/gtc/matrix_transform.hpp>
 #include "synth/synth_jobs.h"
 #include "synth_fixtures.h"
 
@@ -197,5 +198,53 @@ TEST_CASE("speed changes every T seconds: new targets drawn per epoch, applied a
   }
   CHECK(test::maxAbsDifference(&gpuCrowd.placement[0].x, &crowd.placement[0].x, crowd.size() * 4) <= 1e-4f);
   CHECK(changed > crowd.size() / 2);  // most characters finished a cycle since the last change
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("coverage LOD in the synthesis: thresholds 0 equal the full path; masked joints are skipped") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 600;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  synth::SynthPrograms programs(ctx, pair);
+  glm::mat4 view = glm::lookAt(glm::vec3(0, 20, -40), glm::vec3(0), glm::vec3(0, 1, 0));
+  synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+  synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd);
+  synth::CrowdSynth allJoints =
+      synth::makeCrowdSynth(ctx, pair, crowd, {}, {true, synth::CoverageThresholds::uniform(0.0f), &clips.slow.skeleton});
+  synth::CrowdSynth lod = synth::makeCrowdSynth(ctx, pair, crowd, {}, {true, {}, &clips.slow.skeleton});
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, lod.joints.get(), 0, VK_WHOLE_SIZE, 0u);  // to see which joints get written
+    gpu::computeToComputeBarrier(cmd);
+    synth::recordSynthesis(cmd, programs, plain, 1 / 30.0f, 1u << 27);
+    synth::recordSynthesis(cmd, programs, allJoints, 1 / 30.0f, 1u << 27, {}, &camera);
+    synth::recordSynthesis(cmd, programs, lod, 1 / 30.0f, 1u << 27, {}, &camera);
+  });
+  const size_t joints = pair.jointCount(), n = crowd.size() * joints;
+  auto a = gpu::readback<synth::JointMatrix>(ctx, plain.joints, n);
+  auto b = gpu::readback<synth::JointMatrix>(ctx, allJoints.joints, n);
+  auto c = gpu::readback<synth::JointMatrix>(ctx, lod.joints, n);
+  auto masks = gpu::readback<synth::CoverageMask>(ctx, lod.masks, crowd.size());
+  CHECK(test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12) == 0.0f);
+  size_t skipped = 0, levels[3] = {0, 0, 0};
+  for (size_t i = 0; i < crowd.size(); ++i) {
+    uint64_t mask = synth::maskBits(masks[i]);
+    REQUIRE(synth::parentsBeforeChildren(mask, pair.parents));
+    levels[std::min(masks[i].level, 2u)]++;
+    for (size_t j = 0; j < joints; ++j) {
+      const float* got = &c[i * joints + j].row0.x;
+      if (mask >> j & 1) {
+        REQUIRE(test::maxAbsDifference(got, &a[i * joints + j].row0.x, 12) == 0.0f);
+      } else {
+        ++skipped;
+        REQUIRE(test::maxAbsDifference(got, std::vector<float>(12, 0.0f).data(), 12) == 0.0f);  // never written
+      }
+    }
+  }
+  MESSAGE("LOD levels far/mid/near: ", levels[0], "/", levels[1], "/", levels[2], "; joints skipped ", skipped, " of ", n);
+  CHECK(skipped > n / 4);
+  CHECK(levels[0] + levels[1] > 0);
   CHECK(ctx.validationMessageCount() == 0);
 }
