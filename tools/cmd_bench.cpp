@@ -51,9 +51,21 @@ crowd::Crowd benchCrowd(uint32_t n) {
   return crowd::makeScenario(options);
 }
 
+enum class Variant { Full, Lod, LodCache };
+
 Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& programs, const anim::MotionPair& pair,
-                      uint32_t n, const BenchOptions& o) {
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, benchCrowd(n));
+                      const anim::Skeleton& skeleton, uint32_t n, const BenchOptions& o, Variant variant) {
+  crowd::Crowd crowd = benchCrowd(n);
+  synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
+  if (cache.enabled)
+    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
+  synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
+  // The default wide camera of `throng render` for this crowd, at 1280x720.
+  crowd::ScenarioOptions scenario;
+  scenario.characters = n;
+  render::Camera view = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  synth::CoverageCamera camera = synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
   gpu::Fence fence(context);
@@ -63,7 +75,8 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
     timestamps.reset();
     gpu::beginCommands(cmd);
     timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-    synth::recordSynthesis(cmd, programs, synth, kDt, context.info().maxStorageBufferRange);
+    synth::recordSynthesis(cmd, programs, synth, kDt, context.info().maxStorageBufferRange, {},
+                           variant == Variant::Full ? nullptr : &camera);
     timestamps.write(cmd);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
@@ -71,7 +84,10 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
     fence.reset();
     if (f >= o.warmup) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
   }
-  return {"gpu-synthesis", n, median(ms), 0.0, o.frames};
+  const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache"};
+  if (cache.enabled && synth::readCacheStats(synth.cache).bytesUsed > cache.budgetBytes)
+    fail("motion cache exceeded its budget");
+  return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames};
 }
 
 Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads, const BenchOptions& o) {
@@ -156,7 +172,9 @@ void runBench(BenchOptions& o) {
   std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
   std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
   for (uint32_t n : o.counts) {
-    report(benchGpuSynthesis(context, programs, pair, n, o));
+    report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Full));
+    report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Lod));
+    report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::LodCache));
     report(benchCpuSynthesis(pair, n, 1, o));
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
