@@ -1,0 +1,58 @@
+#pragma once
+// The Dear ImGui panel of `throng view`: scene controls (count, scenario, speeds), playback,
+// camera presets, and live statistics. Edits land in PanelControls; the frame loop applies them.
+#include <string>
+
+#include "render/camera.h"
+#include "synth/motion_cache.h"
+#include "view_stats.h"
+
+namespace throng::tools {
+
+// Where the panel first appears; it sizes itself to its contents.
+constexpr float kPanelX = 8.0f, kPanelY = 8.0f;
+
+struct PanelControls {
+  int characters = 0;
+  int scenario = 0;  // index into kScenarioNames
+  int seed = 1;
+  float speedMin = 0.0f, speedMax = 1.0f;
+  float density = 0.5f;
+  float speedPeriod = 0.0f;  // seconds; 0: speeds never change
+  bool cache = false;        // the motion cache (applied on respawn)
+  float cacheBudgetMb = 20.0f;
+  float bucketWidth = 0.05f;
+  float timeScale = 1.0f;
+  bool paused = false;
+  bool vsync = true;
+  // One-shot requests, cleared by the loop once handled.
+  bool respawn = false, step = false, screenshot = false, resetCamera = false;
+  int preset = -1;      // index into kPresetNames
+  std::string message;  // the last error or saved screenshot, shown in the panel
+};
+
+inline constexpr const char* kScenarioNames[] = {"random", "circle"};
+inline constexpr const char* kPresetNames[] = {"wide", "top", "street", "closeup"};
+
+struct PanelInfo {
+  std::string device;
+  std::string presentMode;
+  std::string clock;
+  std::string clips;
+  uint32_t width = 0, height = 0;
+  uint32_t characters = 0, jointsPerCharacter = 0;
+  uint64_t activeJoints = 0;
+  bool cacheEnabled = false;  // in the running crowd
+  synth::MotionCacheStats cache;
+  const ViewStats* stats = nullptr;
+  const render::Camera* camera = nullptr;
+};
+
+struct PanelRect {
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+};
+
+// Returns where the panel was drawn (tests compare the rest of the window with `throng render`).
+PanelRect drawPanel(PanelControls& controls, const PanelInfo& info);
+
+}  // namespace throng::tools

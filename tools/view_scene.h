@@ -1,0 +1,34 @@
+#pragma once
+// What `throng view` animates: one motion pair, its compiled passes and a crowd that the panel
+// can re-spawn (count, scenario, seed, speed range, motion cache), with its speed changes.
+#include <memory>
+#include <string>
+
+#include "gpu/context.h"
+#include "scene_options.h"
+#include "synth/crowd_synth.h"
+
+namespace throng::tools {
+
+struct ViewScene {
+  anim::MotionPair pair;  // CrowdSynth points at it: ViewScene never moves (held by unique_ptr)
+  std::string clipDescription;
+  SceneOptions options;  // the scene as last spawned
+  std::unique_ptr<synth::SynthPrograms> programs;
+  synth::CrowdSynth synth;
+  synth::SpeedSchedule speeds;  // its period and range may be changed live
+  float groundExtent = 0.0f;
+  double simulatedSeconds = 0.0;
+};
+
+// The ground drawn around a scenario (the same as `throng render`'s).
+float groundExtentFor(const crowd::ScenarioOptions& scenario);
+
+std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const SceneOptions& options,
+                                         anim::ClipPair clips);
+
+// Replaces the crowd by a new one for `options` (waits for the GPU first). Throws Error for
+// impossible options and then leaves the scene as it was.
+void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options);
+
+}  // namespace throng::tools

@@ -1,0 +1,282 @@
+#include "view_session.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "core/log.h"
+#include "render/offscreen_target.h"
+
+namespace throng::tools {
+namespace fs = std::filesystem;
+
+namespace {
+
+// Keys 1-4 and the panel's preset buttons: the named preset framed for the current crowd.
+render::Camera presetCamera(int index, const crowd::ScenarioOptions& scenario) {
+  return render::cameraPreset(kPresetNames[index], crowd::scenarioExtent(scenario));
+}
+
+gpu::ContextOptions contextOptionsFor(const ViewOptions& o, const render::Window& window) {
+  gpu::ContextOptions options;
+  options.device = o.scene.device;
+  options.validation = o.validation;
+  options.instanceExtensions = window.requiredInstanceExtensions();
+  options.swapchain = true;
+  return options;
+}
+}  // namespace
+
+ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
+                         anim::ClipPair clips)
+    : o_(o),
+      script_(std::move(script)),
+      window_({size.width, size.height, "throng view"}),
+      context_(contextOptionsFor(o, window_)),
+      presenter_(context_, window_, o.vsync),
+      renderer_(context_, presenter_.swapchain().format(), render::kDepthFormat),
+      scene_(makeViewScene(context_, o.scene, std::move(clips))),
+      camera_(sceneCamera(o.scene)),
+      initialCamera_(camera_),
+      panelVisible_(o.panel),
+      fixedClock_(o.clock == "fixed" || (o.clock.empty() && o.frames > 0)) {
+  logInfo(concat("clips: ", scene_->clipDescription));
+  window_.setCallbacks({
+      [this](double x, double y) { controls_.cursor(x, y); },
+      [this](int button, bool pressed) { controls_.button(button, pressed, uiWantsMouse()); },
+      [this](double dy) { controls_.scroll(dy, uiWantsMouse()); },
+      [this](int key, bool pressed, bool repeat) {
+        controls_.key(key, pressed, repeat, uiWantsKeyboard());
+      },
+  });
+  imgui_ = std::make_unique<render::ImGuiLayer>(context_, window_, presenter_.swapchain(),
+                                                render::kPresenterFrames);
+  const crowd::ScenarioOptions& s = o.scene.scenario;
+  panel_.characters = static_cast<int>(s.characters);
+  panel_.scenario = s.name == "circle" ? 1 : 0;
+  panel_.seed = static_cast<int>(s.seed);
+  panel_.density = s.density;
+  panel_.speedMin = s.minSpeedWeight;
+  panel_.speedMax = s.maxSpeedWeight;
+  panel_.speedPeriod = o.scene.speedPeriod;
+  panel_.cache = o.scene.cache;
+  panel_.cacheBudgetMb = o.scene.cacheBudgetMb;
+  panel_.bucketWidth = o.scene.bucketWidth;
+  panel_.vsync = o.vsync;
+}
+
+void ViewSession::applyScript(const std::vector<render::ScriptEvent>& events) {
+  using Kind = render::ScriptEvent::Kind;
+  for (const render::ScriptEvent& e : events) {
+    switch (e.kind) {
+      case Kind::Cursor:
+        controls_.cursor(e.x, e.y);
+        break;
+      case Kind::Button:
+        controls_.button(e.code, e.pressed, false);
+        break;
+      case Kind::Scroll:
+        controls_.scroll(e.x, false);
+        break;
+      case Kind::Key:
+        controls_.key(e.code, e.pressed, false, false);
+        break;
+      case Kind::Resize:
+        window_.resize(uint32_t(e.x), uint32_t(e.y));
+        break;
+      case Kind::Respawn:
+        panel_.characters = static_cast<int>(e.x);
+        if (!e.text.empty()) {
+          auto name = std::find(std::begin(kScenarioNames), std::end(kScenarioNames), e.text);
+          if (name == std::end(kScenarioNames))
+            fail("input script: unknown scenario '", e.text, "'");
+          panel_.scenario = static_cast<int>(name - std::begin(kScenarioNames));
+        }
+        panel_.respawn = true;
+        break;
+      case Kind::Close:
+        window_.requestClose();
+        break;
+    }
+  }
+}
+
+void ViewSession::handle(render::ViewAction action) {
+  using A = render::ViewAction;
+  switch (action) {
+    case A::ResetCamera:
+      camera_ = initialCamera_;
+      break;
+    case A::PresetWide:
+      panel_.preset = 0;
+      break;
+    case A::PresetTop:
+      panel_.preset = 1;
+      break;
+    case A::PresetStreet:
+      panel_.preset = 2;
+      break;
+    case A::PresetCloseup:
+      panel_.preset = 3;
+      break;
+    case A::TogglePause:
+      panel_.paused = !panel_.paused;
+      break;
+    case A::Step:
+      panel_.paused = true;
+      panel_.step = true;
+      break;
+    case A::TogglePanel:
+      panelVisible_ = !panelVisible_;
+      break;
+    case A::ToggleVsync:
+      panel_.vsync = !panel_.vsync;
+      break;
+    case A::Screenshot:
+      panel_.screenshot = true;
+      break;
+    case A::Quit:
+      window_.requestClose();
+      break;
+  }
+}
+
+void ViewSession::applyPanel() {
+  if (panel_.resetCamera) camera_ = initialCamera_;
+  if (panel_.preset >= 0) camera_ = presetCamera(panel_.preset, scene_->options.scenario);
+  panel_.resetCamera = false;
+  panel_.preset = -1;
+  presenter_.setVsync(panel_.vsync);
+  // The speed range and period apply live (from the next speed change) and to respawns.
+  if (panel_.speedMin <= panel_.speedMax) {
+    scene_->speeds.lo = panel_.speedMin;
+    scene_->speeds.hi = panel_.speedMax;
+  }
+  scene_->speeds.period = panel_.speedPeriod;
+  if (panel_.respawn) {
+    panel_.respawn = false;
+    SceneOptions next = scene_->options;
+    next.scenario.characters = static_cast<uint32_t>(panel_.characters);
+    next.scenario.name = kScenarioNames[panel_.scenario];
+    next.scenario.seed = static_cast<uint64_t>(panel_.seed);
+    next.scenario.density = panel_.density;
+    next.scenario.minSpeedWeight = panel_.speedMin;
+    next.scenario.maxSpeedWeight = panel_.speedMax;
+    next.speedPeriod = panel_.speedPeriod;
+    next.cache = panel_.cache;
+    next.cacheBudgetMb = panel_.cacheBudgetMb;
+    next.bucketWidth = panel_.bucketWidth;
+    try {
+      respawnCrowd(context_, *scene_, next);
+      ++respawns_;
+      panel_.message.clear();
+    } catch (const Error& e) {
+      panel_.message = concat("respawn failed: ", e.what());
+    }
+  }
+}
+
+float ViewSession::simulationStep(double wallSeconds) {
+  float step = fixedClock_ ? o_.scene.dt : static_cast<float>(std::min(wallSeconds, 0.1));
+  if (panel_.paused) {
+    step = panel_.step ? o_.scene.dt : 0.0f;
+    panel_.step = false;
+  }
+  return step * panel_.timeScale;
+}
+
+void ViewSession::collectTimes(uint32_t slot) {
+  if (!pending_[slot]) return;
+  pending_[slot] = false;
+  gpu::TimestampPool& pool = presenter_.timestamps(slot);
+  render::FrameTimings t = render::readFrameTimings(pool, marks_[slot]);
+  std::vector<uint64_t> ticks = pool.fetch();
+  stats_.passTimes({t.synthesisMs, t.renderMs,
+                    pool.millisecondsBetween(ticks, marks_[slot].rendered, panelMarks_[slot])});
+}
+
+void ViewSession::saveScreenshot(const fs::path& path) {
+  writePngAtomic(path, presenter_.capturedImage());
+  screenshotWritten_ = path.string();
+  panel_.message = concat("saved ", path.string());
+  logInfo(concat("screenshot: ", path.string()));
+}
+
+PanelInfo ViewSession::panelInfo() const {
+  PanelInfo info;
+  info.device = context_.info().name;
+  info.presentMode = render::presentModeName(presenter_.swapchain().presentMode());
+  info.clock = fixedClock_ ? "fixed" : "real";
+  info.clips = scene_->clipDescription;
+  info.width = presenter_.swapchain().extent().width;
+  info.height = presenter_.swapchain().extent().height;
+  info.characters = scene_->synth.crowd.count;
+  info.jointsPerCharacter = scene_->synth.jointCount();
+  info.activeJoints = activeJoints();
+  info.cacheEnabled = scene_->synth.cache.options.enabled;
+  if (info.cacheEnabled) info.cache = synth::readCacheStats(scene_->synth.cache);
+  info.stats = &stats_;
+  info.camera = &camera_;
+  return info;
+}
+
+void ViewSession::report() {
+  uint32_t messages = context_.validationEnabled() ? context_.validationMessageCount() : 0;
+  PassTimes median = stats_.medians();
+  VkExtent2D extent = presenter_.swapchain().extent();
+  std::printf("viewed %llu frames of %u characters (%u joints each) at %ux%u, %s: %.1f fps\n",
+              static_cast<unsigned long long>(stats_.frames()), scene_->synth.crowd.count,
+              scene_->synth.jointCount(), extent.width, extent.height,
+              render::presentModeName(presenter_.swapchain().presentMode()), stats_.averageFps());
+  std::printf(
+      "GPU time per frame (median): synthesis %.2f ms, render %.2f ms, panel %.2f ms  [%s]\n",
+      median.synthesisMs, median.renderMs, median.panelMs, context_.info().name.c_str());
+  if (o_.printStats) {
+    nlohmann::json j;
+    j["frames"] = stats_.frames();
+    j["width"] = extent.width;
+    j["height"] = extent.height;
+    j["device"] = context_.info().name;
+    j["presentMode"] = render::presentModeName(presenter_.swapchain().presentMode());
+    j["clock"] = fixedClock_ ? "fixed" : "real";
+    j["characters"] = scene_->synth.crowd.count;
+    j["jointsPerCharacter"] = scene_->synth.jointCount();
+    j["activeJoints"] = activeJoints();
+    j["lod"] = "not available in this build";
+    if (scene_->synth.cache.options.enabled) {
+      synth::MotionCacheStats c = synth::readCacheStats(scene_->synth.cache);
+      j["cache"] = {{"hits", c.hits},           {"misses", c.misses},
+                    {"evictions", c.evictions}, {"entries", c.entries},
+                    {"bytesUsed", c.bytesUsed}, {"budgetBytes", c.budgetBytes}};
+    } else {
+      j["cache"] = "off";
+    }
+    j["camera"] = {{"eye", {camera_.eye.x, camera_.eye.y, camera_.eye.z}},
+                   {"target", {camera_.target.x, camera_.target.y, camera_.target.z}},
+                   {"fovY", camera_.fovYDegrees}};
+    j["fps"] = stats_.fps();
+    j["averageFps"] = stats_.averageFps();
+    j["gpuMs"] = {
+        {"synthesis", median.synthesisMs}, {"render", median.renderMs}, {"panel", median.panelMs}};
+    j["panel"] = {{"visible", panelVisible_},
+                  {"x", panelRect_.x},
+                  {"y", panelRect_.y},
+                  {"width", panelRect_.width},
+                  {"height", panelRect_.height}};
+    j["swapchainRebuilds"] = presenter_.rebuildCount();
+    j["simulatedSeconds"] = scene_->simulatedSeconds;
+    j["paused"] = panel_.paused;
+    j["speedChanges"] = speedChanges_;
+    j["respawns"] = respawns_;
+    j["validationMessages"] = messages;
+    j["screenshot"] = screenshotWritten_;
+    std::printf("%s\n", j.dump().c_str());
+  }
+  std::fflush(stdout);
+  if (messages > 0) fail(messages, " Vulkan validation message(s) during the run");
+}
+
+}  // namespace throng::tools

@@ -1,0 +1,65 @@
+#pragma once
+// One run of `throng view`: the window, the GPU objects, the crowd, the panel and the input,
+// and the statistics it reports at exit.
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "gpu/context.h"
+#include "render/crowd_frame.h"
+#include "render/imgui_layer.h"
+#include "render/input_script.h"
+#include "render/view_controls.h"
+#include "render/window_presenter.h"
+#include "view_options.h"
+#include "view_panel.h"
+#include "view_scene.h"
+#include "view_stats.h"
+
+namespace throng::tools {
+
+class ViewSession {
+ public:
+  ViewSession(ViewOptions& o, Size size, render::InputScript script, anim::ClipPair clips);
+  void run();
+  void report();
+
+ private:
+  bool uiWantsMouse() const { return panelVisible_ && imgui_ && imgui_->wantsMouse(); }
+  bool uiWantsKeyboard() const { return panelVisible_ && imgui_ && imgui_->wantsKeyboard(); }
+  void applyScript(const std::vector<render::ScriptEvent>& events);
+  void handle(render::ViewAction action);
+  void applyPanel();
+  float simulationStep(double wallSeconds);
+  void collectTimes(uint32_t slot);
+  void saveScreenshot(const std::filesystem::path& path);
+  // Coverage-LOD hook: until the LOD pass exists every joint of every character is synthesized.
+  uint64_t activeJoints() const {
+    return uint64_t(scene_->synth.crowd.count) * scene_->synth.jointCount();
+  }
+  PanelInfo panelInfo() const;
+
+  ViewOptions& o_;
+  render::InputScript script_;
+  render::Window window_;
+  gpu::Context context_;
+  render::WindowPresenter presenter_;
+  render::CrowdRenderer renderer_;
+  std::unique_ptr<ViewScene> scene_;
+  std::unique_ptr<render::ImGuiLayer> imgui_;
+  render::ViewControls controls_;
+  render::Camera camera_, initialCamera_;
+  PanelControls panel_;
+  PanelRect panelRect_;
+  bool panelVisible_ = true;
+  bool fixedClock_ = false;
+  ViewStats stats_;
+  render::FrameTimestamps marks_[render::kPresenterFrames];
+  uint32_t panelMarks_[render::kPresenterFrames] = {};
+  bool pending_[render::kPresenterFrames] = {};
+  std::string screenshotWritten_;
+  uint64_t speedChanges_ = 0, respawns_ = 0;
+  double titleSeconds_ = 0.0;
+};
+
+}  // namespace throng::tools
