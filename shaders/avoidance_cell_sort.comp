@@ -14,19 +14,30 @@ layout(std430, binding = 4) buffer SortedIndex { uint sortedIndex[]; };
 layout(std430, binding = 5) writeonly buffer Sorted { vec4 sorted[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
+// Shell sort with Ciura's gaps (extended by x2.25) rather than plain insertion sort: the
+// scatter's atomic order is arbitrary, and lavapipe caps the loop iterations of one shader
+// invocation at 65535 (gallivm's loop limiter), which a quadratic sort of a crowded cell
+// (~400 agents) would exceed, leaving it silently unsorted.
+const uint kGaps[11] = uint[11](7983u, 3548u, 1577u, 701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
+
 void main() {
   uint c = gl_GlobalInvocationID.x;
   if (c >= push.cellCount) return;
   uint first = starts[c];
-  uint end = first + counts[c];
-  for (uint k = first + 1u; k < end; ++k) {
-    uint v = sortedIndex[k];
-    uint j = k;
-    while (j > first && sortedIndex[j - 1u] > v) {
-      sortedIndex[j] = sortedIndex[j - 1u];
-      --j;
+  uint count = counts[c];
+  uint end = first + count;
+  for (uint g = 0u; g < 11u; ++g) {
+    uint gap = kGaps[g];
+    if (gap >= count) continue;
+    for (uint k = first + gap; k < end; ++k) {
+      uint v = sortedIndex[k];
+      uint j = k;
+      while (j >= first + gap && sortedIndex[j - gap] > v) {
+        sortedIndex[j] = sortedIndex[j - gap];
+        j -= gap;
+      }
+      sortedIndex[j] = v;
     }
-    sortedIndex[j] = v;
   }
   for (uint k = first; k < end; ++k) {
     uint i = sortedIndex[k];

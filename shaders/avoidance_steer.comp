@@ -21,6 +21,9 @@ layout(push_constant) uniform Push { SteerPush push; };
 // Karamouzas, Skinner & Guy 2014: E = k τ^-2 e^(-τ/τ0) over the time to collision τ of two
 // discs; the force on agent i is −∇E = k e^(-τ/τ0) τ^-2 (2/τ + 1/τ0) (x + τ v) / √D, with x, v
 // the relative position and velocity and D the discriminant. Overlapping discs are pushed apart.
+// τ is floored at 0.1 s and √D at 0.05·|v|² (s/|v|²: half the time the discs would overlap):
+// both forces are far above the cap there anyway, and without the floors the τ^-3 and 1/√D
+// singularities turn float rounding into different steering on the GPU and the CPU twin.
 vec2 ttcForce(vec2 x, vec2 v, float dist2) {
   float diameter = 2.0 * push.radius;
   float c = dist2 - diameter * diameter;
@@ -35,8 +38,19 @@ vec2 ttcForce(vec2 x, vec2 v, float dist2) {
   if (disc <= 0.0) return vec2(0.0);            // passing clear
   float s = sqrt(disc);
   float tau = c / (s - b);
-  float magnitude = push.ttcK * exp(-tau / push.ttcTau0) / (tau * tau) * (2.0 / tau + 1.0 / push.ttcTau0) / s;
+  float t = max(tau, 0.1);
+  float magnitude = push.ttcK * exp(-t / push.ttcTau0) / (t * t) * (2.0 / t + 1.0 / push.ttcTau0) / max(s, 0.05 * a);
   return (x + tau * v) * magnitude;
+}
+
+// Whether two agents come closer than `diameter2` (squared) within `horizon` seconds, from
+// their relative position x and velocity v. Only while approaching: agents already too close
+// may always move apart.
+bool collides(vec2 x, vec2 v, float horizon, float diameter2) {
+  float xv = dot(x, v);
+  if (xv >= 0.0) return false;
+  vec2 d = x + v * min(-xv / dot(v, v), horizon);
+  return dot(d, d) < diameter2;
 }
 
 void main() {
@@ -57,12 +71,24 @@ void main() {
   }
   vec2 vCur = steer[i].xy;
 
-  bool overlap = false;
+  // The rule tests courses: towards the waypoint, on along the current heading, and
+  // kRuleDraws random headings within the gaze around the waypoint's direction.
+  float goalHeading = prefSpeed > 1e-4 ? atan(vPref.x, vPref.y) : place.w;
+  vec2 keep = prefSpeed * vec2(sin(place.w), cos(place.w));
+  vec2 draws[kRuleDraws];
+  for (uint d = 0u; d < kRuleDraws; ++d) draws[d] = vec2(0.0);
+  if (push.policy == kSteerPolicyRule) {
+    for (uint d = 0u; d < kRuleDraws; ++d) {
+      float heading = goalHeading + (steerRandom(i, push.step * kRuleDraws + d, push.seed) - 0.5) * push.gazeAngle;
+      draws[d] = prefSpeed * vec2(sin(heading), cos(heading));
+    }
+  }
+  bool blocked = false, keepBlocked = false;
+  uint drawBlocked = 0u;
   vec2 avoid = vec2(0.0);
   if (push.policy != kSteerPolicyNone) {
     float diameter2 = 4.0 * push.radius * push.radius;
     float sensing2 = push.sensing * push.sensing;
-    vec2 predicted = pos + vPref * push.lookahead;
     ivec2 home = cellCoord(pos, push.invCellSize);
     for (int dz = -push.cellRange; dz <= push.cellRange; ++dz) {
       for (int dx = -push.cellRange; dx <= push.cellRange; ++dx) {
@@ -77,8 +103,11 @@ void main() {
           float dist2 = dot(x, x);
           if (dist2 >= sensing2) continue;
           if (push.policy == kSteerPolicyRule) {
-            vec2 gap = predicted - (other.xy + other.zw * push.lookahead);
-            if (dot(gap, gap) < diameter2) overlap = true;
+            vec2 theirs = other.zw;
+            if (collides(x, vPref - theirs, push.lookahead, diameter2)) blocked = true;
+            if (collides(x, keep - theirs, push.lookahead, diameter2)) keepBlocked = true;
+            for (uint d = 0u; d < kRuleDraws; ++d)
+              if (collides(x, draws[d] - theirs, push.lookahead, diameter2)) drawBlocked |= 1u << d;
           } else {
             avoid += ttcForce(x, vCur - other.zw, dist2);
           }
@@ -89,11 +118,27 @@ void main() {
 
   vec2 v = vPref;
   uint flags = 0u;
-  if (push.policy == kSteerPolicyRule && overlap) {
-    float goalHeading = prefSpeed > 1e-4 ? atan(vPref.x, vPref.y) : place.w;
-    float heading = goalHeading + (steerRandom(i, push.step, push.seed) - 0.5) * push.gazeAngle;
-    v = prefSpeed * vec2(sin(heading), cos(heading));
-    flags = kSteerFlagTurned;
+  if (push.policy == kSteerPolicyRule && blocked) {
+    // Keep an earlier turn while its course is free and still within the gaze around the
+    // waypoint; else take the first free random heading; else wait, but for at most
+    // kRuleMaxWait seconds before taking the first draw anyway (a dense crossing would
+    // otherwise wait for ever).
+    bool inGaze = prefSpeed > 1e-4 && dot(keep, vPref) >= push.cosHalfGaze * prefSpeed * prefSpeed;
+    float waited = max(-steer[i].w, 0.0) * push.dt;
+    if (!keepBlocked && inGaze) {
+      v = keep;
+      flags = kSteerFlagKept;
+    } else {
+      v = waited < kRuleMaxWait ? vec2(0.0) : draws[0];
+      flags = waited < kRuleMaxWait ? kSteerFlagWaiting : kSteerFlagForced;
+      for (uint d = 0u; d < kRuleDraws; ++d) {
+        if ((drawBlocked & (1u << d)) == 0u) {
+          v = draws[d];
+          flags = kSteerFlagTurned;
+          break;
+        }
+      }
+    }
   } else if (push.policy == kSteerPolicyTtc) {
     float avoidLength = length(avoid);
     if (avoidLength > push.ttcMaxForce) avoid *= push.ttcMaxForce / avoidLength;
@@ -105,7 +150,9 @@ void main() {
   float speed = length(v);
   if (speed > 1e-3) place.w = atan(v.x, v.y);
   placement[i] = place;
-  steer[i] = vec4(v, speed, float(flags));
+  // steer.w: the flags, or while waiting minus the steps waited so far.
+  float state = flags == kSteerFlagWaiting ? min(steer[i].w, 0.0) - 1.0 : float(flags);
+  steer[i] = vec4(v, speed, state);
   if (push.fastSpeed > push.slowSpeed)
     motion[i].z = clamp((speed - push.slowSpeed) / (push.fastSpeed - push.slowSpeed), 0.0, 1.0);
 }

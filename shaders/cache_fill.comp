@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
+#extension GL_KHR_shader_subgroup_vote : require
 // Motion cache, step 3 (one invocation per slot × segment): synthesize the character-space pose
 // of every freshly inserted entry at its bucket's speed, once for all characters that share it.
 #include "shared_types.h"

@@ -16,14 +16,19 @@ using uint = uint32_t;
 
 // Per-agent buffers of the steering passes (structure of arrays beside placement/motion):
 //   goal[i]   = (target x, target z, max speed, active: 1 or 0)  the path-vector waypoint
-//   steer[i]  = (vx, vz, speed, flags)                            the velocity chosen this step
+//   steer[i]  = (vx, vz, speed, flags or -steps waited)           the velocity chosen this step
 //   sorted[k] = (x, z, vx, vz)                                    agent sortedIndex[k], cell order
 
 const uint kSteerPolicyNone = 0u;   // follow the path vectors, ignore others
 const uint kSteerPolicyRule = 1u;   // published rule: on overlap, a random heading in the gaze
 const uint kSteerPolicyTtc = 2u;    // anticipatory power law (Karamouzas et al. 2014)
 
-const uint kSteerFlagTurned = 1u;   // the rule turned the agent this step
+const uint kSteerFlagTurned = 1u;   // the rule turned the agent to a random heading this step
+const uint kSteerFlagKept = 2u;     // the rule kept a free earlier heading instead of the blocked course
+const uint kSteerFlagForced = 3u;   // no free heading for kRuleMaxWait s: the first draw anyway
+const uint kSteerFlagWaiting = 4u;  // no free heading: the rule waits (steer.w = -steps waited)
+const float kRuleMaxWait = 1.0;     // seconds
+const uint kRuleDraws = 4u;         // random headings the rule draws per step (first free one taken)
 const uint kScanBlock = 1024u;      // cells per workgroup of the block scan (256 threads × 4)
 
 // Push constants of every grid pass (count, scan, scatter, cell sort).
@@ -43,7 +48,7 @@ THRONG_CROWD_STRUCT(SteerPush) {
   uint agentCount;
   uint cellCount;
   uint policy;           // kSteerPolicy*
-  uint step;             // step counter, hashed with agent and seed for the rule's random turn
+  uint step;             // step counter: the rule's draw k hashes (agent, step · kRuleDraws + k, seed)
   uint seed;
   int cellRange;         // neighbour cells scanned each side: ceil(sensing / cell)
   float invCellSize;
@@ -59,7 +64,7 @@ THRONG_CROWD_STRUCT(SteerPush) {
   float ttcMaxForce;
   float slowSpeed;       // root speeds of the clip pair: speed → w (motion.z)
   float fastSpeed;
-  float pad0;
+  float cosHalfGaze;     // rule: cos(gazeAngle / 2), the cone a kept heading must stay in
 };
 
 // Push constants of the kinematic advance (position += velocity · dt).

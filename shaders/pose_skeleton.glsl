@@ -174,7 +174,10 @@ void composePose(uint base, int slowRow, int fastRow, SlerpWeights weights, floa
   // The hierarchy is composed directly in world space (root = M · root pose), which saves a
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
-    if (((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) == 0u) continue;
+    // A subgroup-uniform skip: lavapipe runs 8 characters per SIMD group and can only jump over
+    // the joint when none of them needs it; a lane that does not need it just does not write.
+    bool jointNeeded = ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
+    if (!subgroupAny(jointNeeded)) continue;
     vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], weights);
     vec3 o = offsetAnimated(j)
                  ? slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w
@@ -202,7 +205,7 @@ void composePose(uint base, int slowRow, int fastRow, SlerpWeights weights, floa
       orientation = quatMul(parentRotation, alignYTo(dir));
       if (len <= 1e-6) radius = 0.0;  // zero-length bones are not drawn
     }
-    writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
+    if (jointNeeded) writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
   }
 }
 

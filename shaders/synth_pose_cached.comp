@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
+#extension GL_KHR_shader_subgroup_vote : require
 // Pose pass for the characters whose speed bucket is in the motion cache (listed by
 // cache_classify.comp): no blending and no hierarchy, A = M · P with P the cached
 // character-space pose of the character's (slow frame, fast frame) segment and
@@ -38,7 +39,11 @@ void main() {
   float c = cos(place.w), s = sin(place.w), scale = m.w;
   uvec2 activeJoints = (push.flags & kPoseUseMasks) != 0u ? masks[i].xy : uvec2(0xFFFFFFFFu);
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
-    if (((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) == 0u) continue;
+    // A subgroup-uniform skip: lavapipe runs 8 characters per SIMD group and can only jump over
+    // the joint when none of them needs it; a lane that does not need it just does not write.
+    bool jointNeeded = ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
+    if (!subgroupAny(jointNeeded)) continue;
+    if (!jointNeeded) continue;
     JointMatrix p = cacheData[entry + uint(j)];
     joints[base + uint(j)].row0 = scale * (c * p.row0 + s * p.row2) + vec4(0.0, 0.0, 0.0, place.x);
     joints[base + uint(j)].row1 = scale * p.row1 + vec4(0.0, 0.0, 0.0, place.y);
