@@ -1,17 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Counting sort, pass 4, one thread per cell: agents of the cell by increasing index (so GPU
-// and CPU visit neighbours in one order and sum forces alike), and a copy of each agent's
-// position and velocity in that order for the neighbour scan: sorted[k] = (x, z, vx, vz).
+// and CPU visit neighbours in one order and sum forces alike). Pass 5 (avoidance_gather.comp)
+// then copies each agent's position and velocity into that order.
 #include "crowd_types.h"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = 1) readonly buffer Steer { vec4 steer[]; };
-layout(std430, binding = 2) readonly buffer Counts { uint counts[]; };
-layout(std430, binding = 3) readonly buffer Starts { uint starts[]; };
-layout(std430, binding = 4) buffer SortedIndex { uint sortedIndex[]; };
-layout(std430, binding = 5) writeonly buffer Sorted { vec4 sorted[]; };
+layout(std430, binding = 0) readonly buffer Counts { uint counts[]; };
+layout(std430, binding = 1) readonly buffer Starts { uint starts[]; };
+layout(std430, binding = 2) buffer SortedIndex { uint sortedIndex[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
 // Shell sort with Ciura's gaps (extended by x2.25) rather than plain insertion sort: the
@@ -23,12 +20,14 @@ const uint kGaps[11] = uint[11](7983u, 3548u, 1577u, 701u, 301u, 132u, 57u, 23u,
 void main() {
   uint c = gl_GlobalInvocationID.x;
   if (c >= push.cellCount) return;
-  uint first = starts[c];
   uint count = counts[c];
+  if (count < 2u) return;
+  uint first = starts[c];
   uint end = first + count;
-  for (uint g = 0u; g < 11u; ++g) {
+  uint g = 0u;
+  while (kGaps[g] >= count) ++g;  // kGaps ends with 1 < count
+  for (; g < 11u; ++g) {
     uint gap = kGaps[g];
-    if (gap >= count) continue;
     for (uint k = first + gap; k < end; ++k) {
       uint v = sortedIndex[k];
       uint j = k;
@@ -38,9 +37,5 @@ void main() {
       }
       sortedIndex[j] = v;
     }
-  }
-  for (uint k = first; k < end; ++k) {
-    uint i = sortedIndex[k];
-    sorted[k] = vec4(placement[i].xz, steer[i].xy);
   }
 }

@@ -54,8 +54,11 @@ bool collides(vec2 x, vec2 v, float horizon, float diameter2) {
 }
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= push.agentCount) return;
+  // Invocations walk the agents in grid order, so neighbouring lanes scan the same cells
+  // (coherent loops and caches; on lavapipe about twice as fast as agent order).
+  uint slot = gl_GlobalInvocationID.x;
+  if (slot >= push.agentCount) return;
+  uint i = sortedIndex[slot];
   vec4 goal = goals[i];
   if (goal.w == 0.0) {
     steer[i] = vec4(0.0);
@@ -98,7 +101,7 @@ void main() {
         uint end = first + counts[h];
         for (uint k = first; k < end; ++k) {
           vec4 other = sorted[k];
-          if (sortedIndex[k] == i || cellCoord(other.xy, push.invCellSize) != cell) continue;
+          if (k == slot || cellCoord(other.xy, push.invCellSize) != cell) continue;
           vec2 x = pos - other.xy;
           float dist2 = dot(x, x);
           if (dist2 >= sensing2) continue;

@@ -1,0 +1,80 @@
+#include "crowd/avoidance_bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/error.h"
+#include "core/math.h"
+#include "core/rng.h"
+#include "crowd/avoidance_jobs.h"
+#include "gpu/commands.h"
+#include "gpu/timestamps.h"
+
+namespace throng::crowd {
+namespace {
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+}  // namespace
+
+AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents, const AvoidanceParams& params,
+                                   int steps, float density) {
+  if (agents == 0 || steps < 1 || !(density > 0.0f)) fail("benchmark needs agents, steps and a positive density");
+  Crowd crowd;
+  crowd.resize(agents);
+  std::vector<glm::vec4> goals(agents), steer(agents);
+  Rng rng(7);
+  const float half = 0.5f * std::sqrt(float(agents) / density);
+  for (uint32_t i = 0; i < agents; ++i) {
+    glm::vec2 p(rng.uniform(-half, half), rng.uniform(-half, half));
+    float heading = rng.uniform(-kPi, kPi);
+    glm::vec2 dir(std::sin(heading), std::cos(heading));
+    crowd.placement[i] = glm::vec4(p.x, 0.0f, p.y, heading);
+    goals[i] = glm::vec4(p + 1.3f * dir, 2.0f, 1.0f);
+    steer[i] = glm::vec4(1.3f * dir, 1.3f, 0.0f);
+  }
+  AvoidancePrograms programs(context);
+  CrowdBuffers buffers = uploadCrowd(context, crowd);
+  SteerBuffers agentBuffers = uploadSteer(context, goals, steer);
+  GridBuffers grid = makeGridBuffers(context, agents, params.cellSize);
+  gpu::CommandPool pool(context);
+  VkCommandBuffer cmd = pool.allocate();
+  gpu::Fence fence(context);
+  gpu::TimestampPool timestamps(context, 3);
+  std::vector<double> gridMs, steerMs, totalMs;
+  const int warmup = 2;
+  for (int s = 0; s < warmup + steps; ++s) {
+    SteerFrame frame;
+    frame.dt = 0.05f;
+    frame.secondsLeft = 1.0f - 0.05f * float(s % 20);
+    frame.step = uint32_t(s);
+    GridJob gridJob{&buffers, &agentBuffers, &grid};
+    AvoidanceJob avoid{&buffers, &agentBuffers, &grid, params, frame};
+    AdvanceJob advance{&buffers, &agentBuffers, frame.dt};
+    timestamps.reset();
+    gpu::beginCommands(cmd);
+    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+    gridJob.record(cmd, programs);
+    timestamps.write(cmd);
+    gpu::computeToComputeBarrier(cmd);
+    avoid.record(cmd, programs);
+    timestamps.write(cmd);
+    gpu::computeToComputeBarrier(cmd);
+    advance.record(cmd, programs);
+    gpu::endCommands(cmd);
+    gpu::submit(context, cmd, fence.get());
+    fence.wait();
+    fence.reset();
+    if (s < warmup) continue;
+    std::vector<uint64_t> ticks = timestamps.fetch();
+    gridMs.push_back(timestamps.millisecondsBetween(ticks, 0, 1));
+    steerMs.push_back(timestamps.millisecondsBetween(ticks, 1, 2));
+    totalMs.push_back(timestamps.millisecondsBetween(ticks, 0, 2));
+  }
+  return {agents, median(gridMs), median(steerMs), median(totalMs), steps};
+}
+
+}  // namespace throng::crowd

@@ -1,0 +1,76 @@
+#pragma once
+// The grid, steering and kinematic-advance passes as jobs (like synth/synth_jobs.h): named
+// inputs and outputs, validate() listing what is missing or inconsistent, record() that
+// checks and records. Per step: GridJob, barrier, AvoidanceJob, barrier, then either
+// AdvanceJob (kinematic, `throng crowd`) or the synthesis RootMotionJob (render path), which
+// moves each character along the heading the avoidance job wrote. CPU twins: avoidance.h.
+#include <span>
+#include <string>
+#include <vector>
+
+#include "crowd/avoidance.h"
+#include "crowd/crowd.h"
+#include "gpu/program.h"
+
+namespace throng::crowd {
+
+struct AvoidancePrograms {
+  gpu::ComputeProgram count, scanBlocks, scanSums, scanAdd, scatter, cellSort, gather, steer, advance;
+  explicit AvoidancePrograms(const gpu::Context& context);
+};
+
+// The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
+struct GridBuffers {
+  gpu::Buffer cellOf, counts, starts, blockSums, cursor, sortedIndex, sorted;
+  uint32_t agentCapacity = 0;
+  uint32_t cellCount = 0;
+  float cellSize = 0.0f;
+};
+GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, float cellSize);
+
+// Per-agent steering arrays beside CrowdBuffers: goal (target x, z, max speed, active) and
+// steer (vx, vz, speed, flags).
+struct SteerBuffers {
+  gpu::Buffer goals;
+  gpu::Buffer steer;
+  uint32_t count = 0;
+};
+SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4> goals,
+                         std::span<const glm::vec4> steer);
+
+// Counting sort of the agents into the hashed grid: clear, count, scan (3 passes), scatter,
+// per-cell sort by agent index, copy of (x, z, vx, vz) in that order. Barriers between its
+// own passes.
+struct GridJob {
+  const CrowdBuffers* crowd = nullptr;   // input: placement
+  const SteerBuffers* agents = nullptr;  // input: steer (velocities copied into the grid)
+  const GridBuffers* grid = nullptr;     // output
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
+};
+
+// Path-vector steering + avoidance: reads goals, the grid and each agent's previous velocity;
+// writes placement.w (heading), steer and motion.z (wTarget).
+struct AvoidanceJob {
+  const CrowdBuffers* crowd = nullptr;   // input/output: placement (heading), motion (wTarget)
+  const SteerBuffers* agents = nullptr;  // input: goals; input/output: steer
+  const GridBuffers* grid = nullptr;     // input: built this step by GridJob
+  AvoidanceParams params;
+  SteerFrame frame;
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
+};
+
+// position += velocity · dt for active agents (twin: advanceCpu).
+struct AdvanceJob {
+  const CrowdBuffers* crowd = nullptr;   // input/output: placement
+  const SteerBuffers* agents = nullptr;  // input: steer, goals
+  float dt = 0.0f;
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
+};
+
+}  // namespace throng::crowd

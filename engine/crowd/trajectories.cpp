@@ -1,0 +1,174 @@
+#include "crowd/trajectories.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "core/error.h"
+#include "core/file_io.h"
+
+namespace throng::crowd {
+namespace {
+
+struct Sample {
+  long frame;
+  int ped;
+  glm::vec2 position;
+  size_t line;
+};
+
+std::vector<std::string_view> splitFields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > start) fields.push_back(line.substr(start, i - start));
+  }
+  return fields;
+}
+
+bool parseNumber(std::string_view s, double& value) {
+  if (!s.empty() && s[0] == '+') s.remove_prefix(1);  // from_chars rejects a leading '+'
+  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  return ec == std::errc() && end == s.data() + s.size() && std::isfinite(value);
+}
+
+const char* columnsText(TrajectoryFormat format) {
+  return format == TrajectoryFormat::EthObsmat ? "8 numbers 'frame ped x z y vx vz vy' (ETH obsmat)"
+                                               : "4 numbers 'frame ped_id x y'";
+}
+
+class LineParser {
+ public:
+  LineParser(const std::string& source, TrajectoryFormat format) : source_(source), format_(format) {}
+
+  Sample parse(std::string_view text, size_t line) const {
+    std::vector<std::string_view> fields = splitFields(text);
+    const size_t want = format_ == TrajectoryFormat::EthObsmat ? 8 : 4;
+    if (fields.size() != want)
+      fail(source_, ":", line, ": expected ", columnsText(format_), ", got ", fields.size(), " field",
+           fields.size() == 1 ? "" : "s");
+    double v[8] = {};
+    for (size_t k = 0; k < want; ++k)
+      if (!parseNumber(fields[k], v[k]))
+        fail(source_, ":", line, ": field ", k + 1, " '", fields[k], "' is not a finite number (expected ",
+             columnsText(format_), ")");
+    Sample s{integer(v[0], "frame number", line), int(integer(v[1], "person id", line)), {}, line};
+    if (s.frame < 0) fail(source_, ":", line, ": frame number ", s.frame, " is negative");
+    // obsmat: x, z (height, unused), y; the ground plane is (x, y).
+    s.position = format_ == TrajectoryFormat::EthObsmat ? glm::vec2(v[2], v[4]) : glm::vec2(v[2], v[3]);
+    if (!std::isfinite(s.position.x) || !std::isfinite(s.position.y) || std::abs(s.position.x) > 1e6f ||
+        std::abs(s.position.y) > 1e6f)
+      fail(source_, ":", line, ": position (", v[2], ", ", v[format_ == TrajectoryFormat::EthObsmat ? 4 : 3],
+           ") is not within 1e6 metres");
+    return s;
+  }
+
+ private:
+  long integer(double value, const char* what, size_t line) const {
+    if (value != std::floor(value) || std::abs(value) > 1e9)
+      fail(source_, ":", line, ": ", what, " ", value, " is not an integer (expected ", columnsText(format_), ")");
+    return long(value);
+  }
+
+  const std::string& source_;
+  TrajectoryFormat format_;
+};
+
+std::vector<std::pair<std::string_view, size_t>> dataLines(std::string_view text) {
+  std::vector<std::pair<std::string_view, size_t>> lines;
+  size_t number = 0, pos = 0;
+  while (pos <= text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    size_t first = line.find_first_not_of(" \t");
+    if (first != std::string_view::npos && line[first] != '#') lines.emplace_back(line, number);
+    if (end == text.size()) break;
+    pos = end + 1;
+  }
+  return lines;
+}
+
+TrajectoryFormat detectFormat(const std::string& source, std::string_view firstLine, size_t line) {
+  if (source.find("obsmat") != std::string::npos) return TrajectoryFormat::EthObsmat;
+  size_t fields = splitFields(firstLine).size();
+  if (fields == 4) return TrajectoryFormat::FramePedXY;
+  if (fields == 8) return TrajectoryFormat::EthObsmat;
+  fail(source, ":", line, ": expected 4 numbers 'frame ped_id x y' or 8 (ETH obsmat 'frame ped x z y vx vz vy'), got ",
+       fields, " fields");
+}
+
+// The most common difference between consecutive annotated frames of one person.
+int modalFrameStep(const std::map<int, std::vector<Sample>>& byPerson) {
+  std::map<long, size_t> histogram;
+  for (const auto& [ped, samples] : byPerson)
+    for (size_t k = 1; k < samples.size(); ++k) ++histogram[samples[k].frame - samples[k - 1].frame];
+  long best = 1;
+  size_t bestCount = 0;
+  for (auto [step, count] : histogram)
+    if (count > bestCount) best = step, bestCount = count;
+  return int(best);
+}
+
+}  // namespace
+
+float defaultSecondsPerStep(const std::string& source) {
+  std::string name = std::filesystem::path(source).filename().string();
+  return name.find("biwi_eth") != std::string::npos ? 0.667f : 0.4f;
+}
+
+float Trajectories::startTime() const {
+  float t = std::numeric_limits<float>::infinity();
+  for (const Track& track : tracks)
+    if (!track.points.empty()) t = std::min(t, track.points.front().time);
+  return std::isfinite(t) ? t : 0.0f;
+}
+
+Trajectories parseTrajectories(std::string_view text, const std::string& source, const TrajectoryOptions& options) {
+  if (!(options.secondsPerStep >= 0.0f) || options.secondsPerStep > 60.0f)
+    fail(source, ": seconds per step ", options.secondsPerStep, ": expected 0 (by dataset) or a positive time up to 60 s");
+  const auto lines = dataLines(text);
+  if (lines.empty()) fail(source, ": no trajectory samples (expected lines of 'frame ped_id x y' or ETH obsmat)");
+  Trajectories out;
+  out.source = source;
+  out.format = options.format != TrajectoryFormat::Auto ? options.format
+                                                        : detectFormat(source, lines[0].first, lines[0].second);
+  LineParser parser(source, out.format);
+  std::map<int, std::vector<Sample>> byPerson;
+  for (auto [line, number] : lines) {
+    Sample s = parser.parse(line, number);
+    byPerson[s.ped].push_back(s);
+  }
+  out.sampleCount = lines.size();
+  for (auto& [ped, samples] : byPerson) {
+    std::stable_sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.frame < b.frame; });
+    for (size_t k = 1; k < samples.size(); ++k)
+      if (samples[k].frame == samples[k - 1].frame)
+        fail(source, ":", std::max(samples[k].line, samples[k - 1].line), ": person ", ped, " appears twice in frame ",
+             samples[k].frame, " (first on line ", std::min(samples[k].line, samples[k - 1].line),
+             "); expected one position per person per frame");
+  }
+  out.frameStep = modalFrameStep(byPerson);
+  out.secondsPerStep = options.secondsPerStep > 0.0f ? options.secondsPerStep : defaultSecondsPerStep(source);
+  out.secondsPerFrame = out.secondsPerStep / float(out.frameStep);
+  for (const auto& [ped, samples] : byPerson) {
+    Track track;
+    track.id = ped;
+    for (const Sample& s : samples) track.points.push_back({float(double(s.frame) * out.secondsPerFrame), s.position});
+    out.tracks.push_back(std::move(track));
+  }
+  return out;
+}
+
+Trajectories loadTrajectories(const std::filesystem::path& path, const TrajectoryOptions& options) {
+  return parseTrajectories(readTextFile(path), path.string(), options);
+}
+
+}  // namespace throng::crowd

@@ -1,0 +1,47 @@
+#pragma once
+// Storyboard → crowd (issue 6, part 3). Each decoded glyph becomes an agent:
+//   * position: the glyph's centre pixel × cellSize metres, the storyboard centred on the
+//     origin, image x → world +x and image y (down) → world +z (seen from above with −z up the
+//     screen the picture is not mirrored), plus a uniform jitter of ±jitter metres;
+//   * heading: the glyph's (Top faces −z, Down +z, Right +x, Left −x; diagonals between);
+//   * state → a speed range (strolling, hurried), a speed drawn in it, and w from the clip
+//     pair's root speeds;
+//   * action → Crowd::clipSet (walk 0, run 1, talk 2, jump 3). Only one clip pair is animated
+//     today: every clip set plays pair 0 until the renderer holds one pair per set;
+//   * group → tint index (a side array, so Crowd stays what the synthesis passes read).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "crowd/crowd.h"
+#include "crowd/path_vectors.h"
+#include "storyboard/codec.h"
+
+namespace throng::storyboard {
+
+struct PlacementOptions {
+  float cellSize = 0.5f;  // metres per storyboard pixel
+  float jitter = 0.1f;    // ± metres added to x and z
+  uint64_t seed = 1;
+  // Speed ranges per State (m/s): strolling people in the ETH/UCY sets walk 0.4–1.2 m/s.
+  std::array<crowd::SpeedRange, kStateCount> speeds = {{{0.4f, 1.2f}, {1.2f, 2.2f}}};
+  float slowSpeed = 0.0f;  // root speeds of the clip pair (crowd::clipRootSpeed); w = 0 when equal
+  float fastSpeed = 0.0f;
+  float minScale = 0.92f, maxScale = 1.08f;
+};
+
+struct Placement {
+  crowd::Crowd crowd;
+  std::vector<uint32_t> tint;                    // per agent: group number
+  std::vector<crowd::SpeedRange> speedRange;     // per agent: its state's range
+  std::vector<float> speed;                      // per agent: the desired speed drawn in it
+};
+
+// World heading (radians, 0 faces +z, +π/2 faces +x) of a glyph heading.
+float headingAngle(Heading heading);
+uint32_t clipSetOf(Action action);
+
+// Throws Error for a non-positive cell size, negative jitter or an empty/unordered range.
+Placement placeStoryboard(const Storyboard& storyboard, const PlacementOptions& options);
+
+}  // namespace throng::storyboard

@@ -1,0 +1,272 @@
+// throng crowd simulate|metrics|bench: storyboard crowds that follow path vectors taken from
+// tracked people, with GPU collision avoidance, measured against the real trajectories.
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "anim/default_clips.h"
+#include "command.h"
+#include "core/error.h"
+#include "crowd/avoidance_bench.h"
+#include "crowd/crowd_sim.h"
+#include "crowd/trajectories.h"
+#include "gpu/context.h"
+#include "storyboard/codec.h"
+#include "storyboard/legend.h"
+#include "storyboard/storyboard_placement.h"
+
+namespace throng::tools {
+namespace {
+namespace sb = throng::storyboard;
+
+// Options shared by simulate and metrics.
+struct RunOptions {
+  std::vector<std::string> policies{"ttc"};
+  float seconds = 20.0f;
+  float dt = 0.05f;
+  float radius = 0.3f;
+  float stepTime = 0.0f;  // seconds per annotation step; 0: by dataset
+  uint64_t seed = 1;
+  bool cpu = false, json = false;
+  std::string device;
+
+  void add(CLI::App* cmd, const char* policyHelp) {
+    cmd->add_option("--policy", policies, policyHelp);
+    cmd->add_option("--dt", dt, "Simulation step in seconds, 1/n of a second (default 0.05)");
+    cmd->add_option("--radius", radius, "Safe radius of each agent in metres (default 0.3)");
+    cmd->add_option("--step-time", stepTime, "Seconds per annotation step of the trajectories (default: 0.667 for biwi_eth, else 0.4)");
+    cmd->add_option("--seed", seed, "Random seed (placement jitter, source choice, the rule's turns)");
+    cmd->add_flag("--cpu", cpu, "Run the CPU twin instead of the GPU passes");
+    cmd->add_option("--device", device, "Vulkan device by index or name");
+    cmd->add_flag("--json", json, "Print the results as JSON");
+  }
+
+  std::vector<crowd::SteerPolicy> parsedPolicies() const {
+    std::vector<crowd::SteerPolicy> out;
+    for (const std::string& name : policies) {
+      if (name == "all") {
+        out.insert(out.end(), {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc});
+        continue;
+      }
+      std::optional<crowd::SteerPolicy> p = crowd::parseSteerPolicy(name);
+      if (!p) fail("--policy '", name, "': expected none, rule, ttc or all");
+      out.push_back(*p);
+    }
+    return out;
+  }
+
+  crowd::SimulationOptions simulation(crowd::SteerPolicy policy) const {
+    if (!(seconds >= 1.0f && seconds <= 100000.0f)) fail("--seconds ", seconds, ": expected 1..100000");
+    crowd::SimulationOptions o;
+    o.avoidance.policy = policy;
+    o.avoidance.radius = radius;
+    o.avoidance.seed = uint32_t(seed);
+    o.dt = dt;
+    o.seconds = seconds;
+    return o;
+  }
+
+  crowd::TrajectoryOptions trajectoryOptions() const {
+    crowd::TrajectoryOptions o;
+    o.secondsPerStep = stepTime;
+    return o;
+  }
+};
+
+std::unique_ptr<gpu::Context> makeContext(const RunOptions& o) {
+  if (o.cpu) return nullptr;
+  gpu::ContextOptions options;
+  options.device = o.device;
+  options.quiet = o.json;
+  return std::make_unique<gpu::Context>(options);
+}
+
+nlohmann::json runJson(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
+  nlohmann::json j = nlohmann::json::parse(crowd::metricsJson(r.metrics));
+  j["policy"] = std::string(crowd::steerPolicyName(policy));
+  j["steps"] = r.steps;
+  j["wall_seconds"] = r.wallSeconds;
+  return j;
+}
+
+void printRun(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
+  std::printf("%s", crowd::formatMetrics(concat("policy ", crowd::steerPolicyName(policy)), r.metrics).c_str());
+  std::printf("  %u steps in %.2f s wall\n", r.steps, r.wallSeconds);
+}
+
+struct SimulateArgs {
+  std::string storyboard, trajectories, legend;
+  float cell = 0.5f, jitter = 0.1f;
+  RunOptions run;
+};
+
+void runSimulate(const SimulateArgs& a) {
+  const sb::Legend legend = a.legend.empty() ? sb::Legend{} : sb::loadLegend(a.legend);
+  const sb::Storyboard board = sb::readStoryboard(a.storyboard, legend, false);
+  if (board.glyphs.empty()) fail(a.storyboard, ": no valid glyph, so no agent to simulate");
+  const crowd::Trajectories tracks = crowd::loadTrajectories(a.trajectories, a.run.trajectoryOptions());
+  const std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(tracks);
+
+  const anim::ClipPair clips = anim::defaultRunPair();
+  const anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  sb::PlacementOptions placeOptions;
+  placeOptions.cellSize = a.cell;
+  placeOptions.jitter = a.jitter;
+  placeOptions.seed = a.run.seed;
+  placeOptions.slowSpeed = crowd::clipRootSpeed(pair.slow);
+  placeOptions.fastSpeed = crowd::clipRootSpeed(pair.fast);
+  const sb::Placement placed = sb::placeStoryboard(board, placeOptions);
+
+  crowd::SimulationSetup setup;
+  setup.crowd = placed.crowd;
+  const std::vector<uint32_t> assigned = crowd::assignSources(sources, placed.speedRange, a.run.seed);
+  std::vector<float> maxSpeed;
+  for (const crowd::SpeedRange& r : placed.speedRange) maxSpeed.push_back(std::max(1.0f, 1.25f * r.max));
+  setup.paths = crowd::followSources(setup.crowd, sources, assigned, maxSpeed);
+
+  std::unique_ptr<gpu::Context> context = makeContext(a.run);
+  nlohmann::json doc;
+  doc["storyboard"] = a.storyboard;
+  doc["trajectories"] = a.trajectories;
+  doc["agents"] = board.glyphs.size();
+  doc["invalid_glyphs"] = board.invalid.size();
+  doc["sources"] = sources.size();
+  doc["device"] = context ? context->info().name : std::string("cpu twin");
+  if (!a.run.json)
+    std::printf("%s: %zu agents (%zu invalid glyphs skipped) following %zu tracked people of %s, on %s\n",
+                a.storyboard.c_str(), board.glyphs.size(), board.invalid.size(), sources.size(), a.trajectories.c_str(),
+                doc["device"].get<std::string>().c_str());
+  for (crowd::SteerPolicy policy : a.run.parsedPolicies()) {
+    crowd::SimulationOptions options = a.run.simulation(policy);
+    options.slowSpeed = placeOptions.slowSpeed;
+    options.fastSpeed = placeOptions.fastSpeed;
+    crowd::SimulationResult result = crowd::simulateCrowd(context.get(), setup, options);
+    if (a.run.json) doc["runs"].push_back(runJson(policy, result));
+    else printRun(policy, result);
+  }
+  if (a.run.json) std::printf("%s\n", doc.dump(2).c_str());
+}
+
+void addSimulate(CLI::App& parent) {
+  auto* cmd = parent.add_subcommand("simulate", "Run a storyboard crowd along path vectors from tracked people");
+  auto args = std::make_shared<SimulateArgs>();
+  cmd->add_option("--storyboard", args->storyboard, "Storyboard PNG (glyphs)")->required();
+  cmd->add_option("--trajectories", args->trajectories, "Tracked people: 'frame ped x y' text or ETH obsmat.txt")->required();
+  cmd->add_option("--legend", args->legend, "Colour legend JSON (default: DESIGN.md's colours)");
+  cmd->add_option("--seconds", args->run.seconds, "Seconds simulated (default 20)");
+  cmd->add_option("--cell", args->cell, "Metres per storyboard pixel (default 0.5)");
+  cmd->add_option("--jitter", args->jitter, "Random offset of each agent, +- metres (default 0.1)");
+  args->run.add(cmd, "Avoidance: none, rule (published), ttc (anticipatory) or all (default ttc)");
+  cmd->callback([args] { runSimulate(*args); });
+}
+
+struct MetricsArgs {
+  std::vector<std::string> trajectories;
+  RunOptions run;
+};
+
+void runMetrics(MetricsArgs a) {
+  std::unique_ptr<gpu::Context> context = makeContext(a.run);
+  nlohmann::json doc;
+  doc["device"] = context ? context->info().name : std::string("cpu twin");
+  for (const std::string& file : a.trajectories) {
+    const crowd::Trajectories tracks = crowd::loadTrajectories(file, a.run.trajectoryOptions());
+    const std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(tracks);
+    crowd::SimulationSetup setup = crowd::replaySetup(sources);
+    uint32_t span = 0;
+    for (uint32_t last : setup.paths.lastSecond) span = std::max(span, last);
+    const crowd::CrowdMetrics real = crowd::trajectoryMetrics(tracks, a.run.radius);
+    nlohmann::json entry;
+    entry["file"] = file;
+    entry["people"] = tracks.tracks.size();
+    entry["sources"] = sources.size();
+    entry["frame_step"] = tracks.frameStep;
+    entry["seconds_per_step"] = tracks.secondsPerStep;
+    entry["real"] = nlohmann::json::parse(crowd::metricsJson(real));
+    if (!a.run.json) {
+      std::printf("%s: %zu people (%zu span 2+ s), frame step %d = %.3f s, replay of %u s on %s\n", file.c_str(),
+                  tracks.tracks.size(), sources.size(), tracks.frameStep, tracks.secondsPerStep, span,
+                  doc["device"].get<std::string>().c_str());
+      std::printf("%s", crowd::formatMetrics("real people", real).c_str());
+    }
+    for (crowd::SteerPolicy policy : a.run.parsedPolicies()) {
+      crowd::SimulationOptions options = a.run.simulation(policy);
+      options.seconds = a.run.seconds > 0.0f ? std::min(float(span), a.run.seconds) : float(span);
+      crowd::SimulationResult result = crowd::simulateCrowd(context.get(), setup, options);
+      if (a.run.json) entry["runs"].push_back(runJson(policy, result));
+      else printRun(policy, result);
+    }
+    doc["files"].push_back(entry);
+  }
+  if (a.run.json) std::printf("%s\n", doc.dump(2).c_str());
+}
+
+void addMetrics(CLI::App& parent) {
+  auto* cmd = parent.add_subcommand(
+      "metrics", "Replay tracked people as agents with each avoidance policy and compare with the real people");
+  auto args = std::make_shared<MetricsArgs>();
+  args->run.policies = {"all"};
+  args->run.seconds = 0.0f;
+  cmd->add_option("--trajectories", args->trajectories, "Tracked people files ('frame ped x y' or obsmat.txt)")->required();
+  cmd->add_option("--seconds", args->run.seconds, "Seconds replayed (default: the whole file)");
+  args->run.add(cmd, "Avoidance policies: none, rule, ttc or all (default all)");
+  cmd->callback([args] {
+    if (args->run.seconds == 0.0f) args->run.seconds = 100000.0f;
+    runMetrics(*args);
+  });
+}
+
+struct BenchArgs {
+  std::vector<uint32_t> agents{10000, 100000};
+  std::vector<std::string> policies{"rule", "ttc"};
+  int steps = 10;
+  float density = 0.5f;
+  std::string device;
+};
+
+void addBench(CLI::App& parent) {
+  auto* cmd = parent.add_subcommand("bench", "GPU time of one steering step (grid + avoidance)");
+  auto args = std::make_shared<BenchArgs>();
+  cmd->add_option("--agents", args->agents, "Crowd sizes (default 10000 100000)");
+  cmd->add_option("--policy", args->policies, "Policies (default rule ttc)");
+  cmd->add_option("--steps", args->steps, "Measured steps per row (median, default 10)");
+  cmd->add_option("--density", args->density, "Agents per square metre (default 0.5)");
+  cmd->add_option("--device", args->device, "Vulkan device by index or name");
+  cmd->callback([args] {
+    RunOptions parse;
+    parse.policies = args->policies;
+    std::vector<crowd::SteerPolicy> policies = parse.parsedPolicies();
+    for (uint32_t n : args->agents)
+      if (n == 0 || n > 1000000) fail("--agents: each count must be 1..1000000, got ", n);
+    gpu::ContextOptions options;
+    options.device = args->device;
+    gpu::Context context(options);
+    std::printf("device: %s (%s)\n%-8s %9s %10s %10s %10s\n", context.info().name.c_str(),
+                context.info().driver.c_str(), "policy", "agents", "grid ms", "steer ms", "total ms");
+    for (crowd::SteerPolicy policy : policies)
+      for (uint32_t n : args->agents) {
+        crowd::AvoidanceParams params;
+        params.policy = policy;
+        crowd::AvoidanceTiming t = crowd::benchmarkAvoidance(context, n, params, args->steps, args->density);
+        std::printf("%-8s %9u %10.3f %10.3f %10.3f\n", std::string(crowd::steerPolicyName(policy)).c_str(), n,
+                    t.gridMs, t.steerMs, t.totalMs);
+        std::fflush(stdout);
+      }
+  });
+}
+
+void addCrowdCommands(CLI::App& app, int& /*exitCode*/) {
+  auto* crowd = app.add_subcommand("crowd", "Storyboard crowds on path vectors with collision avoidance");
+  crowd->require_subcommand(1);
+  addSimulate(*crowd);
+  addMetrics(*crowd);
+  addBench(*crowd);
+}
+
+const CommandRegistration kRegistration("crowd", addCrowdCommands);
+}  // namespace
+}  // namespace throng::tools
