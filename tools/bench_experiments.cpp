@@ -1,6 +1,8 @@
 #include "bench_experiments.h"
 
+#include <bit>
 #include <chrono>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -12,6 +14,8 @@
 #include "gpu/commands.h"
 #include "gpu/timestamps.h"
 #include "stats.h"
+#include "render/camera.h"
+#include "synth/cpu_synth.h"
 #include "synth/crowd_synth.h"
 
 namespace throng::tools {
@@ -82,6 +86,73 @@ bool plotCsv(const std::filesystem::path& csv, const std::filesystem::path& png,
   if (ok) std::filesystem::rename(tmp, png);
   else std::filesystem::remove(tmp);
   return ok;
+}
+
+void runScalingExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,
+                          const anim::MotionPair& pair, const anim::Skeleton& skeleton, const ExperimentOptions& o) {
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  std::string csv = "characters,cpu_ms,gpu_full_ms,gpu_lod_ms,active_joint_share\n";
+  std::printf("Fig. 10: synthesis time vs N (CPU %u threads, GPU all joints, GPU LOD with an orbiting camera)\n",
+              threads);
+  std::printf("%10s %10s %12s %12s %14s\n", "characters", "cpu ms", "gpu full ms", "gpu lod ms", "active joints");
+  for (uint32_t n : o.counts) {
+    crowd::ScenarioOptions scenario;
+    scenario.characters = n;
+    scenario.seed = 3;
+    crowd::Crowd crowd = crowd::makeScenario(scenario);
+    std::vector<synth::JointMatrix> cpuJoints(size_t(n) * pair.jointCount());
+    std::vector<double> cpuMs, fullMs, lodMs;
+    for (int f = 0; f < std::max(3, o.frames / 4); ++f) {
+      auto start = std::chrono::steady_clock::now();
+      synth::stepCrowdCpu(pair, crowd, 1.0f / 30.0f, threads);
+      synth::poseCrowdCpu(pair, crowd, cpuJoints, threads);
+      cpuMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    synth::CrowdSynth full = synth::makeCrowdSynth(context, pair, crowd);
+    synth::CrowdSynth lod = synth::makeCrowdSynth(context, pair, crowd, {}, {true, {}, &skeleton});
+    const float extent = crowd::scenarioExtent(scenario);
+    gpu::CommandPool pool(context);
+    VkCommandBuffer cmd = pool.allocate();
+    gpu::Fence fence(context);
+    gpu::TimestampPool timestamps(context, 4);
+    double activeShare = 0.0;
+    for (int f = 0; f < o.frames; ++f) {
+      // Orbit: a full turn over the run, height and distance of the default wide camera.
+      float angle = 6.2831853f * float(f) / float(o.frames);
+      render::Camera camera = render::cameraPreset("wide", extent);
+      glm::vec3 offset = camera.eye - camera.target;
+      float radius = glm::length(glm::vec2(offset.x, offset.z));
+      camera.eye = camera.target + glm::vec3(radius * std::sin(angle), offset.y, -radius * std::cos(angle));
+      synth::CoverageCamera lodCamera = synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane);
+      timestamps.reset();
+      gpu::beginCommands(cmd);
+      timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+      synth::recordSynthesis(cmd, programs, full, 1.0f / 30.0f, context.info().maxStorageBufferRange);
+      timestamps.write(cmd);
+      synth::recordSynthesis(cmd, programs, lod, 1.0f / 30.0f, context.info().maxStorageBufferRange, {}, &lodCamera);
+      timestamps.write(cmd);
+      gpu::endCommands(cmd);
+      gpu::submit(context, cmd, fence.get());
+      fence.wait();
+      fence.reset();
+      if (f < 2) continue;
+      std::vector<uint64_t> ticks = timestamps.fetch();
+      fullMs.push_back(timestamps.millisecondsBetween(ticks, 0, 1));
+      lodMs.push_back(timestamps.millisecondsBetween(ticks, 1, 2));
+      if (f == o.frames - 1) {
+        auto masks = gpu::readback<synth::CoverageMask>(context, lod.masks, n);
+        size_t active = 0;
+        for (const synth::CoverageMask& m : masks) active += size_t(std::popcount(synth::maskBits(m)));
+        activeShare = double(active) / (double(n) * pair.jointCount());
+      }
+    }
+    std::printf("%10u %10.3f %12.3f %12.3f %13.1f%%\n", n, median(cpuMs), median(fullMs), median(lodMs),
+                100.0 * activeShare);
+    csv += concat(n, ",", median(cpuMs), ",", median(fullMs), ",", median(lodMs), ",", activeShare, "\n");
+  }
+  writeTextFileAtomic(o.outDir / "time_vs_n.csv", csv);
+  plotCsv(o.outDir / "time_vs_n.csv", o.outDir / "time_vs_n.png", "Synthesis time per frame vs crowd size",
+          "characters", "ms per frame (median)", {"CPU twin", "GPU all joints", "GPU coverage LOD"}, true);
 }
 
 void runCacheExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,

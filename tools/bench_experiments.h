@@ -18,6 +18,13 @@ struct ExperimentOptions {
   std::filesystem::path outDir;
 };
 
+// Fig. 10: synthesis time vs N for the CPU twin (all threads), the GPU with all joints and the GPU
+// with coverage LOD under a camera orbiting the crowd (levels change every frame). Writes
+// time_vs_n.csv (+ .png).
+void runScalingExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,
+                          const anim::MotionPair& pair, const anim::Skeleton& skeleton,
+                          const ExperimentOptions& options);
+
 // Fig. 11: synthesis time with and without the motion cache as N grows, speeds changing every
 // 5 s. Writes cache_vs_n.csv (+ .png).
 void runCacheExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,

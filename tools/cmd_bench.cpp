@@ -184,6 +184,7 @@ void runBench(BenchOptions& o) {
     experiment.counts = o.counts;
     experiment.outDir = o.experiments;
     if (o.quick) experiment.frames = 8;
+    runScalingExperiment(context, programs, pair, clips.slow.skeleton, experiment);
     runCacheExperiment(context, programs, pair, experiment);
     runHitRateExperiment(context, programs, pair, experiment);
   }

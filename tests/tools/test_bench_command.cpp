@@ -30,6 +30,7 @@ TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
     CHECK(variants.count(v) == 1);
   CHECK(doc["jointsPerCharacter"].get<int>() == 25);
   CHECK(std::filesystem::exists(dir / "experiments" / "cache_vs_n.csv"));
+  CHECK(readTextFile(dir / "experiments" / "time_vs_n.csv").rfind("characters,cpu_ms,gpu_full_ms,gpu_lod_ms", 0) == 0);
   std::string csv = readTextFile(dir / "experiments" / "hit_rate_vs_bucket.csv");
   CHECK(csv.rfind("bucket_width,hit_rate", 0) == 0);
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 7);  // header + 6 widths
