@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
 #include "core/math.h"
 #include "core/rng.h"
 
@@ -18,7 +19,7 @@ anim::MotionPair syntheticPair(int joints, int slowFrames, int fastFrames, uint3
     clip.frameTime = 1.0f / 30.0f;
     for (int j = 0; j < joints; ++j) {
       anim::Joint joint;
-      joint.name = "j" + std::to_string(j);
+      joint.name = concat("joint", j);  // (GCC 12 warns falsely on "j" + std::to_string(j))
       joint.parent = parents[j];
       joint.offset = offsets[j];
       clip.skeleton.joints.push_back(joint);
