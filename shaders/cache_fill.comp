@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_KHR_shader_subgroup_vote : require
-// Motion cache, step 3 (one invocation per slot × segment): synthesize the character-space pose
-// of every freshly inserted entry at its bucket's speed, once for all characters that share it.
+// Motion cache, step 3 (an indirect dispatch, one invocation per fresh slot × segment): synthesize
+// the character-space pose of every entry inserted this frame at its bucket's speed, once for
+// all characters that share it.
 #include "shared_types.h"
 #include "motion_common.glsl"
 #include "cache_common.glsl"
@@ -14,7 +15,7 @@ layout(std430, binding = 1) readonly buffer FastMotion { vec4 fastMotion[]; };
 layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = 7) readonly buffer SlotBucket { int slotBucket[]; };
-layout(std430, binding = 8) readonly buffer Fresh { uint fresh[]; };
+layout(std430, binding = 8) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
 layout(std430, binding = 9) readonly buffer SegmentFrames { ivec2 segmentFrames[]; };
 layout(std430, binding = 10) writeonly buffer CacheData { JointMatrix joints[]; };
 layout(push_constant) uniform Push { CachePush push; };
@@ -23,10 +24,10 @@ layout(push_constant) uniform Push { CachePush push; };
 
 void main() {
   uint id = gl_GlobalInvocationID.x;
-  if (id >= push.slotCount * push.segmentCount) return;
-  uint slot = id / push.segmentCount, segment = id % push.segmentCount;
+  if (id >= freshSlots[0] * push.segmentCount) return;
+  uint slot = freshSlots[1u + id / push.segmentCount], segment = id % push.segmentCount;
   ivec2 frames = segmentFrames[segment];
-  if (fresh[slot] == 0u || frames.x < 0) return;
+  if (frames.x < 0) return;
   float w = bucketSpeed(uint(slotBucket[slot]), push.bucketWidth);
   uint base = (slot * push.segmentCount + segment) * uint(kJointCount);
   composePose(base, frames.x * 2 * kJointCount, frames.y * 2 * kJointCount, makeSlerpWeights(w), w,

@@ -11,9 +11,14 @@ layout(std430, binding = 1) buffer Counters { CacheCounters counters; };
 layout(std430, binding = 2) buffer Requested { uint requested[]; };
 layout(std430, binding = 3) buffer BucketSlot { int bucketSlot[]; };
 layout(std430, binding = 4) buffer SlotBucket { int slotBucket[]; };
-layout(std430, binding = 5) buffer Fresh { uint fresh[]; };
+// The slots inserted this frame and the indirect dispatch that fills exactly those:
+// freshSlots[0] = count, freshSlots[1 …] = slots; fillArgs = VkDispatchIndirectCommand.
+layout(std430, binding = 5) buffer FreshSlots { uint freshSlots[]; };
+layout(std430, binding = 8) writeonly buffer FillArgs { uint fillArgs[]; };
+layout(push_constant) uniform Push { CachePush push; };
 
 void main() {
+  uint fresh = 0u;
   for (uint b = 0u; b < counters.bucketCount; ++b) {
     if (requested[b] == 0u) continue;
     requested[b] = 0u;
@@ -33,7 +38,14 @@ void main() {
     }
     bucketSlot[b] = int(slot);
     slotBucket[slot] = int(b);
-    fresh[slot] = 1u;
+    freshSlots[1u + fresh] = slot;
+    fresh += 1u;
     counters.head = (slot + 1u) % counters.capacity;
   }
+  // A slot refilled twice in one frame (more misses than capacity) is listed twice; both fills
+  // write the same entry for its final bucket.
+  freshSlots[0] = fresh;
+  fillArgs[0] = (fresh * push.segmentCount + 63u) / 64u;
+  fillArgs[1] = 1u;
+  fillArgs[2] = 1u;
 }

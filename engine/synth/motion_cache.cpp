@@ -71,7 +71,9 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
   cache.requested = filled<uint32_t>(context, cache.bucketCount, 0u);
   cache.bucketSlot = filled<int32_t>(context, cache.bucketCount, -1);
   cache.slotBucket = filled<int32_t>(context, cache.capacity, -1);
-  cache.fresh = filled<uint32_t>(context, cache.capacity, 0u);
+  // Up to one entry per requested bucket is inserted in a frame, so bucketCount bounds the list.
+  cache.freshSlots = filled<uint32_t>(context, size_t(cache.bucketCount) + 1, 0u);
+  cache.fillArgs = filled<uint32_t>(context, 3, 0u, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
   cache.data = gpu::Buffer(context, std::max<uint64_t>(16 * 48, uint64_t(cache.capacity) * cache.entryBytes),
                            gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   cache.segmentFrames = gpu::makeStorageBuffer<glm::ivec2>(context, segments);

@@ -50,7 +50,8 @@ struct GpuMotionCache {
   gpu::Buffer requested;      // uint per bucket
   gpu::Buffer bucketSlot;     // int per bucket, −1 when not resident
   gpu::Buffer slotBucket;     // int per slot, −1 when empty
-  gpu::Buffer fresh;          // uint per slot: inserted this frame, to be synthesized
+  gpu::Buffer freshSlots;     // [0] count, then the slots inserted this frame (to synthesize)
+  gpu::Buffer fillArgs;       // VkDispatchIndirectCommand of the fill pass
   gpu::Buffer data;           // capacity × segments × joints JointMatrix (the SSBO ring)
   gpu::Buffer segmentFrames;  // ivec2 per segment
 };

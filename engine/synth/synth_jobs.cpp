@@ -67,17 +67,17 @@ void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const 
   gpu::computeToComputeBarrier(cmd);
   gpu::Binding insert[] = {gpu::storageBinding(1, cache->counters), gpu::storageBinding(2, cache->requested),
                            gpu::storageBinding(3, cache->bucketSlot), gpu::storageBinding(4, cache->slotBucket),
-                           gpu::storageBinding(5, cache->fresh)};
-  gpu::dispatch(cmd, programs.cacheInsert, insert, nullptr, 0, 1);
-  gpu::computeToComputeBarrier(cmd);
+                           gpu::storageBinding(5, cache->freshSlots), gpu::storageBinding(8, cache->fillArgs)};
+  gpu::dispatch(cmd, programs.cacheInsert, insert, push, 1);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
   if (cache->capacity > 0) {
+    // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
     gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels), gpu::storageBinding(1, motion->fastTexels),
                            gpu::storageBinding(2, motion->jointRadius), gpu::uniformBinding(6, motion->constantOffsets),
-                           gpu::storageBinding(7, cache->slotBucket), gpu::storageBinding(8, cache->fresh),
+                           gpu::storageBinding(7, cache->slotBucket), gpu::storageBinding(8, cache->freshSlots),
                            gpu::storageBinding(9, cache->segmentFrames), gpu::storageBinding(10, cache->data)};
-    gpu::dispatch(cmd, programs.cacheFill, fill, push, cache->capacity * cache->segmentCount);
-    gpu::computeToComputeBarrier(cmd);
-    vkCmdFillBuffer(cmd, cache->fresh.get(), 0, VK_WHOLE_SIZE, 0u);
+    gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
     gpu::computeToComputeBarrier(cmd);
   }
 }
