@@ -67,7 +67,10 @@ void ViewSession::run() {
     float dt = simulationStep(wall);
 
     std::optional<render::PresentFrame> frame =
-        presenter_.beginFrame([this](uint32_t slot) { collectTimes(slot); });
+        presenter_.beginFrame([this](uint32_t slot) {
+          collectTimes(slot);
+          lod_.collect(slot);
+        });
     if (!frame) {
       if (withPanel) imgui_->discardFrame();
       continue;
@@ -76,13 +79,15 @@ void ViewSession::run() {
     if (retarget.epoch != 0) ++speedChanges_;
     marks_[frame->slot] = render::recordCrowdFrame(
         frame->cmd, context_, *scene_->programs, scene_->synth, renderer_, camera_,
-        scene_->groundExtent, frame->targets, dt, *frame->timestamps, frame->slot, retarget);
+        scene_->groundExtent, frame->targets, dt, *frame->timestamps, frame->slot, retarget,
+        panel_.lodTint && scene_->synth.lod);
     if (withPanel) {
       panelRect_ = drawPanel(panel_, panelInfo());
       imgui_->record(frame->cmd, presenter_.swapchain(), frame->imageIndex,
                      presenter_.generation());
     }
     panelMarks_[frame->slot] = frame->timestamps->write(frame->cmd);
+    lod_.record(frame->cmd, scene_->synth, frame->slot, stats_.frames() + 1);
     pending_[frame->slot] = true;
 
     const bool lastFrame = o_.frames > 0 && stats_.frames() + 1 >= uint64_t(o_.frames);
@@ -101,7 +106,10 @@ void ViewSession::run() {
     if (lastFrame) break;
   }
   context_.waitIdle();
-  for (uint32_t slot = 0; slot < render::kPresenterFrames; ++slot) collectTimes(slot);
+  for (uint32_t slot = 0; slot < render::kPresenterFrames; ++slot) {
+    collectTimes(slot);
+    lod_.collect(slot);
+  }
 }
 
 void runView(ViewOptions& o) {

@@ -18,7 +18,7 @@ void statistics(const PanelInfo& info) {
   ImGui::Text("%ux%u, %s, %s clock", info.width, info.height, info.presentMode.c_str(),
               info.clock.c_str());
   ImGui::Text("%u characters x %u joints, %llu active", info.characters, info.jointsPerCharacter,
-              static_cast<unsigned long long>(info.activeJoints));
+              static_cast<unsigned long long>(info.lod.activeJoints));
   const render::Camera& c = *info.camera;
   ImGui::Text("eye %.1f %.1f %.1f  target %.1f %.1f %.1f", c.eye.x, c.eye.y, c.eye.z, c.target.x,
               c.target.y, c.target.z);
@@ -63,10 +63,31 @@ void bindings() {
   ImGui::TextDisabled("Tab/F1: panel   F12: screenshot   Esc: quit");
 }
 
-// The coverage LOD's controls (thresholds per part, tint) belong here once the synthesis
-// has it; the motion cache's settings apply on respawn, its counters are live.
-void lodAndCache(PanelControls& c, const PanelInfo& info) {
-  ImGui::TextDisabled("coverage LOD: not available in this build");
+// The coverage LOD: on/off (respawns), live thresholds and tint, and what this frame's masks
+// say. The motion cache's settings apply on respawn, its counters are live.
+void lod(PanelControls& c, const PanelInfo& info) {
+  ImGui::Checkbox("coverage LOD", &c.lod);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("switching it respawns the crowd");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!info.lodEnabled);
+  ImGui::Checkbox("tint", &c.lodTint);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("green near, yellow mid, red far");
+  ImGui::EndDisabled();
+  // Live: a character's part is active when its sphere covers at least this many pixels.
+  const ImGuiSliderFlags log = ImGuiSliderFlags_Logarithmic;
+  ImGui::SliderFloat("mid pixels", &c.lodMidPixels, 0.0f, 100000.0f, "torso %.0f px", log);
+  ImGui::SliderFloat("near pixels", &c.lodNearPixels, 0.0f, 100000.0f, "limbs %.0f px", log);
+  const LodStats& s = info.lod;
+  const double all = double(info.characters) * info.jointsPerCharacter;
+  ImGui::Text("active joints %llu (%.1f%%)", static_cast<unsigned long long>(s.activeJoints),
+              all > 0.0 ? 100.0 * double(s.activeJoints) / all : 0.0);
+  ImGui::Text("far %llu  mid %llu  near %llu", static_cast<unsigned long long>(s.levels[0]),
+              static_cast<unsigned long long>(s.levels[1]),
+              static_cast<unsigned long long>(s.levels[2]));
+  if (!info.lodEnabled) ImGui::TextDisabled("LOD off: every joint of every character");
+}
+
+void cache(PanelControls& c, const PanelInfo& info) {
   ImGui::Checkbox("motion cache", &c.cache);
   ImGui::SameLine();
   ImGui::TextDisabled("(on respawn)");
@@ -80,6 +101,12 @@ void lodAndCache(PanelControls& c, const PanelInfo& info) {
   ImGui::Text("hits %u  misses %u  evictions %u", s.hits, s.misses, s.evictions);
   ImGui::Text("%u entries, %.2f of %.2f MB", s.entries, s.bytesUsed / 1048576.0,
               s.budgetBytes / 1048576.0);
+}
+
+void lodAndCache(PanelControls& c, const PanelInfo& info) {
+  lod(c, info);
+  ImGui::Separator();
+  cache(c, info);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #pragma once
 // The Dear ImGui panel of `throng view`: scene controls (count, scenario, speeds), playback,
-// camera presets, and live statistics. Edits land in PanelControls; the frame loop applies them.
+// camera presets, coverage LOD and motion cache, and live statistics. Edits land in
+// PanelControls; the frame loop applies them.
 #include <string>
 
 #include "render/camera.h"
 #include "synth/motion_cache.h"
+#include "view_lod.h"
 #include "view_stats.h"
 
 namespace throng::tools {
@@ -22,6 +24,10 @@ struct PanelControls {
   bool cache = false;        // the motion cache (applied on respawn)
   float cacheBudgetMb = 20.0f;
   float bucketWidth = 0.05f;
+  bool lod = false;      // the coverage LOD (switching respawns the crowd)
+  bool lodTint = false;  // colour characters by level
+  float lodMidPixels = synth::kDefaultMidPixels;    // live thresholds
+  float lodNearPixels = synth::kDefaultNearPixels;
   float timeScale = 1.0f;
   bool paused = false;
   bool vsync = true;
@@ -41,7 +47,8 @@ struct PanelInfo {
   std::string clips;
   uint32_t width = 0, height = 0;
   uint32_t characters = 0, jointsPerCharacter = 0;
-  uint64_t activeJoints = 0;
+  bool lodEnabled = false;  // in the running crowd
+  LodStats lod;             // active joints and levels (every joint without the LOD)
   bool cacheEnabled = false;  // in the running crowd
   synth::MotionCacheStats cache;
   const ViewStats* stats = nullptr;

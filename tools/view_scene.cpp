@@ -11,6 +11,7 @@ float groundExtentFor(const crowd::ScenarioOptions& scenario) {
 std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const SceneOptions& options,
                                          anim::ClipPair clips) {
   auto scene = std::make_unique<ViewScene>();
+  scene->skeleton = clips.slow.skeleton;
   scene->clipDescription = clips.description;
   scene->pair = anim::makeMotionPair(clips.slow, clips.fast);
   scene->programs = std::make_unique<synth::SynthPrograms>(context, scene->pair);
@@ -26,10 +27,23 @@ void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOpti
   synth::validateCacheOptions(cache);
   crowd::Crowd crowd = makeSceneCrowd(options);  // throws before anything is replaced
   context.waitIdle();
-  scene.synth = synth::makeCrowdSynth(context, scene.pair, crowd, cache);
+  scene.synth = synth::makeCrowdSynth(context, scene.pair, crowd, cache,
+                                      sceneLodOptions(options, scene.skeleton));
   scene.options = options;
   scene.speeds = sceneSpeedSchedule(options);
   scene.groundExtent = groundExtentFor(s);
+}
+
+void setLodThresholds(const gpu::Context& context, ViewScene& scene, float midPixels,
+                      float nearPixels) {
+  if (!(midPixels >= 0.0f && nearPixels >= 0.0f))
+    fail("LOD thresholds must be >= 0 pixels, got mid ", midPixels, ", near ", nearPixels);
+  scene.options.lodMidPixels = midPixels;
+  scene.options.lodNearPixels = nearPixels;
+  if (!scene.synth.lod) return;
+  context.waitIdle();
+  synth::setLodThresholds(scene.synth, scene.skeleton,
+                          synth::CoverageThresholds::levels(midPixels, nearPixels));
 }
 
 }  // namespace throng::tools

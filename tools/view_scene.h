@@ -1,6 +1,7 @@
 #pragma once
 // What `throng view` animates: one motion pair, its compiled passes and a crowd that the panel
-// can re-spawn (count, scenario, seed, speed range, motion cache), with its speed changes.
+// can re-spawn (count, scenario, seed, speed range, motion cache, coverage LOD), with its speed
+// changes and live LOD thresholds.
 #include <memory>
 #include <string>
 
@@ -12,6 +13,7 @@ namespace throng::tools {
 
 struct ViewScene {
   anim::MotionPair pair;  // CrowdSynth points at it: ViewScene never moves (held by unique_ptr)
+  anim::Skeleton skeleton;  // the slow clip's: the coverage LOD finds the body parts in it
   std::string clipDescription;
   SceneOptions options;  // the scene as last spawned
   std::unique_ptr<synth::SynthPrograms> programs;
@@ -30,5 +32,11 @@ std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const Scen
 // Replaces the crowd by a new one for `options` (waits for the GPU first). Throws Error for
 // impossible options and then leaves the scene as it was.
 void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options);
+
+// New coverage-LOD thresholds (pixels: the torso's for mid, the limbs' for near) for the running
+// crowd, and for later respawns. The thresholds live in a host-visible buffer that frames in
+// flight read, so this waits for the GPU first when the crowd has the LOD on.
+void setLodThresholds(const gpu::Context& context, ViewScene& scene, float midPixels,
+                      float nearPixels);
 
 }  // namespace throng::tools

@@ -39,6 +39,7 @@ ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
       presenter_(context_, window_, o.vsync),
       renderer_(context_, presenter_.swapchain().format(), render::kDepthFormat),
       scene_(makeViewScene(context_, o.scene, std::move(clips))),
+      lod_(context_),
       camera_(sceneCamera(o.scene)),
       initialCamera_(camera_),
       panelVisible_(o.panel),
@@ -65,6 +66,10 @@ ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
   panel_.cache = o.scene.cache;
   panel_.cacheBudgetMb = o.scene.cacheBudgetMb;
   panel_.bucketWidth = o.scene.bucketWidth;
+  panel_.lod = o.scene.lod;
+  panel_.lodTint = o.scene.lodTint;
+  panel_.lodMidPixels = o.scene.lodMidPixels;
+  panel_.lodNearPixels = o.scene.lodNearPixels;
   panel_.vsync = o.vsync;
 }
 
@@ -156,6 +161,7 @@ void ViewSession::applyPanel() {
     scene_->speeds.hi = panel_.speedMax;
   }
   scene_->speeds.period = panel_.speedPeriod;
+  applyLodPanel();
   if (panel_.respawn) {
     panel_.respawn = false;
     SceneOptions next = scene_->options;
@@ -169,13 +175,35 @@ void ViewSession::applyPanel() {
     next.cache = panel_.cache;
     next.cacheBudgetMb = panel_.cacheBudgetMb;
     next.bucketWidth = panel_.bucketWidth;
-    try {
-      respawnCrowd(context_, *scene_, next);
-      ++respawns_;
-      panel_.message.clear();
-    } catch (const Error& e) {
-      panel_.message = concat("respawn failed: ", e.what());
-    }
+    respawn(next);
+  }
+}
+
+// The thresholds apply live (between frames); switching the LOD on or off rebuilds the crowd
+// as it was spawned, as the masks and the parts' buffer exist only in a crowd built with it.
+void ViewSession::applyLodPanel() {
+  if (panel_.lodMidPixels != scene_->options.lodMidPixels ||
+      panel_.lodNearPixels != scene_->options.lodNearPixels) {
+    panel_.lodMidPixels = std::max(panel_.lodMidPixels, 0.0f);
+    panel_.lodNearPixels = std::max(panel_.lodNearPixels, 0.0f);
+    setLodThresholds(context_, *scene_, panel_.lodMidPixels, panel_.lodNearPixels);
+  }
+  if (panel_.lod != scene_->options.lod) {
+    SceneOptions next = scene_->options;
+    next.lod = panel_.lod;
+    respawn(next);
+    panel_.lod = scene_->options.lod;  // unchanged if the respawn failed
+  }
+}
+
+void ViewSession::respawn(const SceneOptions& next) {
+  try {
+    respawnCrowd(context_, *scene_, next);
+    lod_.reset();  // the GPU is idle: pending mask copies describe the old crowd
+    ++respawns_;
+    panel_.message.clear();
+  } catch (const Error& e) {
+    panel_.message = concat("respawn failed: ", e.what());
   }
 }
 
@@ -215,7 +243,8 @@ PanelInfo ViewSession::panelInfo() const {
   info.height = presenter_.swapchain().extent().height;
   info.characters = scene_->synth.crowd.count;
   info.jointsPerCharacter = scene_->synth.jointCount();
-  info.activeJoints = activeJoints();
+  info.lod = lodStats();
+  info.lodEnabled = scene_->synth.lod;
   info.cacheEnabled = scene_->synth.cache.options.enabled;
   if (info.cacheEnabled) info.cache = synth::readCacheStats(scene_->synth.cache);
   info.stats = &stats_;
@@ -244,8 +273,14 @@ void ViewSession::report() {
     j["clock"] = fixedClock_ ? "fixed" : "real";
     j["characters"] = scene_->synth.crowd.count;
     j["jointsPerCharacter"] = scene_->synth.jointCount();
-    j["activeJoints"] = activeJoints();
-    j["lod"] = "not available in this build";
+    LodStats lod = lodStats();
+    j["activeJoints"] = lod.activeJoints;
+    j["lod"] = {{"enabled", scene_->synth.lod},
+                {"activeJoints", lod.activeJoints},
+                {"levels", lod.levels},
+                {"midPixels", scene_->options.lodMidPixels},
+                {"nearPixels", scene_->options.lodNearPixels},
+                {"tint", panel_.lodTint && scene_->synth.lod}};
     if (scene_->synth.cache.options.enabled) {
       synth::MotionCacheStats c = synth::readCacheStats(scene_->synth.cache);
       j["cache"] = {{"hits", c.hits},           {"misses", c.misses},

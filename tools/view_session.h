@@ -11,6 +11,7 @@
 #include "render/input_script.h"
 #include "render/view_controls.h"
 #include "render/window_presenter.h"
+#include "view_lod.h"
 #include "view_options.h"
 #include "view_panel.h"
 #include "view_scene.h"
@@ -30,12 +31,15 @@ class ViewSession {
   void applyScript(const std::vector<render::ScriptEvent>& events);
   void handle(render::ViewAction action);
   void applyPanel();
+  void applyLodPanel();
+  void respawn(const SceneOptions& next);
   float simulationStep(double wallSeconds);
   void collectTimes(uint32_t slot);
   void saveScreenshot(const std::filesystem::path& path);
-  // Coverage-LOD hook: until the LOD pass exists every joint of every character is synthesized.
-  uint64_t activeJoints() const {
-    return uint64_t(scene_->synth.crowd.count) * scene_->synth.jointCount();
+  // With the coverage LOD: the masks of the newest frame read back; without it every joint.
+  LodStats lodStats() const {
+    return scene_->synth.lod ? lod_.latest()
+                             : fullDetailStats(scene_->synth.crowd.count, scene_->synth.jointCount());
   }
   PanelInfo panelInfo() const;
 
@@ -46,6 +50,7 @@ class ViewSession {
   render::WindowPresenter presenter_;
   render::CrowdRenderer renderer_;
   std::unique_ptr<ViewScene> scene_;
+  LodReadback lod_;
   std::unique_ptr<render::ImGuiLayer> imgui_;
   render::ViewControls controls_;
   render::Camera camera_, initialCamera_;

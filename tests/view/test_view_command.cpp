@@ -4,19 +4,16 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
-#include "cli_support.h"
 #include "core/image.h"
 #include "crowd/scenario.h"
 #include "render/camera.h"
 #include "render/camera_control.h"
 #include "test_support.h"
-#include "xvfb_server.h"
+#include "view_run.h"
 
 using namespace throng;
 namespace fs = std::filesystem;
@@ -26,26 +23,9 @@ namespace {
 constexpr const char* kScene = "-n 200 --size 800x450 --seed 7 --camera wide";
 constexpr int kFrames = 30;
 
-struct ViewRun {
-  test::CommandResult result;
-  nlohmann::json stats;  // the --print-stats line (null when absent)
-};
-
-ViewRun runView(const std::string& args) {
-  test::XvfbServer& x = test::XvfbServer::instance();
-  REQUIRE_MESSAGE(!x.display().empty(), x.error());
-  test::useDisplay(x.display());
-  ViewRun run{test::runThrong("view " + args + " --print-stats"), nullptr};
-  std::istringstream lines(run.result.output);
-  for (std::string line; std::getline(lines, line);)
-    if (!line.empty() && line[0] == '{') run.stats = nlohmann::json::parse(line, nullptr, false);
-  return run;
-}
-
-void writeText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-}
+using test::runView;
+using test::ViewRun;
+using test::writeText;
 
 glm::vec3 vec3Of(const nlohmann::json& j) {
   return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
@@ -177,6 +157,8 @@ TEST_CASE("view: a scripted drag orbits the camera about its target") {
   CHECK(yawChange == doctest::Approx(-100.0f * render::kOrbitDegreesPerPixel).epsilon(1e-3));
   // Without the coverage LOD every joint stays active whatever the camera.
   CHECK(run.stats["activeJoints"] == 200 * run.stats["jointsPerCharacter"].get<int>());
+  CHECK(run.stats["lod"]["enabled"] == false);
+  CHECK(run.stats["lod"]["levels"] == nlohmann::json::array({0, 0, 200}));
 }
 
 TEST_CASE("view: number keys pick presets and the wheel zooms toward the target") {
