@@ -73,6 +73,10 @@ layout(constant_id = 61) const int kParent60 = -1;
 layout(constant_id = 62) const int kParent61 = -1;
 layout(constant_id = 63) const int kParent62 = -1;
 layout(constant_id = 64) const int kParent63 = -1;
+// True in the LOD variant of the pipeline: joints outside a character's mask are skipped. A
+// constant, so the variant without LOD carries no per-joint branch at all.
+layout(constant_id = 67) const bool kUseMasks = false;
+
 // Bit j set: joint j's offset changes over frames (read per lane from the motion texels).
 layout(constant_id = 65) const uint kAnimatedOffsetsLow = 1u;
 layout(constant_id = 66) const uint kAnimatedOffsetsHigh = 0u;
@@ -176,8 +180,8 @@ void composePose(uint base, int slowRow, int fastRow, SlerpWeights weights, floa
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
     // A subgroup-uniform skip: lavapipe runs 8 characters per SIMD group and can only jump over
     // the joint when none of them needs it; a lane that does not need it just does not write.
-    bool jointNeeded = ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
-    if (!subgroupAny(jointNeeded)) continue;
+    bool jointNeeded = !kUseMasks || ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
+    if (kUseMasks && !subgroupAny(jointNeeded)) continue;
     vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], weights);
     vec3 o = offsetAnimated(j)
                  ? slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w
@@ -205,7 +209,7 @@ void composePose(uint base, int slowRow, int fastRow, SlerpWeights weights, floa
       orientation = quatMul(parentRotation, alignYTo(dir));
       if (len <= 1e-6) radius = 0.0;  // zero-length bones are not drawn
     }
-    if (jointNeeded) writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
+    if (!kUseMasks || jointNeeded) writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
   }
 }
 

@@ -23,7 +23,7 @@ layout(std430, binding = 5) writeonly buffer Joints { JointMatrix joints[]; };
 // listed by cache_classify.comp.
 layout(std430, binding = 7) readonly buffer CharacterList { uint characterList[]; };
 layout(std430, binding = 8) readonly buffer ListCounts { uint listCounts[]; };
-// Coverage LOD (flags & kPoseUseMasks): the joints each character needs this frame.
+// Coverage LOD (the kUseMasks variant): the joints each character needs this frame.
 layout(std430, binding = 11) readonly buffer Masks { uvec4 masks[]; };
 layout(push_constant) uniform Push { PosePush push; };
 
@@ -45,7 +45,7 @@ void main() {
   int ff = int(frameAt(phase, push.fastFrames));
   uint base = local * uint(kJointCount);
   // Row starts of this frame in the motion textures (texel (x, f) is element f·2J + x).
-  uvec2 activeJoints = (push.flags & kPoseUseMasks) != 0u ? masks[i].xy : uvec2(0xFFFFFFFFu);
+  uvec2 activeJoints = kUseMasks ? masks[i].xy : uvec2(0xFFFFFFFFu);
   composePose(base, fs * 2 * kJointCount, ff * 2 * kJointCount, makeSlerpWeights(w), w, yawQuat(place.w), place.xyz,
               scale, activeJoints);
 }

@@ -16,12 +16,13 @@ void throwIfInvalid(const std::string& job, const std::vector<std::string>& prob
 
 namespace {
 // Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j,
-// [65], [66] the bit mask of joints whose offsets change over frames.
-std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair) {
+// [65], [66] the bit mask of joints whose offsets change over frames, [67] use LOD masks.
+std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, bool useMasks = false) {
   const std::vector<int32_t>& parents = pair.parents;
   if (parents.empty() || parents.size() > 64)
     fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
-  std::vector<uint32_t> values(67, static_cast<uint32_t>(-1));
+  std::vector<uint32_t> values(68, static_cast<uint32_t>(-1));
+  values[67] = useMasks ? 1u : 0u;
   values[0] = static_cast<uint32_t>(parents.size());
   for (size_t j = 0; j < parents.size(); ++j) values[1 + j] = static_cast<uint32_t>(parents[j]);
   values[65] = values[66] = 0;
@@ -34,6 +35,7 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair) {
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp"),
       pose(context, "synth_pose.comp", poseSpecialization(pair)),
+      poseMasked(context, "synth_pose.comp", poseSpecialization(pair, true)),
       cacheLookup(context, "cache_lookup.comp"),
       cacheInsert(context, "cache_insert.comp"),
       cacheFill(context, "cache_fill.comp", poseSpecialization(pair)),
@@ -187,10 +189,14 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
       gpu::storageBinding(8, counts),
       gpu::storageBinding(11, maskBuffer),
   };
+  // Both variants declare binding 11 (reflection reads the SPIR-V before specialization);
+  // only the masked one reads it.
+  const gpu::ComputeProgram& program = masks ? programs.poseMasked : programs.pose;
+  std::span<const gpu::Binding> used(bindings);
   if (listed) {
-    gpu::dispatchIndirect(cmd, programs.pose, bindings, &push, sizeof(push), *dispatchArgs, argsOffset);
+    gpu::dispatchIndirect(cmd, program, used, &push, sizeof(push), *dispatchArgs, argsOffset);
   } else {
-    gpu::dispatch(cmd, programs.pose, bindings, push, count);
+    gpu::dispatch(cmd, program, used, push, count);
   }
 }
 

@@ -18,6 +18,7 @@ namespace throng::synth {
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram pose;
+  gpu::ComputeProgram poseMasked;      // the same with the coverage-LOD joint masks
   gpu::ComputeProgram cacheLookup;
   gpu::ComputeProgram cacheInsert;
   gpu::ComputeProgram cacheFill;       // specialized like `pose`
