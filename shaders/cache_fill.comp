@@ -30,6 +30,6 @@ void main() {
   if (frames.x < 0) return;
   float w = bucketSpeed(uint(slotBucket[slot]), push.bucketWidth);
   uint base = (slot * push.segmentCount + segment) * uint(kJointCount);
-  composePose(base, frames.x * 2 * kJointCount, frames.y * 2 * kJointCount, makeSlerpWeights(w), w,
+  composePose(base, frames.x * 2 * kJointCount, frames.y * 2 * kJointCount, w,
               vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0, uvec2(0xFFFFFFFFu));
 }

@@ -173,8 +173,9 @@ void writeRows(uint index, vec4 q, vec3 scale, vec3 t) {
 // character-space pose the motion cache stores.
 // Joints whose bit is clear in `activeJoints` (the coverage LOD mask) are neither blended nor written;
 // their children are never activeJoints (the mask keeps parents before children).
-void composePose(uint base, int slowRow, int fastRow, SlerpWeights weights, float w, vec4 yaw, vec3 origin,
-                 float scale, uvec2 activeJoints) {
+void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 origin, float scale,
+                 uvec2 activeJoints) {
+  SlerpWeights weights = makeSlerpWeights(w);
   // The hierarchy is composed directly in world space (root = M · root pose), which saves a
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {

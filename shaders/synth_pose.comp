@@ -46,6 +46,6 @@ void main() {
   uint base = local * uint(kJointCount);
   // Row starts of this frame in the motion textures (texel (x, f) is element f·2J + x).
   uvec2 activeJoints = kUseMasks ? masks[i].xy : uvec2(0xFFFFFFFFu);
-  composePose(base, fs * 2 * kJointCount, ff * 2 * kJointCount, makeSlerpWeights(w), w, yawQuat(place.w), place.xyz,
+  composePose(base, fs * 2 * kJointCount, ff * 2 * kJointCount, w, yawQuat(place.w), place.xyz,
               scale, activeJoints);
 }
