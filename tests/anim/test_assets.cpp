@@ -12,6 +12,8 @@
 
 #include <doctest/doctest.h>
 
+#include "cli_support.h"
+
 #include "anim/bvh.h"
 #include "anim/gait.h"
 #include "core/error.h"
@@ -92,33 +94,6 @@ std::vector<glm::dvec3> framePositions(const RawClip& clip, int frame) {
   std::span<const float> values(clip.values.data() + size_t(frame) * size_t(clip.channelCount),
                                 size_t(clip.channelCount));
   return forwardKinematics(clip.skeleton, values);
-}
-
-struct Captured {
-  int status = -1;
-  std::string output;
-};
-
-// Runs a shell command, capturing stdout and stderr together.
-Captured runCommand(const std::string& command) {
-  Captured result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  char buffer[4096];
-  size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.output.append(buffer, n);
-  int raw = pclose(pipe);
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return result;
-}
-
-std::string throngCommand() {
-  const char* env = std::getenv("THRONG_BIN");
-  fs::path bin = env ? fs::path(env) : throng::test::binaryDir() / "bin" / "throng";
-  std::string quoted = "'";  // build paths hold no quotes
-  quoted += bin.string();
-  quoted += '\'';
-  return quoted;
 }
 
 }  // namespace
@@ -398,8 +373,8 @@ TEST_CASE("throng assets generate writes both clips, and a bad --out is an error
   const fs::path dir =
       fs::temp_directory_path() / ("throng_test_assets_" + std::to_string(::getpid()));
   fs::remove_all(dir);
-  Captured run = runCommand(throngCommand() + " assets generate --out '" + dir.string() + "'");
-  CHECK(run.status == 0);
+  throng::test::CommandResult run = throng::test::runThrong("assets generate --out '" + dir.string() + "'");
+  CHECK(run.exitCode == 0);
   CHECK(run.output.find("run_slow.bvh: 25 joints, 23 frames") != std::string::npos);
   for (const Variant& v : variants()) {
     CAPTURE(v.params.name);
@@ -411,8 +386,8 @@ TEST_CASE("throng assets generate writes both clips, and a bad --out is an error
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 2);
 
   const fs::path notADir = dir / "run_slow.bvh";
-  Captured bad = runCommand(throngCommand() + " assets generate --out '" + notADir.string() + "'");
-  CHECK(bad.status == 1);
+  throng::test::CommandResult bad = throng::test::runThrong("assets generate --out '" + notADir.string() + "'");
+  CHECK(bad.exitCode == 1);
   CHECK(bad.output.find("not a directory") != std::string::npos);
   fs::remove_all(dir);
 }
