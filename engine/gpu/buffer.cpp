@@ -23,14 +23,9 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
   VkMemoryPropertyFlags flags = use == MemoryUse::HostVisible
                                     ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
                                     : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = requirements.size;
-  alloc.memoryTypeIndex = context.findMemoryType(requirements.memoryTypeBits, flags);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
-  memory_ = Handle<VkDeviceMemory>(memory, [device](VkDeviceMemory m) { vkFreeMemory(device, m, nullptr); });
-  VK_CHECK(vkBindBufferMemory(device, buffer, memory, 0));
-  if (use == MemoryUse::HostVisible) VK_CHECK(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mapped_));
+  memory_ = context.allocateMemory(requirements, flags);
+  VK_CHECK(vkBindBufferMemory(device, buffer, memory_, 0));
+  if (use == MemoryUse::HostVisible) VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
 void uploadBytes(const Context& context, const Buffer& dst, std::span<const uint8_t> bytes,

@@ -228,6 +228,17 @@ uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted
   fail("no Vulkan memory type with flags ", wanted, " for type bits ", typeBits, " on ", info_.name);
 }
 
+Handle<VkDeviceMemory> Context::allocateMemory(const VkMemoryRequirements& requirements,
+                                              VkMemoryPropertyFlags wanted) const {
+  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  alloc.allocationSize = requirements.size;
+  alloc.memoryTypeIndex = findMemoryType(requirements.memoryTypeBits, wanted);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory));
+  VkDevice device = device_;
+  return Handle<VkDeviceMemory>(memory, [device](VkDeviceMemory m) { vkFreeMemory(device, m, nullptr); });
+}
+
 void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
 
 std::vector<std::string> listDevices() {

@@ -50,6 +50,8 @@ class Context {
   uint32_t validationMessageCount() const { return validationMessages_->load(); }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
+  // One allocation of a memory type with `wanted` flags that satisfies `requirements`.
+  Handle<VkDeviceMemory> allocateMemory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted) const;
   void waitIdle() const;
 
  private:

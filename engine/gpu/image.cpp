@@ -30,14 +30,8 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
 
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(device, image, &requirements);
-  VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  alloc.allocationSize = requirements.size;
-  alloc.memoryTypeIndex =
-      context.findMemoryType(requirements.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkDeviceMemory memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device, &alloc, nullptr, &memory));
-  memory_ = Handle<VkDeviceMemory>(memory, [device](VkDeviceMemory m) { vkFreeMemory(device, m, nullptr); });
-  VK_CHECK(vkBindImageMemory(device, image, memory, 0));
+  memory_ = context.allocateMemory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  VK_CHECK(vkBindImageMemory(device, image, memory_, 0));
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   viewInfo.image = image;
