@@ -1,9 +1,13 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Motion cache, step 4 (one invocation per character of a chunk): list the character for the
-// cached pose pass when its bucket is resident, else for the full pose pass, so that neither
-// pass runs the other's code (lavapipe would execute both sides of a divergent branch).
+#extension GL_EXT_control_flow_attributes : require
+// Motion cache, step 4 (one invocation per character of a chunk). A character whose bucket is
+// resident gets its poseSource: the cache entry of its (slow frame, fast frame) segment, from
+// which the renderer composes A = M · P, so synthesis writes nothing per joint for it. The
+// others are listed for the full pose pass (dispatched indirectly over just them, since
+// lavapipe would execute both sides of a divergent branch).
 #include "shared_types.h"
+#include "motion_common.glsl"
 #include "cache_common.glsl"
 
 layout(local_size_x = 64) in;
@@ -11,14 +15,22 @@ layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };
 layout(std430, binding = 3) readonly buffer BucketSlot { int bucketSlot[]; };
 layout(std430, binding = 6) writeonly buffer CharacterList { uint characterList[]; };
 layout(std430, binding = 7) buffer ListCounts { uint listCounts[]; };
+layout(std430, binding = 9) writeonly buffer PoseSource { uint poseSource[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
 void main() {
   uint local = gl_GlobalInvocationID.x;
   if (local >= push.characterCount) return;
-  float w = motion[push.firstCharacter + local].y;
-  bool cached = bucketSlot[speedBucket(w, push.bucketWidth, uint(bucketSlot.length()))] >= 0;
-  uint counter = 2u * push.chunk + (cached ? 0u : 1u);
-  uint index = atomicAdd(listCounts[counter], 1u);
-  characterList[push.firstCharacter + (cached ? 0u : push.listStride) + index] = local;
+  uint i = push.firstCharacter + local;
+  vec4 m = motion[i];
+  int slot = bucketSlot[speedBucket(m.y, push.bucketWidth, uint(bucketSlot.length()))];
+  if (slot >= 0) {
+    // fs + ff names the (slow frame, fast frame) segment: it grows at every frame boundary.
+    uint segment = frameAt(m.x, push.slowFrames) + frameAt(m.x, push.fastFrames);
+    poseSource[i] = (uint(slot) * push.segmentCount + segment) * push.jointCount;
+    return;
+  }
+  poseSource[i] = kPoseInJoints;
+  uint index = atomicAdd(listCounts[2u * push.chunk + 1u], 1u);
+  characterList[push.firstCharacter + push.listStride + index] = local;
 }

@@ -17,6 +17,7 @@ layout(std430, binding = 3) buffer Draws { uint draws[]; };  // VkDrawIndirectCo
 layout(std430, binding = 4) writeonly buffer NearList { uint nearList[]; };
 layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
 layout(push_constant) uniform Push { SplatPush push; };
+#include "joint_fetch.glsl"
 
 void main() {
   uint joint = gl_GlobalInvocationID.x;
@@ -24,7 +25,7 @@ void main() {
   uint character = joint / push.jointCount + push.firstCharacter;
   uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
   if ((push.flags & kDrawUseMasks) != 0u && !jointActive(mask, joint % push.jointCount)) return;
-  JointSprite s = jointSprite(joints[joint], frame);
+  JointSprite s = jointSprite(fetchJoint(joint, character, joint % push.jointCount, push.flags), frame);
   if (!s.visible) return;
   if (s.sizePx > push.maxPixels) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);

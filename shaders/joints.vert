@@ -12,6 +12,7 @@ layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = 4) readonly buffer NearList { uint nearList[]; };
 layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
 layout(push_constant) uniform Push { DrawPush push; };
+#include "joint_fetch.glsl"
 
 layout(location = 0) flat out vec3 tint;
 layout(location = 1) flat out vec4 inverse0;
@@ -22,7 +23,7 @@ void main() {
   uint joint = (push.flags & kDrawFromList) != 0u ? nearList[push.listBase + uint(gl_VertexIndex)] : uint(gl_VertexIndex);
   uint character = joint / push.jointCount + push.firstCharacter;
   uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
-  JointSprite s = jointSprite(joints[joint], frame);
+  JointSprite s = jointSprite(fetchJoint(joint, character, joint % push.jointCount, push.flags), frame);
   if (!s.visible || ((push.flags & kDrawUseMasks) != 0u && !jointActive(mask, joint % push.jointCount))) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
     gl_PointSize = 1.0;

@@ -82,10 +82,20 @@ THRONG_STRUCT(CachePush) {
   uint slotCount;         // capacity (fill pass: slots × segments invocations)
   float bucketWidth;
   uint firstCharacter;    // classify: the chunk
-  uint chunk;             // classify: counts at listCounts[2·chunk] (cached), [2·chunk + 1] (not)
-  uint listStride;        // classify: the uncached list starts listStride entries after the cached one
+  uint chunk;             // classify: the uncached count is at listCounts[2·chunk + 1]
+  uint listStride;        // classify: the uncached list starts listStride entries in
+  uint jointCount;        // classify: cached pose entries are jointCount matrices apart
+  uint slowFrames;        // classify: frames of the slow and fast clips name the segment
+  uint fastFrames;
   uint pad0;
+  uint pad1;
 };
+
+// poseSource[character]: where the character's joint matrices come from this frame. A cached
+// character's is the index of its first matrix in the cache data (the renderer composes
+// A = M · P itself, so synthesis writes nothing per joint for it); the others' is
+// kPoseInJoints: their matrices were synthesized into the joints buffer.
+const uint kPoseInJoints = 0xFFFFFFFFu;
 
 // Per-frame camera and light for the joint and ground draws (a uniform buffer).
 THRONG_STRUCT(FrameUniforms) {
@@ -109,6 +119,7 @@ THRONG_STRUCT(DrawPush) {
 const uint kDrawFromList = 1u;   // vertex i draws joint nearList[listBase + i]
 const uint kDrawUseMasks = 2u;   // skip joints the character's LOD mask leaves out
 const uint kDrawTintLevel = 4u;  // colour characters by LOD level (paper Fig. 8)
+const uint kDrawCachedPoses = 8u;  // compose cached characters' joints from poseSource + cache data
 
 // Push constants of the joint splat (compute path for small joints). Joints too wide to splat
 // are appended to nearList[listBase …] and counted in draws[chunk].vertexCount, an indirect

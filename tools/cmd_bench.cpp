@@ -106,13 +106,17 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
 }
 
 Row benchRender(const gpu::Context& context, const synth::SynthPrograms& programs, const anim::MotionPair& pair,
-                const BenchOptions& o) {
+                const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant) {
   Size size = parseSize(o.size);
   crowd::ScenarioOptions scenario;
   scenario.characters = o.renderCharacters;
   scenario.seed = 42;
   crowd::Crowd crowd = crowd::makeScenario(scenario);
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd);
+  synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
+  if (cache.enabled)
+    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
+  synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
+  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
   render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
@@ -137,7 +141,31 @@ Row benchRender(const gpu::Context& context, const synth::SynthPrograms& program
     synthMs.push_back(t.synthesisMs);
     renderMs.push_back(t.renderMs);
   }
-  return {concat("gpu-synthesis+render-", o.size), o.renderCharacters, median(synthMs), median(renderMs), o.frames};
+  const char* names[] = {"gpu-synthesis+render-", "gpu-lod+render-", "gpu-lod+cache+render-"};
+  return {concat(names[static_cast<int>(variant)], o.size), o.renderCharacters, median(synthMs), median(renderMs),
+          o.frames};
+}
+
+const Row* findRow(const std::vector<Row>& rows, const std::string& variant, uint32_t n) {
+  for (const Row& r : rows)
+    if (r.variant == variant && r.characters == n) return &r;
+  return nullptr;
+}
+
+// The issues' targets are ratios measured in one run: print them so a reader need not divide.
+void printTargetRatios(const std::vector<Row>& rows, unsigned threads) {
+  const std::string cpuMt = threads > 1 ? concat("cpu-", threads, "-threads") : "cpu-1-thread";
+  std::printf("ratios (higher is faster):\n");
+  for (const Row& r : rows) {
+    if (r.variant != "gpu-synthesis") continue;
+    const Row* cpu = findRow(rows, cpuMt, r.characters);
+    const Row* cached = findRow(rows, "gpu-synthesis-lod+cache", r.characters);
+    if (cpu) std::printf("  %7u characters: gpu full vs %s %6.2fx", r.characters, cpuMt.c_str(), cpu->synthesisMs / r.synthesisMs);
+    if (cached && cpu)
+      std::printf(" | lod+cache vs gpu full %6.2fx, vs %s %6.2fx", r.synthesisMs / cached->synthesisMs, cpuMt.c_str(),
+                  cpu->synthesisMs / cached->synthesisMs);
+    std::printf("\n");
+  }
 }
 
 void runBench(BenchOptions& o) {
@@ -178,7 +206,9 @@ void runBench(BenchOptions& o) {
     report(benchCpuSynthesis(pair, n, 1, o));
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
-  report(benchRender(context, programs, pair, o));
+  report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::Full));
+  report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::LodCache));
+  printTargetRatios(rows, threads);
   if (!o.experiments.empty()) {
     ExperimentOptions experiment;
     experiment.counts = o.counts;

@@ -27,6 +27,8 @@ FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& contex
   params.groundExtent = groundExtent;
   params.masks = synth.lod ? &synth.masks : nullptr;
   params.tintLevels = tintLevels;
+  if (synth.cache.options.enabled)
+    params.cachedPoses = {&synth.crowd.placement, &synth.crowd.motion, &synth.poseSource, &synth.cache.data};
   renderer.record(cmd, targets.color, targets.colorView, targets.depth, targets.depthView, params, targets.finalLayout, frameSlot);
   marks.rendered = timestamps.write(cmd);
   return marks;

@@ -21,7 +21,14 @@ uint32_t drawFlags(const DrawParams& params) {
   uint32_t flags = 0;
   if (params.masks) flags |= gpu_types::kDrawUseMasks;
   if (params.masks && params.tintLevels) flags |= gpu_types::kDrawTintLevel;
+  if (params.cachedPoses.enabled()) flags |= gpu_types::kDrawCachedPoses;
   return flags;
+}
+
+// The given inputs, or the placeholder for each binding the shaders declare but will not read.
+CachedPoseInputs boundCachedPoses(const DrawParams& params, const gpu::Buffer& placeholder) {
+  if (params.cachedPoses.enabled()) return params.cachedPoses;
+  return {&placeholder, &placeholder, &placeholder, &placeholder};
 }
 }  // namespace
 
@@ -114,7 +121,7 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
     SplatJob job{params.joints, &uniforms, &visibility_, &draws_, &nearList_, params.width, params.height,
                  params.characterCount, params.jointCount, params.splatMaxPixels,
                  context_->info().maxStorageBufferRange, params.masks ? params.masks : &noMasks_,
-                 drawFlags(params)};
+                 drawFlags(params), boundCachedPoses(params, noMasks_)};
     job.record(cmd, splat_);
   }
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
@@ -162,12 +169,15 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
   const std::vector<JointChunk> chunks =
       jointChunks(params.characterCount, params.jointCount, context_->info().maxStorageBufferRange);
   const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
+  const CachedPoseInputs cached = boundCachedPoses(params, noMasks_);
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];
     gpu::Binding bindings[] = {
         gpu::storageBinding(0, *params.joints, chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
         gpu::uniformBinding(1, uniforms), gpu::storageBinding(4, nearList_),
-        gpu::storageBinding(5, params.masks ? *params.masks : noMasks_)};
+        gpu::storageBinding(5, params.masks ? *params.masks : noMasks_),
+        gpu::storageBinding(6, *cached.placement), gpu::storageBinding(7, *cached.motion),
+        gpu::storageBinding(8, *cached.poseSource), gpu::storageBinding(9, *cached.cacheData)};
     push.firstCharacter = chunk.firstCharacter;
     push.listBase = chunk.firstCharacter * params.jointCount;
     joints_.bind(cmd, bindings, &push, sizeof(push));

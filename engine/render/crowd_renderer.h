@@ -8,6 +8,7 @@
 #include "gpu/graphics_pipeline.h"
 #include "gpu/image.h"
 #include "render/camera.h"
+#include "render/joint_splat.h"
 #include "synth/gpu_types.h"
 
 namespace throng::render {
@@ -24,6 +25,7 @@ struct DrawParams {
   float splatMaxPixels = 24.0f;
   const gpu::Buffer* masks = nullptr;   // coverage LOD: CoverageMask per character (null: all joints)
   bool tintLevels = false;              // colour characters by LOD level (paper Fig. 8)
+  CachedPoseInputs cachedPoses;         // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
 };
 

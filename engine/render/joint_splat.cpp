@@ -37,6 +37,8 @@ std::vector<std::string> SplatJob::validate() const {
     problems.push_back("input 'joints' is smaller than characterCount × jointCount matrices");
   if (maxStorageBufferRange == 0) problems.push_back("maxStorageBufferRange is zero");
   if (!masks || !*masks) problems.push_back("input 'masks' buffer is missing (bind a small one when flags are 0)");
+  if (!cachedPoses.enabled())
+    problems.push_back("inputs 'cachedPoses' are missing (bind small placeholders without a motion cache)");
   size_t chunks = jointChunks(characterCount, jointCount, std::max(1u, maxStorageBufferRange)).size();
   if (!draws || !*draws) problems.push_back("output 'draws' buffer is missing");
   else if (draws->size() < chunks * 16) problems.push_back(concat("output 'draws' holds ", draws->size(), " bytes, ", chunks, " chunks need ", chunks * 16));
@@ -73,6 +75,10 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
         gpu::storageBinding(3, *draws),
         gpu::storageBinding(4, *nearList),
         gpu::storageBinding(5, *masks),
+        gpu::storageBinding(6, *cachedPoses.placement),
+        gpu::storageBinding(7, *cachedPoses.motion),
+        gpu::storageBinding(8, *cachedPoses.poseSource),
+        gpu::storageBinding(9, *cachedPoses.cacheData),
     };
     gpu::dispatch(cmd, program, bindings, push, push.jointTotal);
   }

@@ -22,6 +22,17 @@ struct JointChunk {
 };
 std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount, uint32_t maxStorageBufferRange);
 
+// What the renderer needs to compose cached characters' joints itself (A = M · P from the
+// motion cache, see shaders/joint_fetch.glsl). Without a motion cache every joint is read from
+// the joints buffer; the bindings still exist, so the renderer binds placeholders.
+struct CachedPoseInputs {
+  const gpu::Buffer* placement = nullptr;   // vec4 per character (crowd)
+  const gpu::Buffer* motion = nullptr;      // vec4 per character (crowd): scale in w
+  const gpu::Buffer* poseSource = nullptr;  // uint per character (cache classify pass)
+  const gpu::Buffer* cacheData = nullptr;   // JointMatrix per cache slot, segment and joint
+  bool enabled() const { return placement && motion && poseSource && cacheData; }
+};
+
 struct SplatJob {
   const gpu::Buffer* joints = nullptr;        // input: JointMatrix per character per joint
   const gpu::Buffer* frameUniforms = nullptr; // input: gpu_types::FrameUniforms
@@ -34,7 +45,8 @@ struct SplatJob {
   float maxPixels = 16.0f;                    // wider sprites are left to the graphics pipeline
   uint32_t maxStorageBufferRange = 0;         // chunk size of the joints binding
   const gpu::Buffer* masks = nullptr;         // input: CoverageMask per character (LOD), see flags
-  uint32_t flags = 0;                         // kDrawUseMasks, kDrawTintLevel
+  uint32_t flags = 0;                         // kDrawUseMasks, kDrawTintLevel, kDrawCachedPoses
+  CachedPoseInputs cachedPoses;               // inputs: all four bound (placeholders when unused)
 
   std::vector<std::string> validate() const;
   // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the

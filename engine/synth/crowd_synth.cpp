@@ -39,6 +39,8 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
   if (cache.enabled) {
     // At most one chunk per character, so the counts never outgrow their buffers.
     VkDeviceSize n = std::max<VkDeviceSize>(crowd.size(), 1);
+    std::vector<uint32_t> inJoints(n, gpu_types::kPoseInJoints);
+    synth.poseSource = gpu::makeStorageBuffer<uint32_t>(context, inJoints);
     synth.characterLists = gpu::Buffer(context, 2 * n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
     synth.listCounts = gpu::Buffer(context, 2 * n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
     synth.dispatchArgs = gpu::Buffer(context, 2 * n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -84,10 +86,19 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
     gpu::computeToComputeBarrier(cmd);
     for (uint32_t c = 0; c < chunks; ++c) {
       uint32_t first = c * chunk;
-      CachePush push{std::min(chunk, synth.crowd.count - first), synth.cache.segmentCount, synth.cache.capacity,
-                     synth.cache.options.bucketWidth, first, c, synth.crowd.count, 0};
+      CachePush push{};
+      push.characterCount = std::min(chunk, synth.crowd.count - first);
+      push.segmentCount = synth.cache.segmentCount;
+      push.bucketWidth = synth.cache.options.bucketWidth;
+      push.firstCharacter = first;
+      push.chunk = c;
+      push.listStride = synth.crowd.count;
+      push.jointCount = synth.jointCount();
+      push.slowFrames = synth.motion.slowFrames;
+      push.fastFrames = synth.motion.fastFrames;
       gpu::Binding bindings[] = {gpu::storageBinding(0, synth.crowd.motion), gpu::storageBinding(3, synth.cache.bucketSlot),
-                                 gpu::storageBinding(6, synth.characterLists), gpu::storageBinding(7, synth.listCounts)};
+                                 gpu::storageBinding(6, synth.characterLists), gpu::storageBinding(7, synth.listCounts),
+                                 gpu::storageBinding(9, synth.poseSource)};
       gpu::dispatch(cmd, programs.cacheClassify, bindings, push, push.characterCount);
     }
     gpu::computeToComputeBarrier(cmd);
@@ -113,14 +124,23 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
     pose.countIndex = 2 * c + 1;
     pose.argsOffset = VkDeviceSize(2 * c + 1) * 12;
     pose.record(cmd, programs);
-    pose.listBase = first;  // the cached ones
-    pose.countIndex = 2 * c;
-    pose.argsOffset = VkDeviceSize(2 * c) * 12;
-    pose.cache = &synth.cache;
-    pose.record(cmd, programs);
   }
   // The cache counters are read on the host after the frame.
   if (cached) gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+}
+
+void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
+                                  VkDeviceSize maxBindingBytes) {
+  if (!synth.cache.options.enabled) return;
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  const uint32_t chunk = static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
+  for (uint32_t first = 0; first < synth.crowd.count; first += chunk) {
+    MaterializeCachedJob job{&synth.crowd, &synth.cache, &synth.poseSource, &synth.joints, first,
+                             std::min(chunk, synth.crowd.count - first), VkDeviceSize(first) * perCharacter,
+                             synth.lod ? &synth.masks : nullptr};
+    job.record(cmd, programs);
+  }
+  gpu::computeToComputeBarrier(cmd);
 }
 
 }  // namespace throng::synth

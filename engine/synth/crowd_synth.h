@@ -24,9 +24,12 @@ struct CrowdSynth {
   crowd::CrowdBuffers crowd;
   gpu::Buffer joints;  // crowd.count × jointCount JointMatrix
   GpuMotionCache cache;
-  // With the cache on: per pose chunk, the characters served from the cache and the others.
-  gpu::Buffer characterLists;  // 2 × crowd.count (cached list, then uncached at + count)
-  gpu::Buffer listCounts;      // 2 per chunk
+  // With the cache on: per character, where its joint matrices come from (kPoseInJoints or
+  // its cache entry; the renderer composes cached ones), and per pose chunk the list of
+  // characters that the full pose pass synthesizes.
+  gpu::Buffer poseSource;      // uint per character
+  gpu::Buffer characterLists;  // 2 × crowd.count (the uncached list starts at + count)
+  gpu::Buffer listCounts;      // 2 per chunk ([2c + 1]: uncached)
   gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per count
   // With LOD on: the body parts and thresholds (uniform) and each character's mask.
   bool lod = false;
@@ -47,6 +50,11 @@ void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton, const C
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
                      VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget = {},
                      const CoverageCamera* lodCamera = nullptr);
+
+// With the cache on, cached characters' joints are not in `joints` after recordSynthesis (the
+// renderer composes them): this writes them there too, for consumers that read `joints`.
+void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
+                                  VkDeviceSize maxBindingBytes);
 
 // Speed changes every `period` seconds (paper: 5 s): tells each step whether it starts a new
 // epoch, and the speed range and buckets the new targets are drawn from.

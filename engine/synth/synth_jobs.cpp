@@ -131,7 +131,6 @@ std::vector<std::string> PoseJob::validate() const {
     if (firstCharacter > crowd->count) problems.push_back("firstCharacter is past the end of the crowd");
     uint32_t count = characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
     if (firstCharacter + count > crowd->count) problems.push_back("chunk runs past the end of the crowd");
-    if (cache && !characterList) problems.push_back("cached poses need the 'characterList' of cached characters");
     if (characterList && (!listCounts || !dispatchArgs))
       problems.push_back("a 'characterList' needs its 'listCounts' and 'dispatchArgs'");
     VkDeviceSize need = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
@@ -160,23 +159,9 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   push.countIndex = countIndex;
   push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
   const gpu::Buffer& maskBuffer = masks ? *masks : programs.noList;
-  if (cache) {
-    push.segmentCount = cache->segmentCount;
-    push.bucketWidth = cache->options.bucketWidth;
-  }
   VkDeviceSize bytes = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
   const gpu::Buffer& list = listed ? *characterList : programs.noList;
   const gpu::Buffer& counts = listed ? *listCounts : programs.noList;
-  if (cache) {
-    gpu::Binding bindings[] = {
-        gpu::storageBinding(3, crowd->placement), gpu::storageBinding(4, crowd->motion),
-        gpu::storageBinding(5, *joints, jointsOffset, bytes), gpu::storageBinding(7, list),
-        gpu::storageBinding(8, counts), gpu::storageBinding(9, cache->bucketSlot),
-        gpu::storageBinding(10, cache->data), gpu::storageBinding(11, maskBuffer),
-    };
-    gpu::dispatchIndirect(cmd, programs.poseCached, bindings, &push, sizeof(push), *dispatchArgs, argsOffset);
-    return;
-  }
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, motion->slowTexels),
       gpu::storageBinding(1, motion->fastTexels),
@@ -198,6 +183,37 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   } else {
     gpu::dispatch(cmd, program, used, push, count);
   }
+}
+
+std::vector<std::string> MaterializeCachedJob::validate() const {
+  std::vector<std::string> problems;
+  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
+  if (!cache || !cache->data) problems.push_back("input 'cache' is missing");
+  if (!poseSource || !*poseSource) problems.push_back("input 'poseSource' buffer is missing");
+  if (!joints || !*joints) problems.push_back("output 'joints' buffer is missing");
+  if (crowd && firstCharacter + characterCount > crowd->count)
+    problems.push_back("chunk runs past the end of the crowd");
+  if (cache && joints && *joints &&
+      jointsOffset + VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix) > joints->size())
+    problems.push_back(concat("output 'joints' holds ", joints->size(), " bytes, too few for the chunk"));
+  return problems;
+}
+
+void MaterializeCachedJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
+  throwIfInvalid("MaterializeCachedJob", validate());
+  if (characterCount == 0) return;
+  PosePush push{};
+  push.characterCount = characterCount;
+  push.jointCount = cache->jointCount;
+  push.firstCharacter = firstCharacter;
+  push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
+  VkDeviceSize bytes = VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix);
+  gpu::Binding bindings[] = {
+      gpu::storageBinding(3, crowd->placement), gpu::storageBinding(4, crowd->motion),
+      gpu::storageBinding(5, *joints, jointsOffset, bytes), gpu::storageBinding(9, *poseSource),
+      gpu::storageBinding(10, cache->data), gpu::storageBinding(11, masks ? *masks : programs.noList),
+  };
+  gpu::dispatch(cmd, programs.poseCached, bindings, push, characterCount);
 }
 
 }  // namespace throng::synth

@@ -24,7 +24,7 @@ struct SynthPrograms {
   gpu::ComputeProgram cacheFill;       // specialized like `pose`
   gpu::ComputeProgram cacheClassify;
   gpu::ComputeProgram cacheArgs;
-  gpu::ComputeProgram poseCached;      // A = M · cached pose (specialized: joint count)
+  gpu::ComputeProgram poseCached;      // materializes A = M · cached pose (specialized: joint count)
   gpu::ComputeProgram coverage;        // pixel-coverage LOD (coverage.h)
   gpu::Buffer noList;                  // bindings for a pose pass over a plain range
   std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
@@ -60,15 +60,30 @@ struct PoseJob {
   const gpu::Buffer* dispatchArgs = nullptr;
   uint32_t listBase = 0, countIndex = 0;
   VkDeviceSize argsOffset = 0;
-  const GpuMotionCache* cache = nullptr;        // set: the listed characters take cached poses
   const gpu::Buffer* masks = nullptr;           // optional input: CoverageMask per character (LOD)
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
+// The joint matrices of the cached characters of a chunk written into `joints` (A = M · P from
+// their poseSource entry). The frame does not need it: the renderer composes the same matrices;
+// tests and exports that want every matrix in one buffer do. Twin: MotionCacheCpu::pose.
+struct MaterializeCachedJob {
+  const crowd::CrowdBuffers* crowd = nullptr;   // input: placement and scale
+  const GpuMotionCache* cache = nullptr;        // input: the cached poses
+  const gpu::Buffer* poseSource = nullptr;      // input: per character, from the cache classify pass
+  const gpu::Buffer* joints = nullptr;          // output: JointMatrix per character per joint
+  uint32_t firstCharacter = 0, characterCount = 0;
+  VkDeviceSize jointsOffset = 0;
+  const gpu::Buffer* masks = nullptr;           // optional: only the joints the LOD mask keeps
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+};
+
 // The motion cache for this frame: lookup (per character), insert (FIFO, once per bucket) and
-// fill (synthesize fresh entries); then PoseJob serves cached characters from it.
+// fill (synthesize fresh entries); then the classify pass points cached characters at it.
 struct CacheJob {
   const GpuMotionPair* motion = nullptr;        // input
   const crowd::CrowdBuffers* crowd = nullptr;   // input: speed weights

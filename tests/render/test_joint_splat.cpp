@@ -73,7 +73,8 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
   gpu::ComputeProgram program(ctx, "joint_splat.comp");
   render::SplatJob job{&jointBuffer, &uniforms, &visibility, &draws, &nearList, width, height,
                        static_cast<uint32_t>(crowd.size()), joints, maxPixels, ctx.info().maxStorageBufferRange,
-                       &nearList, 0};  // no LOD: any buffer serves as the unused masks binding
+                       &nearList, 0,  // no LOD: any buffer serves as the unused masks binding
+                       {&nearList, &nearList, &nearList, &nearList}};  // no cache: placeholders
   REQUIRE(job.validate().empty());
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, program); });
 

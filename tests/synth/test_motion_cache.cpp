@@ -2,6 +2,7 @@
 // speeds (CPU twin and GPU, frame by frame), and cached output equal to synthesized output.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "anim/default_clips.h"
@@ -96,7 +97,10 @@ TEST_CASE("motion cache: FIFO order, budget and exact counters on a scripted seq
     crowd = crowdAt(step.speeds, 64);
     gpu::uploadBytes(ctx, gpu.crowd.motion, {reinterpret_cast<const uint8_t*>(crowd.motion.data()), crowd.motion.size() * 16});
     gpu::uploadBytes(ctx, gpu.crowd.placement, {reinterpret_cast<const uint8_t*>(crowd.placement.data()), crowd.placement.size() * 16});
-    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordSynthesis(cmd, programs, gpu, 0.0f, 1u << 27); });
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, programs, gpu, 0.0f, 1u << 27);
+      synth::recordMaterializeCachedPoses(cmd, programs, gpu, 1u << 27);
+    });
     cpu.update(crowd);
     synth::MotionCacheStats g = synth::readCacheStats(gpu.cache), c = cpu.stats();
     CHECK(c.hits == step.hits);
@@ -137,6 +141,11 @@ TEST_CASE("motion cache: a crowd over many frames matches the uncached path at b
       synth::recordSynthesis(cmd, programs, plain, 1 / 30.0f, 1u << 27);
     });
   }
+  // After the first frame every bucket is resident: synthesis wrote no joint for any character,
+  // each points at its cache entry.
+  auto sources = gpu::readback<uint32_t>(ctx, cached.poseSource, crowd.size());
+  CHECK(std::count(sources.begin(), sources.end(), gpu_types::kPoseInJoints) == 0);
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordMaterializeCachedPoses(cmd, programs, cached, 1u << 27); });
   size_t n = crowd.size() * pair.jointCount();
   auto a = gpu::readback<synth::JointMatrix>(ctx, cached.joints, n);
   auto b = gpu::readback<synth::JointMatrix>(ctx, plain.joints, n);
