@@ -18,6 +18,11 @@ layout(std430, binding = 7) readonly buffer SlotBucket { int slotBucket[]; };
 layout(std430, binding = 8) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
 layout(std430, binding = 9) readonly buffer SegmentFrames { ivec2 segmentFrames[]; };
 layout(std430, binding = 10) writeonly buffer CacheData { JointMatrix joints[]; };
+void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
+  joints[index].row0 = row0;
+  joints[index].row1 = row1;
+  joints[index].row2 = row2;
+}
 layout(push_constant) uniform Push { CachePush push; };
 
 #include "pose_skeleton.glsl"

@@ -162,9 +162,10 @@ void writeRows(uint index, vec4 q, vec3 scale, vec3 t) {
   float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
   float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
   float wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-  joints[index].row0 = vec4((1.0 - 2.0 * (yy + zz)) * scale.x, 2.0 * (xy - wz) * scale.y, 2.0 * (xz + wy) * scale.z, t.x);
-  joints[index].row1 = vec4(2.0 * (xy + wz) * scale.x, (1.0 - 2.0 * (xx + zz)) * scale.y, 2.0 * (yz - wx) * scale.z, t.y);
-  joints[index].row2 = vec4(2.0 * (xz - wy) * scale.x, 2.0 * (yz + wx) * scale.y, (1.0 - 2.0 * (xx + yy)) * scale.z, t.z);
+  vec4 row0 = vec4((1.0 - 2.0 * (yy + zz)) * scale.x, 2.0 * (xy - wz) * scale.y, 2.0 * (xz + wy) * scale.z, t.x);
+  vec4 row1 = vec4(2.0 * (xy + wz) * scale.x, (1.0 - 2.0 * (xx + zz)) * scale.y, 2.0 * (yz - wx) * scale.z, t.y);
+  vec4 row2 = vec4(2.0 * (xz - wy) * scale.x, 2.0 * (yz + wx) * scale.y, (1.0 - 2.0 * (xx + yy)) * scale.z, t.z);
+  storeJoint(index, row0, row1, row2);
 }
 
 // Writes the kJointCount draw matrices of one character at joints[base …]: frames fs/ff of the

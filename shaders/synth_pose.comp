@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Pose pass, one invocation per character: per joint slerp of the slow and fast motion textures
 // by w (shortest arc), hierarchy composition down the parent array, and the joint draw matrices
 // A = M·O·F (DESIGN eq. 11). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
@@ -18,7 +19,15 @@ layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = 3) readonly buffer Placement { vec4 placement[]; };
 layout(std430, binding = 4) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 5) writeonly buffer Joints { JointMatrix joints[]; };
+// Written as 64-bit words: lavapipe stores a vector one component per lane at a time, so six
+// 64-bit components per joint cost half as much as twelve floats (the bytes are the same).
+layout(std430, binding = 5) writeonly buffer Joints { u64vec2 jointWords[]; };
+void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
+  uint at = 3u * index;
+  jointWords[at] = u64vec2(packUint2x32(floatBitsToUint(row0.xy)), packUint2x32(floatBitsToUint(row0.zw)));
+  jointWords[at + 1u] = u64vec2(packUint2x32(floatBitsToUint(row1.xy)), packUint2x32(floatBitsToUint(row1.zw)));
+  jointWords[at + 2u] = u64vec2(packUint2x32(floatBitsToUint(row2.xy)), packUint2x32(floatBitsToUint(row2.zw)));
+}
 // With the motion cache on, only the characters whose bucket is not resident are posed here,
 // listed by cache_classify.comp.
 layout(std430, binding = 7) readonly buffer CharacterList { uint characterList[]; };

@@ -91,17 +91,18 @@ bool plotCsv(const std::filesystem::path& csv, const std::filesystem::path& png,
 void runScalingExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,
                           const anim::MotionPair& pair, const anim::Skeleton& skeleton, const ExperimentOptions& o) {
   const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  std::string csv = "characters,cpu_ms,gpu_full_ms,gpu_lod_ms,active_joint_share\n";
-  std::printf("Fig. 10: synthesis time vs N (CPU %u threads, GPU all joints, GPU LOD with an orbiting camera)\n",
-              threads);
-  std::printf("%10s %10s %12s %12s %14s\n", "characters", "cpu ms", "gpu full ms", "gpu lod ms", "active joints");
+  std::string csv = "characters,cpu_ms,gpu_full_ms,gpu_lod_ms,gpu_lod_cache_ms,active_joint_share\n";
+  std::printf("Fig. 10: synthesis time vs N (CPU %u threads, GPU all joints, GPU LOD with an orbiting camera, "
+              "GPU LOD + cache)\n", threads);
+  std::printf("%10s %10s %12s %12s %14s %14s\n", "characters", "cpu ms", "gpu full ms", "gpu lod ms", "lod+cache ms",
+              "active joints");
   for (uint32_t n : o.counts) {
     crowd::ScenarioOptions scenario;
     scenario.characters = n;
     scenario.seed = 3;
     crowd::Crowd crowd = crowd::makeScenario(scenario);
     std::vector<synth::JointMatrix> cpuJoints(size_t(n) * pair.jointCount());
-    std::vector<double> cpuMs, fullMs, lodMs;
+    std::vector<double> cpuMs, fullMs, lodMs, cachedMs;
     for (int f = 0; f < std::max(3, o.frames / 4); ++f) {
       auto start = std::chrono::steady_clock::now();
       synth::stepCrowdCpu(pair, crowd, 1.0f / 30.0f, threads);
@@ -110,6 +111,11 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
     }
     synth::CrowdSynth full = synth::makeCrowdSynth(context, pair, crowd);
     synth::CrowdSynth lod = synth::makeCrowdSynth(context, pair, crowd, {}, {true, {}, &skeleton});
+    // The cache poses every character at its bucket's speed.
+    crowd::Crowd bucketed = crowd;
+    for (glm::vec4& m : bucketed.motion) m.y = m.z = synth::quantizeSpeed(m.y, 0.05f);
+    synth::CrowdSynth cached =
+        synth::makeCrowdSynth(context, pair, bucketed, {true, 0.05f, 20ull << 20}, {true, {}, &skeleton});
     const float extent = crowd::scenarioExtent(scenario);
     gpu::CommandPool pool(context);
     VkCommandBuffer cmd = pool.allocate();
@@ -131,6 +137,8 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
       timestamps.write(cmd);
       synth::recordSynthesis(cmd, programs, lod, 1.0f / 30.0f, context.info().maxStorageBufferRange, {}, &lodCamera);
       timestamps.write(cmd);
+      synth::recordSynthesis(cmd, programs, cached, 1.0f / 30.0f, context.info().maxStorageBufferRange, {}, &lodCamera);
+      timestamps.write(cmd);
       gpu::endCommands(cmd);
       gpu::submit(context, cmd, fence.get());
       fence.wait();
@@ -139,6 +147,7 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
       std::vector<uint64_t> ticks = timestamps.fetch();
       fullMs.push_back(timestamps.millisecondsBetween(ticks, 0, 1));
       lodMs.push_back(timestamps.millisecondsBetween(ticks, 1, 2));
+      cachedMs.push_back(timestamps.millisecondsBetween(ticks, 2, 3));
       if (f == o.frames - 1) {
         auto masks = gpu::readback<synth::CoverageMask>(context, lod.masks, n);
         size_t active = 0;
@@ -146,13 +155,15 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
         activeShare = double(active) / (double(n) * pair.jointCount());
       }
     }
-    std::printf("%10u %10.3f %12.3f %12.3f %13.1f%%\n", n, median(cpuMs), median(fullMs), median(lodMs),
-                100.0 * activeShare);
-    csv += concat(n, ",", median(cpuMs), ",", median(fullMs), ",", median(lodMs), ",", activeShare, "\n");
+    std::printf("%10u %10.3f %12.3f %12.3f %14.3f %13.1f%%\n", n, median(cpuMs), median(fullMs), median(lodMs),
+                median(cachedMs), 100.0 * activeShare);
+    std::fflush(stdout);
+    csv += concat(n, ",", median(cpuMs), ",", median(fullMs), ",", median(lodMs), ",", median(cachedMs), ",",
+                  activeShare, "\n");
   }
   writeTextFileAtomic(o.outDir / "time_vs_n.csv", csv);
   plotCsv(o.outDir / "time_vs_n.csv", o.outDir / "time_vs_n.png", "Synthesis time per frame vs crowd size",
-          "characters", "ms per frame (median)", {"CPU twin", "GPU all joints", "GPU coverage LOD"}, true);
+          "characters", "ms per frame (median)", {"CPU twin", "GPU all joints", "GPU coverage LOD", "GPU LOD + cache"}, true);
 }
 
 void runCacheExperiment(const gpu::Context& context, const synth::SynthPrograms& programs,

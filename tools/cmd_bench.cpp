@@ -1,5 +1,6 @@
 // `throng bench`: synthesis on the GPU vs the CPU twin (one and all threads) and synthesis +
 // render, medians of many frames after warm-up, GPU timestamps. Prints a table and writes JSON.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -212,6 +213,12 @@ void runBench(BenchOptions& o) {
   if (!o.experiments.empty()) {
     ExperimentOptions experiment;
     experiment.counts = o.counts;
+    // Fig. 10 goes to a million characters where memory allows: the scaling run holds three
+    // joint buffers on the device and one on the host (1.2 GB each at 1M × 25 joints).
+    const uint64_t millionBytes = 1000000ull * pair.jointCount() * sizeof(synth::JointMatrix);
+    if (!o.quick && context.info().deviceLocalBytes >= 6 * millionBytes &&
+        std::find(o.counts.begin(), o.counts.end(), 1000000u) == o.counts.end())
+      experiment.counts.push_back(1000000);
     experiment.outDir = o.experiments;
     if (o.quick) experiment.frames = 8;
     runScalingExperiment(context, programs, pair, clips.slow.skeleton, experiment);

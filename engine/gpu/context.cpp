@@ -155,6 +155,11 @@ Context::Context(const ContextOptions& options)
   info_.type = chosen.properties.deviceType;
   info_.timestampPeriodNs = chosen.properties.limits.timestampPeriod;
   info_.maxStorageBufferRange = chosen.properties.limits.maxStorageBufferRange;
+  VkPhysicalDeviceMemoryProperties memory{};
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory);
+  for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
+    if (memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      info_.deviceLocalBytes = std::max<uint64_t>(info_.deviceLocalBytes, memory.memoryHeaps[h].size);
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
