@@ -1,4 +1,5 @@
-// Hashes of the crowd steering passes. CPU twin: crowd/avoidance_math.h (same integer math).
+// Grid and random-number helpers of the crowd steering passes. CPU twin: crowd/avoidance.h
+// (cellCoord, cellIndex, pcgHash, steerRandom: the same integer math).
 #ifndef THRONG_AVOIDANCE_COMMON_GLSL
 #define THRONG_AVOIDANCE_COMMON_GLSL
 
@@ -11,16 +12,30 @@ uint pcgHash(uint v) {
 
 ivec2 cellCoord(vec2 p, float invCellSize) { return ivec2(floor(p * invCellSize)); }
 
-// Cells are hashed into a power-of-two table, so the grid needs no bounds; a bucket may
-// hold several cells, which the neighbour scan tells apart by recomputing cellCoord.
-uint cellHash(ivec2 c, uint cellCount) {
-  return pcgHash(uint(c.x) * 73856093u ^ uint(c.y) * 19349663u) & (cellCount - 1u);
+// Row-major index in the grid table, coordinates modulo its size (two's complement & keeps
+// negative coordinates in range): cells x and x + 1 of a row are adjacent unless x + 1 wraps.
+uint cellIndex(ivec2 c, uint widthShift, uint rowMask) {
+  uint columnMask = (1u << widthShift) - 1u;
+  return ((uint(c.y) & rowMask) << widthShift) | (uint(c.x) & columnMask);
 }
 
 // Uniform in [0, 1) from (agent, step, seed): the rule's random turn, reproducible on the CPU.
 float steerRandom(uint agent, uint step, uint seed) {
   uint h = pcgHash(agent ^ pcgHash(step ^ pcgHash(seed)));
   return float(h >> 8u) * (1.0 / 16777216.0);
+}
+
+// Whether two discs of diameter² `diameter2`, at relative position x moving at relative
+// velocity v, come closer than touching within `horizon` seconds. Only while approaching:
+// agents already too close may always move apart. Division-free (the closest approach
+// |x|² − (x·v)²/|v|² is compared multiplied by |v|²), so GPU and CPU decide alike.
+bool collides(vec2 x, vec2 v, float horizon, float diameter2) {
+  float xv = dot(x, v);
+  float vv = dot(v, v);
+  vec2 atHorizon = x + v * horizon;
+  bool closestInside = -xv < horizon * vv;
+  bool hit = closestInside ? dot(x, x) * vv - xv * xv < diameter2 * vv : dot(atHorizon, atHorizon) < diameter2;
+  return xv < 0.0 && hit;
 }
 
 #endif

@@ -1,22 +1,49 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Steering, one invocation per agent: the velocity that heads for the path-vector waypoint
-// (goal), changed by the avoidance policy, written as heading (placement.w), velocity and
-// speed (steer) and speed weight (motion.z = wTarget). Neighbours come from the grid's sorted
-// copy, so reading them never races with the writes. CPU twin: crowd::steerCpu.
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_ballot : require
+// Steering, one invocation per agent in grid order: the velocity that heads for the path-vector
+// waypoint (goal), changed by the avoidance policy, written as heading (placement.w), velocity
+// and speed (steer) and speed weight (motion.z = wTarget). Neighbours come from the grid's
+// sorted copy, so reading them never races with the writes. CPU twin: crowd::steerCpu.
+//
+// How the neighbour scan stays cheap on lavapipe, which runs the 8 lanes of a subgroup as one
+// SIMD loop where a divergent branch costs both sides and a loop runs as often as its longest
+// lane: the lanes share one candidate list. Lanes in one grid row (consecutive slots nearly
+// always are) take the union of their neighbourhoods, which is one or two runs of slots per
+// row; each round every lane loads one candidate (one gather for kChunk candidates) and
+// subgroupBroadcast hands each candidate to all lanes in turn. Candidates outside a lane's
+// own neighbourhood lie beyond the sensing distance and drop out in the distance test.
 #include "crowd_types.h"
 #include "avoidance_common.glsl"
 
 layout(local_size_x = 64) in;
+layout(constant_id = 0) const uint kPolicy = kSteerPolicyTtc;
+layout(constant_id = 1) const int kRange = 1;     // cells scanned each side: ceil(sensing / cell)
+layout(constant_id = 2) const uint kChunk = 8u;   // candidates per round: min(subgroup size, 32)
+const int kRows = 2 * kRange + 1;
+const int kRuns = 2 * kRows;                      // a row's columns may wrap around the table
+
 layout(std430, binding = 0) buffer Placement { vec4 placement[]; };
-layout(std430, binding = 1) buffer Motion { vec4 motion[]; };
+layout(std430, binding = 1) writeonly buffer Motion { vec4 motion[]; };
 layout(std430, binding = 2) readonly buffer Goals { vec4 goals[]; };
 layout(std430, binding = 3) buffer Steer { vec4 steer[]; };
-layout(std430, binding = 4) readonly buffer Counts { uint counts[]; };
-layout(std430, binding = 5) readonly buffer Starts { uint starts[]; };
-layout(std430, binding = 6) readonly buffer SortedIndex { uint sortedIndex[]; };
-layout(std430, binding = 7) readonly buffer Sorted { vec4 sorted[]; };
+layout(std430, binding = 4) readonly buffer Starts { uint starts[]; };
+layout(std430, binding = 5) readonly buffer SortedIndex { uint sortedIndex[]; };
+layout(std430, binding = 6) readonly buffer Sorted { vec4 sorted[]; };
 layout(push_constant) uniform Push { SteerPush push; };
+
+// This invocation's state, updated by every candidate it considers.
+uint gSlot;
+bool gMine;  // the lane takes part in the current round
+vec2 gPos, gVCur, gVPref, gKeep;
+vec2 gDraws[kRuleDraws];
+float gSensing2, gDiameter2, gInvDiameter;
+bool gBlocked, gKeepBlocked;
+uint gDrawBlocked;
+ivec2 gForce;
 
 // Karamouzas, Skinner & Guy 2014: E = k τ^-2 e^(-τ/τ0) over the time to collision τ of two
 // discs; the force on agent i is −∇E = k e^(-τ/τ0) τ^-2 (2/τ + 1/τ0) (x + τ v) / √D, with x, v
@@ -24,128 +51,176 @@ layout(push_constant) uniform Push { SteerPush push; };
 // τ is floored at 0.1 s and √D at 0.05·|v|² (s/|v|²: half the time the discs would overlap):
 // both forces are far above the cap there anyway, and without the floors the τ^-3 and 1/√D
 // singularities turn float rounding into different steering on the GPU and the CPU twin.
+// Branch-free (every branch costs on lavapipe); the CPU twin's branches select the same values.
 vec2 ttcForce(vec2 x, vec2 v, float dist2) {
-  float diameter = 2.0 * push.radius;
-  float c = dist2 - diameter * diameter;
-  if (c < 0.0) {
-    float d = sqrt(dist2);
-    return d > 1e-4 ? x * (push.ttcMaxForce * (diameter - d) / (diameter * d)) : vec2(0.0);
-  }
+  float c = dist2 - gDiameter2;
+  vec2 apart = dist2 > 1e-8 ? x * (push.ttcMaxForce * (inversesqrt(dist2) - gInvDiameter)) : vec2(0.0);
   float a = dot(v, v);
   float b = dot(x, v);
-  if (b >= 0.0 || a < 1e-6) return vec2(0.0);  // not approaching
   float disc = b * b - a * c;
-  if (disc <= 0.0) return vec2(0.0);            // passing clear
-  float s = sqrt(disc);
+  float s = sqrt(max(disc, 0.0));
   float tau = c / (s - b);
   float t = max(tau, 0.1);
-  float magnitude = push.ttcK * exp(-t / push.ttcTau0) / (t * t) * (2.0 / t + 1.0 / push.ttcTau0) / max(s, 0.05 * a);
-  return (x + tau * v) * magnitude;
+  float invT = 1.0 / t;
+  float magnitude = push.ttcK * exp(-t * push.ttcInvTau0) * invT * invT * (2.0 * invT + push.ttcInvTau0) / max(s, 0.05 * a);
+  bool approaching = b < 0.0 && a >= 1e-6 && disc > 0.0;  // else: not approaching or passing clear
+  return c < 0.0 ? apart : approaching ? (x + tau * v) * magnitude : vec2(0.0);
 }
 
-// Whether two agents come closer than `diameter2` (squared) within `horizon` seconds, from
-// their relative position x and velocity v. Only while approaching: agents already too close
-// may always move apart.
-bool collides(vec2 x, vec2 v, float horizon, float diameter2) {
-  float xv = dot(x, v);
-  if (xv >= 0.0) return false;
-  vec2 d = x + v * min(-xv / dot(v, v), horizon);
-  return dot(d, d) < diameter2;
+ivec2 toFixed(vec2 f) { return ivec2(floor(clamp(f, -kForceTermCap, kForceTermCap) * kForceScale + 0.5)); }
+
+void consider(vec4 other, uint otherSlot) {
+  vec2 x = gPos - other.xy;
+  float dist2 = dot(x, x);
+  bool near = gMine && otherSlot != gSlot && dist2 < gSensing2;
+  if (kPolicy == kSteerPolicyRule) {
+    vec2 theirs = other.zw;
+    gBlocked = gBlocked || (near && collides(x, gVPref - theirs, push.lookahead, gDiameter2));
+    gKeepBlocked = gKeepBlocked || (near && collides(x, gKeep - theirs, push.lookahead, gDiameter2));
+    for (uint d = 0u; d < kRuleDraws; ++d)
+      if (near && collides(x, gDraws[d] - theirs, push.lookahead, gDiameter2)) gDrawBlocked |= 1u << d;
+  } else if (kPolicy == kSteerPolicyTtc) {
+    vec2 f = ttcForce(x, gVCur - other.zw, dist2);
+    gForce += toFixed(near ? f : vec2(0.0));
+  }
+}
+
+// One round: the candidates [base, base + kChunk) of the list, each lane holding one, handed
+// to every lane in turn (constant-index broadcasts: one extract each on lavapipe). Every lane
+// considers all of them: on lavapipe skipping work needs a loop, and a loop over just the
+// candidates near some lane measured twice as slow as this straight-line code.
+void considerChunk(vec4 candidate, uint slot) {
+#define THRONG_CONSIDER(n) \
+  if (kChunk > n) consider(subgroupBroadcast(candidate, n), subgroupBroadcast(slot, n));
+  THRONG_CONSIDER(0u) THRONG_CONSIDER(1u) THRONG_CONSIDER(2u) THRONG_CONSIDER(3u)
+  THRONG_CONSIDER(4u) THRONG_CONSIDER(5u) THRONG_CONSIDER(6u) THRONG_CONSIDER(7u)
+  THRONG_CONSIDER(8u) THRONG_CONSIDER(9u) THRONG_CONSIDER(10u) THRONG_CONSIDER(11u)
+  THRONG_CONSIDER(12u) THRONG_CONSIDER(13u) THRONG_CONSIDER(14u) THRONG_CONSIDER(15u)
+  THRONG_CONSIDER(16u) THRONG_CONSIDER(17u) THRONG_CONSIDER(18u) THRONG_CONSIDER(19u)
+  THRONG_CONSIDER(20u) THRONG_CONSIDER(21u) THRONG_CONSIDER(22u) THRONG_CONSIDER(23u)
+  THRONG_CONSIDER(24u) THRONG_CONSIDER(25u) THRONG_CONSIDER(26u) THRONG_CONSIDER(27u)
+  THRONG_CONSIDER(28u) THRONG_CONSIDER(29u) THRONG_CONSIDER(30u) THRONG_CONSIDER(31u)
+#undef THRONG_CONSIDER
+}
+
+// Every pending lane's neighbourhood, one grid row of lanes per round of the outer loop
+// (nearly always a single round).
+void scanNeighbours(bool pending, ivec2 cell) {
+  uint width = 1u << push.widthShift;
+  uint lane = gl_SubgroupInvocationID;
+  do {
+    int row = subgroupMin(pending ? cell.y : 0x7fffffff);
+    gMine = pending && cell.y == row;
+    pending = pending && !gMine;
+    int xlo = subgroupMin(gMine ? cell.x : 0x7fffffff) - kRange;
+    int xhi = subgroupMax(gMine ? cell.x : -0x7fffffff) + kRange;
+    // The union's columns xlo..xhi in rows row-kRange..row+kRange: per row one run of slots,
+    // or two when the columns wrap around the table, or the whole row when they span it.
+    uint runBegin[kRuns], runLength[kRuns];
+    uint total = 0u;
+    bool whole = uint(xhi - xlo) + 1u >= width;
+    uint lo = uint(xlo) & (width - 1u), hi = uint(xhi) & (width - 1u);
+    bool wraps = !whole && lo > hi;
+    for (int r = 0; r < kRows; ++r) {
+      uint rowBase = (uint(row + r - kRange) & push.rowMask) << push.widthShift;
+      uint a = starts[rowBase + (whole ? 0u : lo)];
+      uint b = starts[rowBase + (whole || wraps ? width : hi + 1u)];
+      uint c = starts[rowBase];
+      uint d = starts[rowBase + (wraps ? hi + 1u : 0u)];
+      runBegin[2 * r] = a;
+      runLength[2 * r] = b - a;
+      runBegin[2 * r + 1] = c;
+      runLength[2 * r + 1] = d - c;
+      total += (b - a) + (d - c);
+    }
+    // A do-while: lavapipe tests a loop's exit at its end, so a for loop would pay one more
+    // (masked) round. Every lane of the round is in its own cell, so total >= 1.
+    uint base = 0u;
+    do {
+      uint t = lane < kChunk ? base + lane : 0xFFFFFFFFu;
+      uint slot = 0xFFFFFFFFu;
+      uint before = 0u;
+      for (int s = 0; s < kRuns; ++s) {
+        if (t >= before && t - before < runLength[s]) slot = runBegin[s] + (t - before);
+        before += runLength[s];
+      }
+      vec4 candidate = sorted[min(slot, push.agentCount - 1u)];
+      considerChunk(slot != 0xFFFFFFFFu ? candidate : vec4(1e18, 1e18, 0.0, 0.0), slot);
+      base += kChunk;
+    } while (base < total);
+  } while (subgroupAny(pending));
+  gMine = false;
 }
 
 void main() {
-  // Invocations walk the agents in grid order, so neighbouring lanes scan the same cells
-  // (coherent loops and caches; on lavapipe about twice as fast as agent order).
   uint slot = gl_GlobalInvocationID.x;
-  if (slot >= push.agentCount) return;
-  uint i = sortedIndex[slot];
+  bool valid = slot < push.agentCount;
+  gSlot = slot;
+  uint i = sortedIndex[min(slot, push.agentCount - 1u)];
   vec4 goal = goals[i];
-  if (goal.w == 0.0) {
-    steer[i] = vec4(0.0);
-    return;
-  }
   vec4 place = placement[i];
-  vec2 pos = place.xz;
-  vec2 vPref = (goal.xy - pos) * push.invSecondsLeft;
-  float prefSpeed = length(vPref);
+  vec4 state = steer[i];
+  bool isActive = valid && goal.w != 0.0;
+  gPos = place.xz;
+  gVPref = (goal.xy - gPos) * push.invSecondsLeft;
+  float prefSpeed = length(gVPref);
   if (prefSpeed > goal.z) {
-    vPref *= goal.z / prefSpeed;
+    gVPref *= goal.z / prefSpeed;
     prefSpeed = goal.z;
   }
-  vec2 vCur = steer[i].xy;
+  gVCur = state.xy;
+  gSensing2 = push.sensing * push.sensing;
+  gDiameter2 = 4.0 * push.radius * push.radius;
+  gInvDiameter = 0.5 / push.radius;
+  gBlocked = false;
+  gKeepBlocked = false;
+  gDrawBlocked = 0u;
+  gForce = ivec2(0);
 
   // The rule tests courses: towards the waypoint, on along the current heading, and
   // kRuleDraws random headings within the gaze around the waypoint's direction.
-  float goalHeading = prefSpeed > 1e-4 ? atan(vPref.x, vPref.y) : place.w;
-  vec2 keep = prefSpeed * vec2(sin(place.w), cos(place.w));
-  vec2 draws[kRuleDraws];
-  for (uint d = 0u; d < kRuleDraws; ++d) draws[d] = vec2(0.0);
-  if (push.policy == kSteerPolicyRule) {
-    for (uint d = 0u; d < kRuleDraws; ++d) {
+  float goalHeading = prefSpeed > 1e-4 ? atan(gVPref.x, gVPref.y) : place.w;
+  gKeep = prefSpeed * vec2(sin(place.w), cos(place.w));
+  for (uint d = 0u; d < kRuleDraws; ++d) {
+    gDraws[d] = vec2(0.0);
+    if (kPolicy == kSteerPolicyRule) {
       float heading = goalHeading + (steerRandom(i, push.step * kRuleDraws + d, push.seed) - 0.5) * push.gazeAngle;
-      draws[d] = prefSpeed * vec2(sin(heading), cos(heading));
+      gDraws[d] = prefSpeed * vec2(sin(heading), cos(heading));
     }
   }
-  bool blocked = false, keepBlocked = false;
-  uint drawBlocked = 0u;
-  vec2 avoid = vec2(0.0);
-  if (push.policy != kSteerPolicyNone) {
-    float diameter2 = 4.0 * push.radius * push.radius;
-    float sensing2 = push.sensing * push.sensing;
-    ivec2 home = cellCoord(pos, push.invCellSize);
-    for (int dz = -push.cellRange; dz <= push.cellRange; ++dz) {
-      for (int dx = -push.cellRange; dx <= push.cellRange; ++dx) {
-        ivec2 cell = home + ivec2(dx, dz);
-        uint h = cellHash(cell, push.cellCount);
-        uint first = starts[h];
-        uint end = first + counts[h];
-        for (uint k = first; k < end; ++k) {
-          vec4 other = sorted[k];
-          if (k == slot || cellCoord(other.xy, push.invCellSize) != cell) continue;
-          vec2 x = pos - other.xy;
-          float dist2 = dot(x, x);
-          if (dist2 >= sensing2) continue;
-          if (push.policy == kSteerPolicyRule) {
-            vec2 theirs = other.zw;
-            if (collides(x, vPref - theirs, push.lookahead, diameter2)) blocked = true;
-            if (collides(x, keep - theirs, push.lookahead, diameter2)) keepBlocked = true;
-            for (uint d = 0u; d < kRuleDraws; ++d)
-              if (collides(x, draws[d] - theirs, push.lookahead, diameter2)) drawBlocked |= 1u << d;
-          } else {
-            avoid += ttcForce(x, vCur - other.zw, dist2);
-          }
-        }
-      }
-    }
+  if (kPolicy != kSteerPolicyNone) scanNeighbours(isActive, cellCoord(gPos, push.invCellSize));
+  if (!isActive) {
+    if (valid) steer[i] = vec4(0.0);
+    return;
   }
 
-  vec2 v = vPref;
+  vec2 v = gVPref;
   uint flags = 0u;
-  if (push.policy == kSteerPolicyRule && blocked) {
+  if (kPolicy == kSteerPolicyRule && gBlocked) {
     // Keep an earlier turn while its course is free and still within the gaze around the
     // waypoint; else take the first free random heading; else wait, but for at most
     // kRuleMaxWait seconds before taking the first draw anyway (a dense crossing would
     // otherwise wait for ever).
-    bool inGaze = prefSpeed > 1e-4 && dot(keep, vPref) >= push.cosHalfGaze * prefSpeed * prefSpeed;
-    float waited = max(-steer[i].w, 0.0) * push.dt;
-    if (!keepBlocked && inGaze) {
-      v = keep;
+    bool inGaze = prefSpeed > 1e-4 && dot(gKeep, gVPref) >= push.cosHalfGaze * prefSpeed * prefSpeed;
+    float waited = max(-state.w, 0.0) * push.dt;
+    if (!gKeepBlocked && inGaze) {
+      v = gKeep;
       flags = kSteerFlagKept;
     } else {
-      v = waited < kRuleMaxWait ? vec2(0.0) : draws[0];
+      v = waited < kRuleMaxWait ? vec2(0.0) : gDraws[0];
       flags = waited < kRuleMaxWait ? kSteerFlagWaiting : kSteerFlagForced;
-      for (uint d = 0u; d < kRuleDraws; ++d) {
-        if ((drawBlocked & (1u << d)) == 0u) {
-          v = draws[d];
+      for (uint d = kRuleDraws; d > 0u; --d) {  // the first free draw wins
+        if ((gDrawBlocked & (1u << (d - 1u))) == 0u) {
+          v = gDraws[d - 1u];
           flags = kSteerFlagTurned;
-          break;
         }
       }
     }
-  } else if (push.policy == kSteerPolicyTtc) {
+  } else if (kPolicy == kSteerPolicyTtc) {
+    vec2 avoid = vec2(gForce) * (1.0 / kForceScale);
     float avoidLength = length(avoid);
     if (avoidLength > push.ttcMaxForce) avoid *= push.ttcMaxForce / avoidLength;
-    v = vCur + ((vPref - vCur) / push.ttcXi + avoid) * push.dt;
+    v = gVCur + ((gVPref - gVCur) / push.ttcXi + avoid) * push.dt;
     float speed = length(v);
     if (speed > goal.z) v *= goal.z / speed;
   }
@@ -154,8 +229,10 @@ void main() {
   if (speed > 1e-3) place.w = atan(v.x, v.y);
   placement[i] = place;
   // steer.w: the flags, or while waiting minus the steps waited so far.
-  float state = flags == kSteerFlagWaiting ? min(steer[i].w, 0.0) - 1.0 : float(flags);
-  steer[i] = vec4(v, speed, state);
-  if (push.fastSpeed > push.slowSpeed)
-    motion[i].z = clamp((speed - push.slowSpeed) / (push.fastSpeed - push.slowSpeed), 0.0, 1.0);
+  float stateOut = flags == kSteerFlagWaiting ? min(state.w, 0.0) - 1.0 : float(flags);
+  steer[i] = vec4(v, speed, stateOut);
+  // The clip pair of the agent's range maps its speed to the speed weight.
+  float slow = i < push.setEnd.x ? push.setSlow.x : i < push.setEnd.y ? push.setSlow.y : i < push.setEnd.z ? push.setSlow.z : push.setSlow.w;
+  float fast = i < push.setEnd.x ? push.setFast.x : i < push.setEnd.y ? push.setFast.y : i < push.setEnd.z ? push.setFast.z : push.setFast.w;
+  if (fast > slow) motion[i].z = clamp((speed - slow) / (fast - slow), 0.0, 1.0);
 }

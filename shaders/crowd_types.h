@@ -9,15 +9,23 @@
 namespace throng::gpu_types {
 using vec4 = glm::vec4;
 using uint = uint32_t;
+using uvec4 = glm::uvec4;
 #define THRONG_CROWD_STRUCT(name) struct name
 #else
 #define THRONG_CROWD_STRUCT(name) struct name
 #endif
 
 // Per-agent buffers of the steering passes (structure of arrays beside placement/motion):
-//   goal[i]   = (target x, target z, max speed, active: 1 or 0)  the path-vector waypoint
-//   steer[i]  = (vx, vz, speed, flags or -steps waited)           the velocity chosen this step
-//   sorted[k] = (x, z, vx, vz)                                    agent sortedIndex[k], cell order
+//   goal[i]     = (target x, target z, max speed, active: 1 or 0)  the path-vector waypoint
+//   steer[i]    = (vx, vz, speed, flags or -steps waited)           the velocity chosen this step
+//   cellRank[i] = (grid cell, rank of the agent among its cell's)  written by the count pass
+//   sorted[k]   = (x, z, vx, vz)                                    agent sortedIndex[k], cell order
+//
+// The grid: cells of push.invCellSize⁻¹ metres, laid out row-major in a table of
+// 2^widthShift columns × (rowMask + 1) rows with the coordinates taken modulo the table (no
+// hash), so the cells x-1, x, x+1 of one row are adjacent in the sorted order: a neighbour
+// scan reads one or two runs of slots per row. Cells that alias (a table apart) are far away,
+// and the distance test drops their agents.
 
 const uint kSteerPolicyNone = 0u;   // follow the path vectors, ignore others
 const uint kSteerPolicyRule = 1u;   // published rule: on overlap, a random heading in the gaze
@@ -29,28 +37,37 @@ const uint kSteerFlagForced = 3u;   // no free heading for kRuleMaxWait s: the f
 const uint kSteerFlagWaiting = 4u;  // no free heading: the rule waits (steer.w = -steps waited)
 const float kRuleMaxWait = 1.0;     // seconds
 const uint kRuleDraws = 4u;         // random headings the rule draws per step (first free one taken)
-const uint kScanBlock = 1024u;      // cells per workgroup of the block scan (256 threads × 4)
+const uint kScanThreads = 256u;     // the scan pass: one workgroup, each thread a run of cells
+const uint kMaxClipSets = 4u;       // speed → w mappings (clip pairs) per steering pass
 
-// Push constants of every grid pass (count, scan, scatter, cell sort).
+// TTC forces are summed in fixed point (1/kForceScale m/s², each neighbour's term clamped to
+// ±kForceTermCap per axis), so the sum does not depend on the order neighbours are visited in:
+// the grid's order within a cell is the count pass's atomic order, and the CPU twin's differs.
+// A term that large already exceeds the cap on the total (ttcMaxForce <= kForceTermCap / 2);
+// 32-bit sums hold 511 such terms.
+const float kForceScale = 65536.0;
+const float kForceTermCap = 64.0;
+
+// Push constants of every grid pass (count, scan, scatter).
 THRONG_CROWD_STRUCT(GridPush) {
   uint agentCount;
-  uint cellCount;        // power of two: cells are hashed, cell & (cellCount - 1)
-  uint blockCount;       // ceil(cellCount / kScanBlock)
-  uint pad0;
+  uint cellCount;        // (rowMask + 1) << widthShift
+  uint widthShift;       // log2 of the table's columns
+  uint rowMask;          // rows − 1 (a power of two minus one)
   float invCellSize;     // 1 / cell side in metres (multiplied, so GPU and CPU floor alike)
+  float pad0;
   float pad1;
   float pad2;
-  float pad3;
 };
 
-// Push constants of the steering pass.
+// Push constants of the steering pass (policy, neighbour range and subgroup chunk are
+// specialization constants).
 THRONG_CROWD_STRUCT(SteerPush) {
   uint agentCount;
-  uint cellCount;
-  uint policy;           // kSteerPolicy*
   uint step;             // step counter: the rule's draw k hashes (agent, step · kRuleDraws + k, seed)
   uint seed;
-  int cellRange;         // neighbour cells scanned each side: ceil(sensing / cell)
+  uint widthShift;       // the grid table (GridPush)
+  uint rowMask;
   float invCellSize;
   float dt;
   float invSecondsLeft;  // 1 / time until the current waypoint is due
@@ -58,13 +75,19 @@ THRONG_CROWD_STRUCT(SteerPush) {
   float sensing;         // neighbours farther than this are ignored
   float lookahead;       // rule: seconds ahead the overlap is tested
   float gazeAngle;       // rule: full width of the random turn (radians)
+  float cosHalfGaze;     // rule: cos(gazeAngle / 2), the cone a kept heading must stay in
   float ttcK;            // TTC: k (m²/s²·s^m), tau0 (s), relaxation xi (s), force cap (m/s²)
   float ttcTau0;
   float ttcXi;
   float ttcMaxForce;
-  float slowSpeed;       // root speeds of the clip pair: speed → w (motion.z)
-  float fastSpeed;
-  float cosHalfGaze;     // rule: cos(gazeAngle / 2), the cone a kept heading must stay in
+  float ttcInvTau0;      // 1 / tau0
+  float pad0;
+  float pad1;
+  // Speed → w (motion.z) per clip pair: agents [setEnd[k−1], setEnd[k]) use the root speeds
+  // setSlow[k], setFast[k] (w = 0 when fast <= slow is left alone: motion.z unchanged).
+  uvec4 setEnd;
+  vec4 setSlow;
+  vec4 setFast;
 };
 
 // Push constants of the kinematic advance (position += velocity · dt).
@@ -73,6 +96,14 @@ THRONG_CROWD_STRUCT(AdvancePush) {
   float dt;
   float pad0;
   float pad1;
+};
+
+// Push constants of the goal pass (path-vector waypoints for one simulated second).
+THRONG_CROWD_STRUCT(GoalPush) {
+  uint agentCount;
+  uint second;           // the simulation second whose waypoints are written
+  uint pad0;
+  uint pad1;
 };
 
 #ifdef __cplusplus

@@ -16,6 +16,7 @@ layout(std430, binding = 2) buffer Visibility { uint64_t visibility[]; };
 layout(std430, binding = 3) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
 layout(std430, binding = 4) writeonly buffer NearList { uint nearList[]; };
 layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
+layout(std430, binding = 10) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
 layout(push_constant) uniform Push { SplatPush push; };
 #include "joint_fetch.glsl"
 
@@ -35,7 +36,9 @@ void main() {
   // Pixels whose centres lie inside the bounding box.
   ivec2 lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
   ivec2 hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
-  vec3 tint = (push.flags & kDrawTintLevel) != 0u ? levelTint(mask.z) : characterTint(character);
+  vec3 tint = (push.flags & kDrawTintLevel) != 0u  ? levelTint(mask.z)
+              : (push.flags & kDrawGroupTint) != 0u ? groupTint(groups[character], character)
+                                                    : characterTint(character);
   uint width = uint(frame.viewport.x);
   for (int y = lo.y; y <= hi.y; ++y) {
     for (int x = lo.x; x <= hi.x; ++x) {

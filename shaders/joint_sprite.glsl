@@ -94,6 +94,13 @@ vec3 characterTint(uint character) {
   return mix(hueToRgb(float(h & 1023u) / 1024.0), vec3(0.85), 0.25) * (0.75 + 0.25 * float((h >> 10) & 3u) / 3.0);
 }
 
+// A storyboard group's colour: hues a golden-ratio step apart, so neighbouring group numbers
+// differ strongly; the character's own hash shades it a little, so individuals still read.
+vec3 groupTint(uint group, uint character) {
+  vec3 base = mix(hueToRgb(fract(0.08 + 0.618034 * float(group))), vec3(0.85), 0.15);
+  return base * (0.8 + 0.2 * float(hashIndex(character) & 3u) / 3.0);
+}
+
 // Paper Fig. 8: near characters green, mid yellow, far red.
 vec3 levelTint(uint level) {
   return level >= 2u ? vec3(0.25, 0.8, 0.3) : level == 1u ? vec3(0.95, 0.8, 0.2) : vec3(0.9, 0.25, 0.2);

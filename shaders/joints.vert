@@ -11,6 +11,7 @@ layout(std430, binding = 0) readonly buffer Joints { JointMatrix joints[]; };
 layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = 4) readonly buffer NearList { uint nearList[]; };
 layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
+layout(std430, binding = 10) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
 layout(push_constant) uniform Push { DrawPush push; };
 #include "joint_fetch.glsl"
 
@@ -32,7 +33,9 @@ void main() {
   inverse0 = s.inverse0;
   inverse1 = s.inverse1;
   inverse2 = s.inverse2;
-  tint = (push.flags & kDrawTintLevel) != 0u ? levelTint(mask.z) : characterTint(character);
+  tint = (push.flags & kDrawTintLevel) != 0u  ? levelTint(mask.z)
+         : (push.flags & kDrawGroupTint) != 0u ? groupTint(groups[character], character)
+                                               : characterTint(character);
   // The sprite is centred on the bounding box (not on the projected centre) so it covers it.
   vec2 boxCentreNdc = (s.lo + s.hi) / frame.viewport.xy - 1.0;
   gl_PointSize = min(s.sizePx, 255.0);

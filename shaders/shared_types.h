@@ -120,6 +120,7 @@ const uint kDrawFromList = 1u;   // vertex i draws joint nearList[listBase + i]
 const uint kDrawUseMasks = 2u;   // skip joints the character's LOD mask leaves out
 const uint kDrawTintLevel = 4u;  // colour characters by LOD level (paper Fig. 8)
 const uint kDrawCachedPoses = 8u;  // compose cached characters' joints from poseSource + cache data
+const uint kDrawGroupTint = 16u;   // colour characters by their group (binding 10: a uint per character)
 
 // Push constants of the joint splat (compute path for small joints). Joints too wide to splat
 // are appended to nearList[listBase …] and counted in draws[chunk].vertexCount, an indirect

@@ -1,6 +1,6 @@
-// `throng assets generate [--out DIR]`: writes the project's own default motion clips
-// (run_slow.bvh, run_fast.bvh) from the parametric gait. The committed assets/ files are
-// this command's output; a test checks that they are up to date.
+// `throng assets generate [--out DIR]`: writes the project's own default motion clips (the
+// run, walk, idle/talk and hop pairs) from the parametric gait. The committed assets/ files
+// are this command's output; a test checks that they are up to date.
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -22,7 +22,7 @@ struct AssetsOptions {
 void runGenerate(const AssetsOptions& options) {
   const std::filesystem::path dir(options.out);
   ensureWritableDirectory(dir);
-  for (const anim::GaitParams& params : {anim::slowRunGait(), anim::fastRunGait()}) {
+  for (const anim::GaitParams& params : anim::allGaits()) {
     anim::RawClip clip = anim::generateGait(params);
     const std::filesystem::path path = dir / clip.sourceName;
     writeTextFileAtomic(path, anim::formatBvh(clip));
@@ -35,7 +35,7 @@ void addAssetsCommands(CLI::App& app, int& /*exitCode*/) {
   CLI::App* assets = app.add_subcommand("assets", "The project's own default assets");
   assets->require_subcommand(1);
   CLI::App* generate = assets->add_subcommand(
-      "generate", "Write run_slow.bvh and run_fast.bvh from the parametric gait");
+      "generate", "Write the default clips (run, walk, idle/talk, hop pairs) from the parametric gait");
   auto options = std::make_shared<AssetsOptions>();
   generate->add_option("--out", options->out, "Output directory")->capture_default_str();
   generate->callback([options] { runGenerate(*options); });

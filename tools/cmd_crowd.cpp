@@ -245,14 +245,16 @@ void addBench(CLI::App& parent) {
     gpu::ContextOptions options;
     options.device = args->device;
     gpu::Context context(options);
-    std::printf("device: %s (%s)\n%-8s %9s %10s %10s %10s\n", context.info().name.c_str(),
-                context.info().driver.c_str(), "policy", "agents", "grid ms", "steer ms", "total ms");
+    std::printf("device: %s (%s)\n%-8s %9s %10s %10s %10s %10s %10s %10s\n", context.info().name.c_str(),
+                context.info().driver.c_str(), "policy", "agents", "count ms", "scan ms", "scatter ms", "grid ms",
+                "steer ms", "total ms");
     for (crowd::SteerPolicy policy : policies)
       for (uint32_t n : args->agents) {
         crowd::AvoidanceParams params;
         params.policy = policy;
         crowd::AvoidanceTiming t = crowd::benchmarkAvoidance(context, n, params, args->steps, args->density);
-        std::printf("%-8s %9u %10.3f %10.3f %10.3f\n", std::string(crowd::steerPolicyName(policy)).c_str(), n,
+        std::printf("%-8s %9u %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f\n",
+                    std::string(crowd::steerPolicyName(policy)).c_str(), n, t.countMs, t.scanMs, t.scatterMs,
                     t.gridMs, t.steerMs, t.totalMs);
         std::fflush(stdout);
       }

@@ -14,6 +14,8 @@
 #include "render/crowd_frame.h"
 #include "render/offscreen_target.h"
 #include "scene_options.h"
+#include "scene_storyboard.h"
+#include "secondary/cloth_gpu_layer.h"
 #include "stats.h"
 
 namespace throng::tools {
@@ -33,9 +35,11 @@ void runRender(RenderOptions& o) {
   std::filesystem::path outDir = o.out;
   ensureWritableDirectory(outDir);
 
+  // The cloth database is read (and checked) before the GPU starts.
+  std::unique_ptr<secondary::ClothDatabase> clothDb;
+  if (!o.scene.cloth.empty())
+    clothDb = std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(o.scene.cloth));
   anim::ClipPair clips = loadSceneClips(o.scene);
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::Crowd crowd = makeSceneCrowd(o.scene);
   synth::SpeedSchedule speeds = sceneSpeedSchedule(o.scene);
   render::Camera camera = sceneCamera(o.scene);
   logInfo(concat("clips: ", clips.description));
@@ -44,14 +48,19 @@ void runRender(RenderOptions& o) {
   contextOptions.device = o.scene.device;
   contextOptions.validation = o.validation;
   gpu::Context context(contextOptions);
-  synth::SynthPrograms programs(context, pair);
+  SceneCrowd scene(context, o.scene, clips);  // the scenario's crowd, or the storyboard's
+  const synth::SynthPrograms& programs = scene.programs();
+  const synth::CrowdSynth& synth = scene.synth();
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, sceneCacheOptions(o.scene),
-                                                  sceneLodOptions(o.scene, clips.slow.skeleton));
   render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
                                size.width, size.height, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
-  const float groundExtent = 1.6f * crowd::scenarioExtent(o.scene.scenario) + 40.0f;
+  const float groundExtent = sceneGroundExtent(o.scene);
+  std::unique_ptr<secondary::ClothLayer> cloth;
+  if (clothDb)
+    cloth = std::make_unique<secondary::ClothLayer>(context, *clothDb, scene.crowd(), render::kColorFormat,
+                                                    render::kDepthFormat, sceneClothOptions(o.scene));
+  std::vector<secondary::ClothTimings> clothTimes;
 
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
@@ -61,10 +70,13 @@ void runRender(RenderOptions& o) {
   std::future<void> pendingWrite;
   for (int frame = 0; frame < o.frames; ++frame) {
     timestamps.reset();
+    render::FrameHooks hooks;
+    if (cloth) hooks = cloth->hooks(0);
+    scene.addHooks(hooks, o.scene.dt);
     gpu::beginCommands(cmd);
     render::FrameTimestamps marks = render::recordCrowdFrame(cmd, context, programs, synth, renderer, camera,
                                                              groundExtent, targets, o.scene.dt, timestamps, 0, speeds.advance(o.scene.dt),
-                                                             o.scene.lodTint);
+                                                             o.scene.lodTint, &hooks);
     render::recordReadback(cmd, target);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
@@ -73,6 +85,7 @@ void runRender(RenderOptions& o) {
     render::FrameTimings timings = render::readFrameTimings(timestamps, marks);
     synthMs.push_back(timings.synthesisMs);
     renderMs.push_back(timings.renderMs);
+    if (cloth) clothTimes.push_back(cloth->timings(0));
     if (pendingWrite.valid()) pendingWrite.get();  // at most one PNG encoding in flight
     auto image = std::make_shared<ImageRgba8>(render::readbackImage(target));
     char name[32];
@@ -85,10 +98,32 @@ void runRender(RenderOptions& o) {
   if (pendingWrite.valid()) pendingWrite.get();
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
-  std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames, synth.crowd.count,
+  std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames, scene.count(),
               synth.jointCount(), size.width, size.height, outDir.string().c_str());
   std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n", median(synthMs),
               median(renderMs), context.info().name.c_str());
+  if (cloth) {
+    auto clothMedian = [&](double secondary::ClothTimings::*field) {
+      std::vector<double> values;
+      for (const secondary::ClothTimings& t : clothTimes) values.push_back(t.*field);
+      return median(values);
+    };
+    std::vector<double> totals;
+    for (const secondary::ClothTimings& t : clothTimes) totals.push_back(t.totalMs());
+    secondary::ClothStats s = cloth->stats();
+    std::printf("cloth (median, inside render): advance %.2f ms, mark %.2f ms, decode %.2f ms, splat %.2f ms, "
+                "draw %.2f ms; total %.2f ms  [%s]\n",
+                clothMedian(&secondary::ClothTimings::advanceMs), clothMedian(&secondary::ClothTimings::markMs),
+                clothMedian(&secondary::ClothTimings::decodeMs), clothMedian(&secondary::ClothTimings::splatMs),
+                clothMedian(&secondary::ClothTimings::drawMs), median(totals), o.scene.cloth.c_str());
+    const secondary::ClothLod& lod = cloth->gpuData().lod;
+    std::printf("cloth levels: vertices %u / %u / %u / %u, triangles %u / %u / %u / %u, bases %u / %u / %u / %u\n",
+                lod.levelVertices[0], lod.levelVertices[1], lod.levelVertices[2], lod.levelVertices[3],
+                lod.indexCount[0] / 3, lod.indexCount[1] / 3, lod.indexCount[2] / 3, lod.indexCount[3] / 3,
+                lod.levelBases[0], lod.levelBases[1], lod.levelBases[2], lod.levelBases[3]);
+    std::printf("cloth, last frame: capes per level %u / %u / %u / %u (full … splatted), %u states decoded, %u demoted\n",
+                s.capes[0], s.capes[1], s.capes[2], s.capes[3], s.usedStates, s.demoted);
+  }
   if (synth.cache.options.enabled) {
     synth::MotionCacheStats c = synth::readCacheStats(synth.cache);
     std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n", c.hits, c.misses,

@@ -3,11 +3,29 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "scene_storyboard.h"
 
 namespace throng::tools {
 
+namespace {
+void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
+  command.add_option("--storyboard", o.storyboard, "Storyboard PNG: its agents make the crowd (the storyboard scene)");
+  command.add_option("--trajectories", o.trajectories,
+                     "Tracked people ('frame ped x y' text or ETH obsmat.txt) whose path vectors the agents follow");
+  command.add_option("--legend", o.legend, "Storyboard colour legend JSON (default: DESIGN.md's colours)");
+  command.add_option("--cell", o.cell, "Storyboard: metres per storyboard pixel")->capture_default_str();
+  command.add_option("--jitter", o.jitter, "Storyboard: random offset of each agent, +- metres")->capture_default_str();
+  command.add_option("--policy", o.policy, "Storyboard avoidance: anticipatory (TTC), published (the rule) or none")
+      ->capture_default_str();
+  command.add_option("--radius", o.radius, "Storyboard: safe radius of each agent in metres")->capture_default_str();
+  command.add_option("--step-time", o.stepTime,
+                     "Storyboard: seconds per annotation step of the trajectories (default: by dataset)");
+}
+}  // namespace
+
 void addSceneOptions(CLI::App& command, SceneOptions& o) {
-  command.add_option("--scene", o.scenario.name, "Scenario: random or circle")->capture_default_str();
+  command.add_option("--scene", o.scenario.name, "Scenario: random, circle or storyboard (with --storyboard)")
+      ->capture_default_str();
   command.add_option("--characters,-n", o.characters, "Number of characters")->capture_default_str();
   command.add_option("--seed", o.scenario.seed, "Random seed of the scenario")->capture_default_str();
   command.add_option("--speed-min", o.scenario.minSpeedWeight, "Lowest speed weight w in [0,1]")->capture_default_str();
@@ -33,6 +51,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       ->capture_default_str();
   command.add_option("--lod-near-pixels", o.lodNearPixels, "Limb sphere area (pixels) for all joints")
       ->capture_default_str();
+  addStoryboardSceneOptions(command, o.story);
+  command.add_option("--cloth", o.cloth, "Compressed cloth database (.tsc from `throng cloth compress`): capes on every character");
+  command.add_flag("--cloth-tint", o.clothTint, "With --cloth, colour capes by garment level (green full, yellow mid, red coarse)");
+  command.add_flag("--cloth-full", o.clothFull, "With --cloth, draw every visible cape at full detail (no garment LOD)");
 }
 
 Size parseSize(const std::string& text) {
@@ -56,12 +78,21 @@ void validateSceneOptions(SceneOptions& o) {
     fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
   if (o.lodTint && !o.lod) fail("--lod-tint needs --lod");
   if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
+  if ((o.clothTint || o.clothFull) && o.cloth.empty()) fail("--cloth-tint and --cloth-full need --cloth");
   synth::validateCacheOptions(sceneCacheOptions(o));
-  crowd::makeScenario([&] {  // validates the scenario options on a one-character crowd
-    crowd::ScenarioOptions probe = o.scenario;
-    probe.characters = 1;
-    return probe;
-  }());
+  // --storyboard alone picks the storyboard scene (--scene defaults to random).
+  if (!o.story.storyboard.empty() && o.scenario.name == "random") o.scenario.name = "storyboard";
+  if (o.storyboard()) {
+    validateStoryboardScene(o);
+  } else {
+    if (!o.story.storyboard.empty() || !o.story.trajectories.empty())
+      fail("--storyboard and --trajectories make the storyboard scene, not '", o.scenario.name, "'");
+    crowd::makeScenario([&] {  // validates the scenario options on a one-character crowd
+      crowd::ScenarioOptions probe = o.scenario;
+      probe.characters = 1;
+      return probe;
+    }());
+  }
   sceneCamera(o);
 }
 
@@ -96,13 +127,26 @@ synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& s
   return {o.lod, synth::CoverageThresholds::levels(o.lodMidPixels, o.lodNearPixels), &skeleton};
 }
 
+float sceneExtent(const SceneOptions& o) {
+  return o.storyboard() ? o.story.extent : crowd::scenarioExtent(o.scenario);
+}
+
+float sceneGroundExtent(const SceneOptions& o) { return 1.6f * sceneExtent(o) + 40.0f; }
+
 render::Camera sceneCamera(const SceneOptions& o) {
-  render::Camera camera = render::cameraPreset(o.cameraPreset, crowd::scenarioExtent(o.scenario));
+  render::Camera camera = render::cameraPreset(o.cameraPreset, sceneExtent(o));
   if (!o.eye.empty()) camera.eye = render::parseVec3(o.eye, "--eye");
   if (!o.target.empty()) camera.target = render::parseVec3(o.target, "--target");
   if (o.fovY != 0.0f) camera.fovYDegrees = o.fovY;
   if (glm::length(camera.eye - camera.target) < 1e-3f) fail("--eye and --target must differ");
   return camera;
+}
+
+secondary::ClothLayerOptions sceneClothOptions(const SceneOptions& o) {
+  secondary::ClothLayerOptions options;
+  options.lod.enabled = !o.clothFull;
+  options.tintLevels = o.clothTint;
+  return options;
 }
 
 }  // namespace throng::tools

@@ -9,9 +9,22 @@
 #include "anim/default_clips.h"
 #include "crowd/scenario.h"
 #include "render/camera.h"
+#include "secondary/cloth_gpu_layer.h"
 #include "synth/crowd_synth.h"
 
 namespace throng::tools {
+
+// The "storyboard" scene: a storyboard's agents follow path vectors of tracked people, with
+// collision avoidance, one clip pair per clip set (scene_storyboard.h).
+struct StoryboardSceneOptions {
+  std::string storyboard, trajectories, legend;
+  float cell = 0.5f;                   // metres per storyboard pixel
+  float jitter = 0.1f;                 // ± metres
+  std::string policy = "anticipatory";  // published (rule), anticipatory (ttc) or none
+  float radius = 0.3f;                 // safe radius (m)
+  float stepTime = 0.0f;               // seconds per annotation step; 0: by dataset
+  float extent = 0.0f;                 // set by validation: half the storyboard's larger side (m)
+};
 
 struct SceneOptions {
   crowd::ScenarioOptions scenario;
@@ -31,6 +44,11 @@ struct SceneOptions {
   bool lodTint = false;         // colour characters by LOD level
   float lodMidPixels = synth::kDefaultMidPixels;    // torso sphere area for the mid level
   float lodNearPixels = synth::kDefaultNearPixels;  // limb sphere area for all joints
+  std::string cloth;            // compressed cloth database (.tsc): every character wears its cape
+  bool clothTint = false;       // colour capes by garment level
+  bool clothFull = false;       // every visible cape at full detail (no garment LOD)
+  StoryboardSceneOptions story;
+  bool storyboard() const { return scenario.name == "storyboard"; }
 };
 
 void addSceneOptions(CLI::App& command, SceneOptions& options);
@@ -50,5 +68,9 @@ synth::MotionCacheOptions sceneCacheOptions(const SceneOptions& options);
 synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& options);
 synth::LodOptions sceneLodOptions(const SceneOptions& options, const anim::Skeleton& skeleton);
 render::Camera sceneCamera(const SceneOptions& options);
+// Half the side (or the radius) of the ground the crowd starts on, and the ground drawn.
+float sceneExtent(const SceneOptions& options);
+float sceneGroundExtent(const SceneOptions& options);
+secondary::ClothLayerOptions sceneClothOptions(const SceneOptions& options);
 
 }  // namespace throng::tools

@@ -77,17 +77,23 @@ void ViewSession::run() {
     }
     anim::SpeedRetarget retarget = scene_->speeds.advance(dt);
     if (retarget.epoch != 0) ++speedChanges_;
+    render::FrameHooks clothHooks;
+    if (scene_->cloth) clothHooks = scene_->cloth->hooks(frame->slot);
+    if (scene_->steered) scene_->steered->addHooks(clothHooks, dt);  // storyboard steering
     marks_[frame->slot] = render::recordCrowdFrame(
-        frame->cmd, context_, *scene_->programs, scene_->synth, renderer_, camera_,
+        frame->cmd, context_, framePrograms(*scene_), frameSynth(*scene_), renderer_, camera_,
         scene_->groundExtent, frame->targets, dt, *frame->timestamps, frame->slot, retarget,
-        panel_.lodTint && scene_->synth.lod);
+        panel_.lodTint && frameSynth(*scene_).lod, &clothHooks);
     if (withPanel) {
       panelRect_ = drawPanel(panel_, panelInfo());
       imgui_->record(frame->cmd, presenter_.swapchain(), frame->imageIndex,
                      presenter_.generation());
     }
     panelMarks_[frame->slot] = frame->timestamps->write(frame->cmd);
-    lod_.record(frame->cmd, scene_->synth, frame->slot, stats_.frames() + 1);
+    if (scene_->steered && scene_->steered->drawMasks())
+      lod_.record(frame->cmd, *scene_->steered->drawMasks(), characterCount(*scene_), frame->slot, stats_.frames() + 1);
+    else
+      lod_.record(frame->cmd, frameSynth(*scene_), frame->slot, stats_.frames() + 1);
     pending_[frame->slot] = true;
 
     const bool lastFrame = o_.frames > 0 && stats_.frames() + 1 >= uint64_t(o_.frames);
@@ -98,7 +104,7 @@ void ViewSession::run() {
     stats_.frameDone(wall);
     if ((titleSeconds_ += wall) >= 1.0) {
       titleSeconds_ = 0.0;
-      window_.setTitle(concat("throng view - ", scene_->synth.crowd.count, " characters - ",
+      window_.setTitle(concat("throng view - ", characterCount(*scene_), " characters - ",
                               int(stats_.fps() + 0.5), " fps"));
     }
     if (capture) saveScreenshot(requested ? fs::path(o_.screenshot) : nextScreenshotPath());

@@ -25,10 +25,14 @@ LodStats fullDetailStats(uint32_t characters, uint32_t jointsPerCharacter) {
 
 void LodReadback::record(VkCommandBuffer cmd, const synth::CrowdSynth& synth, uint32_t slot,
                          uint64_t frame) {
-  if (!synth.lod) return;
+  if (synth.lod) record(cmd, synth.masks, synth.crowd.count, slot, frame);
+}
+
+void LodReadback::record(VkCommandBuffer cmd, const gpu::Buffer& masks, uint32_t count, uint32_t slot,
+                         uint64_t frame) {
   THRONG_CHECK(slot < render::kPresenterFrames, "frame slot ", slot, " out of range");
   Slot& s = slots_[slot];
-  const VkDeviceSize bytes = VkDeviceSize(synth.crowd.count) * sizeof(synth::CoverageMask);
+  const VkDeviceSize bytes = VkDeviceSize(count) * sizeof(synth::CoverageMask);
   // The slot's fence was waited and its copy collected: its old buffer is free to replace.
   if (!s.buffer || s.buffer.size() < bytes)
     s.buffer = gpu::Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -39,13 +43,13 @@ void LodReadback::record(VkCommandBuffer cmd, const synth::CrowdSynth& synth, ui
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        0, 1, &before, 0, nullptr, 0, nullptr);
   VkBufferCopy region{0, 0, bytes};
-  vkCmdCopyBuffer(cmd, synth.masks.get(), s.buffer.get(), 1, &region);
+  vkCmdCopyBuffer(cmd, masks.get(), s.buffer.get(), 1, &region);
   VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   after.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   after.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                        &after, 0, nullptr, 0, nullptr);
-  s.count = synth.crowd.count;
+  s.count = count;
   s.frame = frame;
   s.pending = true;
 }

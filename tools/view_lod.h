@@ -31,6 +31,8 @@ class LodReadback {
   // At the end of frame `frame` in `slot` (whose fence has been waited): copies synth.masks
   // into the slot's buffer. Nothing when the crowd has no LOD.
   void record(VkCommandBuffer cmd, const synth::CrowdSynth& synth, uint32_t slot, uint64_t frame);
+  // The same for any per-character masks buffer (several motion pairs draw from one).
+  void record(VkCommandBuffer cmd, const gpu::Buffer& masks, uint32_t count, uint32_t slot, uint64_t frame);
   // After the slot's fence: sums what it copied; the newest frame collected wins.
   void collect(uint32_t slot);
   // Forget pending copies and the last statistics (a new crowd; the GPU is idle).

@@ -3,10 +3,13 @@
 // can re-spawn (count, scenario, seed, speed range, motion cache, coverage LOD), with its speed
 // changes and live LOD thresholds.
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "gpu/context.h"
+#include "render/steered_crowd.h"
 #include "scene_options.h"
+#include "secondary/cloth_gpu_layer.h"
 #include "synth/crowd_synth.h"
 
 namespace throng::tools {
@@ -14,20 +17,31 @@ namespace throng::tools {
 struct ViewScene {
   anim::MotionPair pair;  // CrowdSynth points at it: ViewScene never moves (held by unique_ptr)
   anim::Skeleton skeleton;  // the slow clip's: the coverage LOD finds the body parts in it
+  std::optional<anim::ClipPair> userClips;  // --slow/--fast, for the storyboard scene
   std::string clipDescription;
   SceneOptions options;  // the scene as last spawned
   std::unique_ptr<synth::SynthPrograms> programs;
-  synth::CrowdSynth synth;
+  synth::CrowdSynth synth;  // the plain scenarios' crowd
+  std::unique_ptr<render::SteeredCrowd> steered;  // the storyboard scene's, instead of `synth`
   synth::SpeedSchedule speeds;  // its period and range may be changed live
   float groundExtent = 0.0f;
   double simulatedSeconds = 0.0;
+  // --cloth: the database, and the capes of the current crowd (rebuilt with it).
+  std::unique_ptr<secondary::ClothDatabase> clothDb;
+  std::unique_ptr<secondary::ClothLayer> cloth;
+  VkFormat colorFormat = VK_FORMAT_UNDEFINED;  // the target the capes are drawn into
 };
 
-// The ground drawn around a scenario (the same as `throng render`'s).
-float groundExtentFor(const crowd::ScenarioOptions& scenario);
+// What the frame synthesizes and draws, for either kind of scene.
+inline const synth::CrowdSynth& frameSynth(const ViewScene& s) { return s.steered ? s.steered->synth() : s.synth; }
+inline const synth::SynthPrograms& framePrograms(const ViewScene& s) {
+  return s.steered ? s.steered->programs() : *s.programs;
+}
+inline uint32_t characterCount(const ViewScene& s) { return s.steered ? s.steered->count() : s.synth.crowd.count; }
+
 
 std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const SceneOptions& options,
-                                         anim::ClipPair clips);
+                                         anim::ClipPair clips, VkFormat colorFormat);
 
 // Replaces the crowd by a new one for `options` (waits for the GPU first). Throws Error for
 // impossible options and then leaves the scene as it was.

@@ -9,6 +9,7 @@
 #include "core/file_io.h"
 #include "core/log.h"
 #include "render/offscreen_target.h"
+#include "stats.h"
 
 namespace throng::tools {
 namespace fs = std::filesystem;
@@ -16,8 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // Keys 1-4 and the panel's preset buttons: the named preset framed for the current crowd.
-render::Camera presetCamera(int index, const crowd::ScenarioOptions& scenario) {
-  return render::cameraPreset(kPresetNames[index], crowd::scenarioExtent(scenario));
+render::Camera presetCamera(int index, const SceneOptions& scene) {
+  return render::cameraPreset(kPresetNames[index], sceneExtent(scene));
 }
 
 gpu::ContextOptions contextOptionsFor(const ViewOptions& o, const render::Window& window) {
@@ -38,7 +39,7 @@ ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
       context_(contextOptionsFor(o, window_)),
       presenter_(context_, window_, o.vsync),
       renderer_(context_, presenter_.swapchain().format(), render::kDepthFormat),
-      scene_(makeViewScene(context_, o.scene, std::move(clips))),
+      scene_(makeViewScene(context_, o.scene, std::move(clips), presenter_.swapchain().format())),
       lod_(context_),
       camera_(sceneCamera(o.scene)),
       initialCamera_(camera_),
@@ -151,7 +152,7 @@ void ViewSession::handle(render::ViewAction action) {
 
 void ViewSession::applyPanel() {
   if (panel_.resetCamera) camera_ = initialCamera_;
-  if (panel_.preset >= 0) camera_ = presetCamera(panel_.preset, scene_->options.scenario);
+  if (panel_.preset >= 0) camera_ = presetCamera(panel_.preset, scene_->options);
   panel_.resetCamera = false;
   panel_.preset = -1;
   presenter_.setVsync(panel_.vsync);
@@ -224,6 +225,7 @@ void ViewSession::collectTimes(uint32_t slot) {
   std::vector<uint64_t> ticks = pool.fetch();
   stats_.passTimes({t.synthesisMs, t.renderMs,
                     pool.millisecondsBetween(ticks, marks_[slot].rendered, panelMarks_[slot])});
+  if (scene_->cloth) clothMs_.push_back(scene_->cloth->timings(slot).totalMs());
 }
 
 void ViewSession::saveScreenshot(const fs::path& path) {
@@ -241,12 +243,12 @@ PanelInfo ViewSession::panelInfo() const {
   info.clips = scene_->clipDescription;
   info.width = presenter_.swapchain().extent().width;
   info.height = presenter_.swapchain().extent().height;
-  info.characters = scene_->synth.crowd.count;
-  info.jointsPerCharacter = scene_->synth.jointCount();
+  info.characters = characterCount(*scene_);
+  info.jointsPerCharacter = frameSynth(*scene_).jointCount();
   info.lod = lodStats();
-  info.lodEnabled = scene_->synth.lod;
-  info.cacheEnabled = scene_->synth.cache.options.enabled;
-  if (info.cacheEnabled) info.cache = synth::readCacheStats(scene_->synth.cache);
+  info.lodEnabled = frameSynth(*scene_).lod;
+  info.cacheEnabled = frameSynth(*scene_).cache.options.enabled;
+  if (info.cacheEnabled) info.cache = synth::readCacheStats(frameSynth(*scene_).cache);
   info.stats = &stats_;
   info.camera = &camera_;
   return info;
@@ -257,12 +259,14 @@ void ViewSession::report() {
   PassTimes median = stats_.medians();
   VkExtent2D extent = presenter_.swapchain().extent();
   std::printf("viewed %llu frames of %u characters (%u joints each) at %ux%u, %s: %.1f fps\n",
-              static_cast<unsigned long long>(stats_.frames()), scene_->synth.crowd.count,
-              scene_->synth.jointCount(), extent.width, extent.height,
+              static_cast<unsigned long long>(stats_.frames()), characterCount(*scene_),
+              frameSynth(*scene_).jointCount(), extent.width, extent.height,
               render::presentModeName(presenter_.swapchain().presentMode()), stats_.averageFps());
   std::printf(
       "GPU time per frame (median): synthesis %.2f ms, render %.2f ms, panel %.2f ms  [%s]\n",
       median.synthesisMs, median.renderMs, median.panelMs, context_.info().name.c_str());
+  if (scene_->cloth)
+    std::printf("cloth (median, inside render): %.2f ms\n", tools::median(clothMs_));
   if (o_.printStats) {
     nlohmann::json j;
     j["frames"] = stats_.frames();
@@ -271,18 +275,18 @@ void ViewSession::report() {
     j["device"] = context_.info().name;
     j["presentMode"] = render::presentModeName(presenter_.swapchain().presentMode());
     j["clock"] = fixedClock_ ? "fixed" : "real";
-    j["characters"] = scene_->synth.crowd.count;
-    j["jointsPerCharacter"] = scene_->synth.jointCount();
+    j["characters"] = characterCount(*scene_);
+    j["jointsPerCharacter"] = frameSynth(*scene_).jointCount();
     LodStats lod = lodStats();
     j["activeJoints"] = lod.activeJoints;
-    j["lod"] = {{"enabled", scene_->synth.lod},
+    j["lod"] = {{"enabled", frameSynth(*scene_).lod},
                 {"activeJoints", lod.activeJoints},
                 {"levels", lod.levels},
                 {"midPixels", scene_->options.lodMidPixels},
                 {"nearPixels", scene_->options.lodNearPixels},
-                {"tint", panel_.lodTint && scene_->synth.lod}};
-    if (scene_->synth.cache.options.enabled) {
-      synth::MotionCacheStats c = synth::readCacheStats(scene_->synth.cache);
+                {"tint", panel_.lodTint && frameSynth(*scene_).lod}};
+    if (frameSynth(*scene_).cache.options.enabled) {
+      synth::MotionCacheStats c = synth::readCacheStats(frameSynth(*scene_).cache);
       j["cache"] = {{"hits", c.hits},           {"misses", c.misses},
                     {"evictions", c.evictions}, {"entries", c.entries},
                     {"bytesUsed", c.bytesUsed}, {"budgetBytes", c.budgetBytes}};
@@ -306,6 +310,11 @@ void ViewSession::report() {
     j["paused"] = panel_.paused;
     j["speedChanges"] = speedChanges_;
     j["respawns"] = respawns_;
+    if (scene_->cloth) {
+      secondary::ClothStats c = scene_->cloth->stats();
+      j["cloth"] = {{"file", scene_->options.cloth}, {"gpuMs", tools::median(clothMs_)},
+                    {"usedStates", c.usedStates}, {"demoted", c.demoted}};
+    }
     j["validationMessages"] = messages;
     j["screenshot"] = screenshotWritten_;
     std::printf("%s\n", j.dump().c_str());

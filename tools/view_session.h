@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "gpu/context.h"
 #include "render/crowd_frame.h"
@@ -38,8 +39,8 @@ class ViewSession {
   void saveScreenshot(const std::filesystem::path& path);
   // With the coverage LOD: the masks of the newest frame read back; without it every joint.
   LodStats lodStats() const {
-    return scene_->synth.lod ? lod_.latest()
-                             : fullDetailStats(scene_->synth.crowd.count, scene_->synth.jointCount());
+    return frameSynth(*scene_).lod ? lod_.latest()
+                                   : fullDetailStats(characterCount(*scene_), frameSynth(*scene_).jointCount());
   }
   PanelInfo panelInfo() const;
 
@@ -65,6 +66,7 @@ class ViewSession {
   std::string screenshotWritten_;
   uint64_t speedChanges_ = 0, respawns_ = 0;
   double titleSeconds_ = 0.0;
+  std::vector<double> clothMs_;  // GPU time of the cloth passes per completed frame
 };
 
 }  // namespace throng::tools

@@ -14,12 +14,26 @@ Clip gaitClip(const GaitParams& params) {
 }
 
 float speedOf(const Clip& clip) { return glm::length(clip.cycleTravel) / clip.duration(); }
+
+ClipPair gaitPair(const GaitParams& slow, const GaitParams& fast, const char* what) {
+  ClipPair pair{gaitClip(slow), gaitClip(fast), {}};
+  pair.description = concat("built-in ", what, ": slow ", speedOf(pair.slow), " m/s, fast ", speedOf(pair.fast), " m/s");
+  return pair;
+}
 }  // namespace
 
-ClipPair defaultRunPair() {
-  ClipPair pair{gaitClip(slowRunGait()), gaitClip(fastRunGait()), {}};
-  pair.description = concat("built-in run cycles: slow ", speedOf(pair.slow), " m/s, fast ", speedOf(pair.fast), " m/s");
-  return pair;
+ClipPair defaultRunPair() { return gaitPair(slowRunGait(), fastRunGait(), "run cycles"); }
+ClipPair defaultWalkPair() { return gaitPair(slowWalkGait(), fastWalkGait(), "walk cycles"); }
+ClipPair defaultTalkPair() { return gaitPair(idleGait(), talkGait(), "idle/talk cycles"); }
+ClipPair defaultJumpPair() { return gaitPair(slowHopGait(), fastHopGait(), "hop cycles"); }
+
+std::vector<ClipPair> defaultClipSets() {
+  std::vector<ClipPair> sets;
+  sets.push_back(defaultWalkPair());
+  sets.push_back(defaultRunPair());
+  sets.push_back(defaultTalkPair());
+  sets.push_back(defaultJumpPair());
+  return sets;
 }
 
 ClipPair loadClipPair(const std::filesystem::path& slow, const std::filesystem::path& fast,

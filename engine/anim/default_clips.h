@@ -1,8 +1,9 @@
 #pragma once
-// The built-in slow and fast run cycles (the parametric gait that also writes assets/*.bvh),
-// ready to bake: the default scene needs no file on disk.
+// The built-in clip pairs (the parametric gait that also writes assets/*.bvh), ready to bake:
+// the default scene needs no file on disk.
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "anim/clip.h"
 #include "anim/clip_prep.h"
@@ -16,6 +17,12 @@ struct ClipPair {
 };
 
 ClipPair defaultRunPair();
+ClipPair defaultWalkPair();  // slow and fast walk
+ClipPair defaultTalkPair();  // idle (w = 0) and talk (w = 1), standing: no travel
+ClipPair defaultJumpPair();  // slow and fast forward hops
+
+// The pair of each storyboard clip set, in the storyboard's action order: walk, run, talk, jump.
+std::vector<ClipPair> defaultClipSets();
 
 // --slow/--fast files: parsed, converted to metres, resampled, loops cut, phases aligned.
 ClipPair loadClipPair(const std::filesystem::path& slow, const std::filesystem::path& fast,

@@ -1,6 +1,7 @@
-// The running gait: the root follows a designed path; the upper body and arms follow
-// periodic curves; each leg is solved by inverse kinematics while its foot is planted and
-// follows swing keys in the air. Everything is computed in double and rounded to float only
+// The gaits: the root follows a designed path; the upper body and arms follow periodic
+// curves; each leg is solved by inverse kinematics while its foot is planted and follows swing
+// keys in the air (an alternating run or walk, a two-footed hop, or planted throughout when
+// standing). Everything is computed in double and rounded to float only
 // when stored, so a last-bit difference in a libm call almost never changes the BVH text.
 #include "anim/gait.h"
 
@@ -77,9 +78,15 @@ double smoothstep(double a, double b, double x) {
   return t * t * (3.0 - 2.0 * t);
 }
 
+// Steps per cycle: two alternating feet, one hop, none standing.
+int stepsPerCycle(const GaitParams& p) {
+  return p.kind == GaitKind::Alternate ? 2 : p.kind == GaitKind::Hop ? 1 : 0;
+}
+
 // 1 while the foot is planted, 0 in mid-swing; the changes happen in the air, where the foot
 // is free to move.
 double stanceWeight(const GaitParams& p, double u) {
+  if (p.kind == GaitKind::Stand) return 1.0;
   u = wrapPhase(u);
   const double s = p.stanceFraction;
   if (u <= s) return 1.0;
@@ -104,6 +111,7 @@ LegAngles operator*(double k, LegAngles a) {
 
 // A guess for the solver: the thigh sweeps back through the stance, the knee bent.
 LegAngles stanceSeed(const GaitParams& p, double u) {
+  if (p.kind == GaitKind::Stand) return {0.0, 3.0, 10.0};
   return {25.0 - 45.0 * u / p.stanceFraction, 3.0, 35.0};
 }
 
@@ -166,21 +174,42 @@ void poseArm(const GaitParams& p, std::vector<double>& pose, int shoulder, doubl
   setRotation(pose, shoulder + 4, 0.0, 0.0, side * -30.0);  // loosely curled fingers
 }
 
-// The root's path at absolute phase t (any real; one cycle further is 2 steps further).
+// A standing character's arm: gestures that rise and fall `gestureBeats` times a cycle, the
+// elbow bending as the arm rises; the two arms out of step.
+void gestureArm(const GaitParams& p, std::vector<double>& pose, int shoulder, double side, double t,
+                double chestPitch) {
+  const double phase = kTwoPi * (p.gestureBeats * t + (side > 0.0 ? 0.0 : 0.37));
+  const double rise = 0.5 + 0.5 * std::sin(phase);
+  const double flexion = p.shoulderMean + p.gestureRaise * rise;
+  const double elbow = p.elbowMean + p.gestureElbow * (0.5 + 0.5 * std::sin(phase + 0.9));
+  setRotation(pose, shoulder, 0.0, 0.0, side * 2.0 * rise);
+  setRotation(pose, shoulder + 1, -flexion - chestPitch, side * -(15.0 + 20.0 * rise),
+              side * (p.armAbduction + 10.0 * rise));
+  setRotation(pose, shoulder + 2, -elbow, side * -20.0 * rise, 0.0);
+  setRotation(pose, shoulder + 3, -10.0 - 15.0 * rise, 0.0, side * -5.0);
+  setRotation(pose, shoulder + 4, 0.0, 0.0, side * -30.0 * (1.0 - 0.6 * rise));  // fingers open as it rises
+}
+
+// The root's path at absolute phase t (any real; one cycle further is a cycle's travel further).
 glm::dvec3 rootPosition(const GaitParams& p, double t) {
+  if (p.kind == GaitKind::Stand) {  // a slow weight shift from foot to foot, dipping as it passes
+    return {p.sway * std::sin(kTwoPi * t), p.rootHeight - p.bob * std::cos(2.0 * kTwoPi * t), 0.0};
+  }
   const double s = p.stanceFraction;
+  const double steps = stepsPerCycle(p);
   const double cycleTravel = p.speed * p.cycleFrames * p.frameTime;
-  const double twice = 2.0 * kTwoPi * (t - 0.5 * s);  // 0 at each mid-stance
-  return {p.sway * std::cos(kTwoPi * (t - 0.5 * s)), p.rootHeight - p.bob * std::cos(twice),
-          cycleTravel * (t - p.speedDip / (2.0 * kTwoPi) * std::sin(twice))};
+  const double twice = steps * kTwoPi * (t - 0.5 * s);  // 0 at each mid-stance
+  const double sway = p.kind == GaitKind::Alternate ? p.sway * std::cos(kTwoPi * (t - 0.5 * s)) : 0.0;
+  return {sway, p.rootHeight - p.bob * std::cos(twice),
+          cycleTravel * (t - p.speedDip / (steps * kTwoPi) * std::sin(twice))};
 }
 
 // Pelvis, spine, head and arms at phase t, with the root in place; legs not yet set.
 std::vector<double> upperPose(const GaitParams& p, double t) {
   std::vector<double> pose(size_t(kChannelCount), 0.0);
   const double s = p.stanceFraction;
-  const double twist = std::cos(kTwoPi * (t + 0.03));               // +1 just before left touchdown
-  const double midStance = std::cos(2.0 * kTwoPi * (t - 0.5 * s));  // +1 at each mid-stance
+  const double twist = std::cos(kTwoPi * (t + 0.03));  // +1 just before left touchdown
+  const double midStance = std::cos(stepsPerCycle(p) * kTwoPi * (t - 0.5 * s));  // +1 at each mid-stance
   const double pelvisPitch = p.pelvisTilt + 0.25 * p.bounceTilt * midStance;
   const double pelvisYaw = -p.pelvisYaw * twist;  // negative: the left hip forward
   const double pelvisRoll = p.pelvisRoll * std::cos(kTwoPi * (t - 0.5 * s));
@@ -202,8 +231,19 @@ std::vector<double> upperPose(const GaitParams& p, double t) {
   const double residualRoll = pelvisRoll + spineZ;
   setRotation(pose, kNeck, -0.5 * chestPitch, -0.5 * chestYaw, -0.5 * residualRoll);
   setRotation(pose, kHead, -0.4 * chestPitch, -0.5 * chestYaw, -0.5 * residualRoll);
-  poseArm(p, pose, kLeftShoulder, 1.0, t, chestPitch);
-  poseArm(p, pose, kRightShoulder, -1.0, t - 0.5, chestPitch);
+  if (p.headNod != 0.0) {  // two nods per gesture
+    const double nod = p.headNod * std::sin(kTwoPi * (2.0 * p.gestureBeats * t + 0.2));
+    setRotation(pose, kNeck, -0.5 * chestPitch + 0.4 * nod, -0.5 * chestYaw, -0.5 * residualRoll);
+    setRotation(pose, kHead, -0.4 * chestPitch + 0.6 * nod, -0.5 * chestYaw, -0.5 * residualRoll);
+  }
+  if (p.kind == GaitKind::Stand) {
+    gestureArm(p, pose, kLeftShoulder, 1.0, t, chestPitch);
+    gestureArm(p, pose, kRightShoulder, -1.0, t, chestPitch);
+  } else {
+    // Alternating feet: each arm swings against its leg; a hop: both arms swing together.
+    poseArm(p, pose, kLeftShoulder, 1.0, t, chestPitch);
+    poseArm(p, pose, kRightShoulder, -1.0, p.kind == GaitKind::Hop ? t : t - 0.5, chestPitch);
+  }
   return pose;
 }
 
@@ -215,16 +255,24 @@ struct LegSide {
 };
 const LegSide kLeft{kLeftUpLeg, kLeftToeBase, 1.0, 0.0};
 const LegSide kRight{kRightUpLeg, kRightToeBase, -1.0, 0.5};
+const LegSide kRightHop{kRightUpLeg, kRightToeBase, -1.0, 0.0};
 
-// Where the ball of foot lands in stance number n (n even: left, odd: right; stance n
-// starts at phase n/2).
-glm::dvec3 contactPoint(const GaitParams& p, int n) {
+LegSide rightLeg(const GaitParams& p) { return p.kind == GaitKind::Alternate ? kRight : kRightHop; }
+
+// Stance number n of the alternating feet (even: left, odd: right; stance n starts at phase n/2).
+int alternateStance(const LegSide& leg, int k) { return 2 * k + (leg.side > 0 ? 0 : 1); }
+
+// Where the ball of foot of `leg` lands at its touchdown number k (the one at phase
+// k + leg.offset): alternate feet land half a cycle's travel apart, hops a whole one.
+glm::dvec3 contactPoint(const GaitParams& p, const LegSide& leg, int k) {
+  if (p.kind == GaitKind::Stand) return {leg.side * p.stanceWidth, kBallHeight, p.footForward};
   const double s = p.stanceFraction;
-  const double step = 0.5 * p.speed * p.cycleFrames * p.frameTime;
-  const double side = (n % 2 == 0) ? 1.0 : -1.0;
+  const double cycleTravel = p.speed * p.cycleFrames * p.frameTime;
   const double start = rootPosition(p, 0.0).z;
   const double landing = start + p.reach * (rootPosition(p, s).z - start);
-  return {side * p.stanceWidth, kBallHeight, landing + n * step};
+  if (p.kind == GaitKind::Hop) return {leg.side * p.stanceWidth, kBallHeight, landing + k * cycleTravel};
+  const double step = 0.5 * p.speed * p.cycleFrames * p.frameTime;
+  return {leg.side * p.stanceWidth, kBallHeight, landing + alternateStance(leg, k) * step};
 }
 
 glm::dvec3 ballPosition(const GaitParams& p, const Skeleton& skeleton, const LegSide& leg, double t,
@@ -239,9 +287,9 @@ glm::dvec3 ballPosition(const GaitParams& p, const Skeleton& skeleton, const Leg
 // (the tests then see the foot miss its contact). A fixed iteration count keeps the result,
 // and so the generated file, reproducible.
 LegAngles solveLeg(const GaitParams& p, const Skeleton& skeleton, const LegSide& leg, double t,
-                   int stance) {
-  const glm::dvec3 target = contactPoint(p, stance);
-  LegAngles a = stanceSeed(p, t - 0.5 * stance);
+                   int touchdown) {
+  const glm::dvec3 target = contactPoint(p, leg, touchdown);
+  LegAngles a = stanceSeed(p, p.kind == GaitKind::Alternate ? t - 0.5 * alternateStance(leg, touchdown) : t - touchdown);
   constexpr double kStep = 1e-4;     // degrees, for the finite-difference Jacobian
   constexpr double kDamping = 1e-8;  // (m/deg)^2: negligible unless the leg is straight
   for (int iteration = 0; iteration < 16; ++iteration) {
@@ -265,11 +313,12 @@ LegAngles solveLeg(const GaitParams& p, const Skeleton& skeleton, const LegSide&
 // The leg at absolute phase t: solved while planted, and in the air a curve through the
 // swing keys that joins the solved toe-off and next touchdown without a jump in angle or rate.
 LegAngles legAngles(const GaitParams& p, const Skeleton& skeleton, const LegSide& leg, double t) {
+  if (p.kind == GaitKind::Stand) return solveLeg(p, skeleton, leg, t, 0);
   const double s = p.stanceFraction;
   const double local = t - leg.offset;
   const double touchdown = std::floor(local);
   const double u = local - touchdown;
-  const int stance = 2 * int(touchdown) + (leg.side > 0 ? 0 : 1);
+  const int stance = int(touchdown);
   const double t0 = touchdown + leg.offset;  // absolute phase of this stance's touchdown
   if (u <= s) return solveLeg(p, skeleton, leg, t, stance);
 
@@ -277,8 +326,8 @@ LegAngles legAngles(const GaitParams& p, const Skeleton& skeleton, const LegSide
   auto solved = [&](double e, int n) { return solveLeg(p, skeleton, leg, t0 + e, n); };
   const LegAngles off = solved(s, stance);
   const LegAngles offRate = (0.5 / h) * (solved(s + h, stance) - solved(s - h, stance));
-  const LegAngles on = solved(1.0, stance + 2);
-  const LegAngles onRate = (0.5 / h) * (solved(1.0 + h, stance + 2) - solved(1.0 - h, stance + 2));
+  const LegAngles on = solved(1.0, stance + 1);
+  const LegAngles onRate = (0.5 / h) * (solved(1.0 + h, stance + 1) - solved(1.0 - h, stance + 1));
   auto curve = [&](const std::vector<GaitKey>& keys, double LegAngles::*angle) {
     return swingCurve(keys, {s, off.*angle}, offRate.*angle, {1.0, on.*angle}, onRate.*angle, u);
   };
@@ -289,15 +338,20 @@ LegAngles legAngles(const GaitParams& p, const Skeleton& skeleton, const LegSide
 
 std::vector<double> fullPose(const GaitParams& p, const Skeleton& skeleton, double t) {
   std::vector<double> pose = upperPose(p, t);
-  for (const LegSide& leg : {kLeft, kRight}) {
+  for (const LegSide& leg : {kLeft, rightLeg(p)}) {
     poseLeg(p, pose, leg.upLeg, leg.side, t - leg.offset, legAngles(p, skeleton, leg, t));
   }
   return pose;
 }
 
 void checkParams(const GaitParams& p) {
-  THRONG_CHECK(p.cycleFrames > 0 && p.stanceFraction > 0.0 && p.stanceFraction < 0.5, "gait '",
-               p.name, "' needs frames and a stance shorter than half a cycle");
+  THRONG_CHECK(p.cycleFrames > 0, "gait '", p.name, "' needs frames");
+  if (p.kind == GaitKind::Stand) {
+    THRONG_CHECK(p.speed == 0.0 && p.gestureBeats >= 0, "standing gait '", p.name, "' must not travel");
+  } else {
+    THRONG_CHECK(p.stanceFraction > 0.0 && p.stanceFraction < 0.8, "gait '", p.name,
+                 "' needs a stance between 0 and 0.8 of a cycle");
+  }
 }
 
 }  // namespace

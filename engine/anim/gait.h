@@ -1,6 +1,7 @@
 #pragma once
-// A parametric running gait: the project's own slow and fast run cycles (assets/run_*.bvh),
-// generated instead of captured so that they carry no third-party licence.
+// A parametric gait: the project's own clip pairs (assets/*.bvh), generated instead of
+// captured so that they carry no third-party licence: slow and fast run, slow and fast walk,
+// standing idle and talking (zero travel), a slow and a fast forward hop (both feet together).
 //
 // Skeleton (25 joints, metres, Y up, facing and travelling along +z, rest pose standing with
 // the arms hanging down, about 1.75 m tall):
@@ -30,6 +31,11 @@
 
 namespace throng::anim {
 
+// Alternate: the feet take turns (a run with a flight phase when the stance is under half a
+// cycle, a walk with double support when over). Hop: both feet land and take off together,
+// one hop per cycle. Stand: both feet stay planted; the arms gesture.
+enum class GaitKind { Alternate, Hop, Stand };
+
 // One key of a periodic curve: phase in [0, 1), value in degrees.
 struct GaitKey {
   double phase = 0.0;
@@ -38,13 +44,14 @@ struct GaitKey {
 
 struct GaitParams {
   std::string name;     // "run_slow": the clip's sourceName is name + ".bvh"
+  GaitKind kind = GaitKind::Alternate;
   int cycleFrames = 0;  // one cycle = two steps, an exact number of frames
   double frameTime = 1.0 / 30.0;
   double stanceFraction = 0.0;  // of a cycle, per foot; the rest of each step is flight
   double speed = 0.0;           // m/s, mean forward speed of the root
   double speedDip = 0.0;        // relative slow-down of the root at each mid-stance
   double rootHeight = 0.0;      // mean height of the root (Hips), metres
-  double bob = 0.0;             // vertical amplitude: lowest at mid-stance, highest in flight
+  double bob = 0.0;             // vertical amplitude: lowest at mid-stance (negative: highest, a walk)
   double sway = 0.0;            // lateral amplitude, towards the planted foot
   double reach = 0.0;           // share of the stance travel the ball lands ahead of the root
   double stanceWidth = 0.0;     // |x| of a planted ball of foot
@@ -68,10 +75,25 @@ struct GaitParams {
   double elbowMean = 0.0;           // mean elbow flexion
   double elbowSwing = 0.0;          // extra flexion when the arm is forward
   double armAbduction = 0.0;
+  // Stand: the balls of the feet this far ahead of the root; gestures of the arms (beats per
+  // cycle, how far each arm rises and how much the elbow bends and opens), head nods.
+  double footForward = 0.0;
+  int gestureBeats = 0;
+  double gestureRaise = 0.0;
+  double gestureElbow = 0.0;
+  double headNod = 0.0;
 };
 
-GaitParams slowRunGait();  // ≈ 2.5 m/s, 2.6 steps/s
-GaitParams fastRunGait();  // ≈ 4.5 m/s, 3.0 steps/s, longer stride, more lean
+GaitParams slowRunGait();   // ≈ 2.5 m/s, 2.6 steps/s
+GaitParams fastRunGait();   // ≈ 4.5 m/s, 3.0 steps/s, longer stride, more lean
+GaitParams slowWalkGait();  // ≈ 1.0 m/s, 1.8 steps/s
+GaitParams fastWalkGait();  // ≈ 1.6 m/s, 2.3 steps/s
+GaitParams idleGait();      // standing, weight shift, arms at rest, no travel
+GaitParams talkGait();      // standing, arm gestures and nods, no travel
+GaitParams slowHopGait();   // forward hops with both feet, ≈ 0.8 m/s
+GaitParams fastHopGait();   // ≈ 1.6 m/s, higher and longer
+// Every generated clip, in pairs (slow, fast): run, walk, talk (idle, talk), jump (hops).
+std::vector<GaitParams> allGaits();
 
 Skeleton gaitSkeleton();
 

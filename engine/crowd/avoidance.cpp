@@ -37,6 +37,9 @@ std::vector<std::string> validateParams(const AvoidanceParams& p) {
   positive(p.ttcTau0, "TTC tau0");
   positive(p.ttcXi, "TTC relaxation time xi");
   positive(p.ttcMaxForce, "TTC force cap");
+  if (p.ttcMaxForce > 0.5f * gpu_types::kForceTermCap)
+    problems.push_back(concat("TTC force cap ", p.ttcMaxForce, " m/s^2 is above ", 0.5f * gpu_types::kForceTermCap,
+                              " (the fixed-point sum clamps each neighbour's term at ", gpu_types::kForceTermCap, ")"));
   if (!(p.ttcK >= 0.0f)) problems.push_back(concat("TTC k must be >= 0, got ", p.ttcK));
   if (!(p.gazeAngle >= 0.0f && p.gazeAngle <= 6.2832f))
     problems.push_back(concat("gaze angle must lie in [0, 2 pi] radians, got ", p.gazeAngle));
@@ -48,10 +51,31 @@ std::vector<std::string> validateParams(const AvoidanceParams& p) {
 
 int cellRange(const AvoidanceParams& p) { return std::max(1, int(std::ceil(p.sensing / p.cellSize))); }
 
-uint32_t gridCellCount(uint32_t agents) {
-  uint32_t cells = 1024;
-  while (cells < kMaxGridCells && cells < agents) cells <<= 1;
-  return cells;
+GridTable gridTable(uint32_t agents) {
+  GridTable t;
+  t.cellCount = 1024;
+  while (t.cellCount < kMaxGridCells && t.cellCount < agents) t.cellCount <<= 1;
+  uint32_t log2Cells = 0;
+  while ((1u << log2Cells) < t.cellCount) ++log2Cells;
+  t.widthShift = (log2Cells + 1) / 2;  // at least as wide as tall
+  t.rowMask = (t.cellCount >> t.widthShift) - 1u;
+  return t;
+}
+
+std::array<ClipSpeeds, 4> clipSpeedTable(const SteerFrame& frame) {
+  static_assert(gpu_types::kMaxClipSets == 4);
+  std::array<ClipSpeeds, 4> table{};
+  if (frame.sets.empty()) {
+    table.fill({frame.slowSpeed, frame.fastSpeed, UINT32_MAX});
+    return table;
+  }
+  if (frame.sets.size() > table.size()) fail(frame.sets.size(), " clip sets: at most ", table.size(), " per steering pass");
+  for (size_t k = 0; k < table.size(); ++k) {
+    table[k] = frame.sets[std::min(k, frame.sets.size() - 1)];
+    if (k > 0 && k < frame.sets.size() && table[k].end < table[k - 1].end)
+      fail("clip set ", k, " ends at agent ", table[k].end, " before set ", k - 1, " (", table[k - 1].end, ")");
+  }
+  return table;
 }
 
 uint32_t pcgHash(uint32_t v) {
@@ -64,8 +88,9 @@ glm::ivec2 cellCoord(glm::vec2 p, float invCellSize) {
   return {int(std::floor(p.x * invCellSize)), int(std::floor(p.y * invCellSize))};
 }
 
-uint32_t cellHash(glm::ivec2 c, uint32_t cellCount) {
-  return pcgHash((uint32_t(c.x) * 73856093u) ^ (uint32_t(c.y) * 19349663u)) & (cellCount - 1u);
+uint32_t cellIndex(glm::ivec2 c, const GridTable& table) {
+  const uint32_t columnMask = (1u << table.widthShift) - 1u;
+  return ((uint32_t(c.y) & table.rowMask) << table.widthShift) | (uint32_t(c.x) & columnMask);
 }
 
 float steerRandom(uint32_t agent, uint32_t step, uint32_t seed) {
@@ -74,24 +99,24 @@ float steerRandom(uint32_t agent, uint32_t step, uint32_t seed) {
 }
 
 Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, float cellSize,
-                  uint32_t cellCount) {
-  THRONG_CHECK(cellCount && (cellCount & (cellCount - 1)) == 0, "cell count ", cellCount, " is not a power of two");
+                  GridTable table) {
+  THRONG_CHECK(table.cellCount == (table.rowMask + 1u) << table.widthShift, "inconsistent grid table");
   THRONG_CHECK(steer.size() >= placement.size(), "steer smaller than placement");
   const size_t n = placement.size();
   Grid g;
-  g.cellCount = cellCount;
+  g.table = table;
   g.invCellSize = 1.0f / cellSize;
   g.cellOf.resize(n);
-  g.counts.assign(cellCount, 0);
-  g.starts.assign(cellCount, 0);
+  g.counts.assign(table.cellCount, 0);
+  g.starts.assign(table.cellCount + 1, 0);
   for (size_t i = 0; i < n; ++i) {
-    g.cellOf[i] = cellHash(cellCoord({placement[i].x, placement[i].z}, g.invCellSize), cellCount);
+    g.cellOf[i] = cellIndex(cellCoord({placement[i].x, placement[i].z}, g.invCellSize), table);
     ++g.counts[g.cellOf[i]];
   }
   uint32_t sum = 0;
-  for (uint32_t c = 0; c < cellCount; ++c) g.starts[c] = sum, sum += g.counts[c];
-  // Scattering in index order leaves each cell sorted by index, as the GPU's cell-sort pass does.
-  std::vector<uint32_t> cursor(g.starts);
+  for (uint32_t c = 0; c < table.cellCount; ++c) g.starts[c] = sum, sum += g.counts[c];
+  g.starts[table.cellCount] = sum;
+  std::vector<uint32_t> cursor(g.starts.begin(), g.starts.end() - 1);
   g.sortedIndex.resize(n);
   g.sorted.resize(n);
   for (size_t i = 0; i < n; ++i) {
@@ -104,33 +129,46 @@ Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec
 
 namespace {
 
-// Mirrors ttcForce in shaders/avoidance_steer.comp (floors of τ and √D explained there).
+// Mirrors ttcForce in shaders/avoidance_steer.comp (floors of τ and √D explained there); the
+// shader computes every branch and selects, which gives the values these branches return.
 glm::vec2 ttcForce(const AvoidanceParams& p, glm::vec2 x, glm::vec2 v, float dist2) {
-  float diameter = 2.0f * p.radius;
+  const float diameter = 2.0f * p.radius;
   float c = dist2 - diameter * diameter;
-  if (c < 0.0f) {
-    float d = std::sqrt(dist2);
-    return d > 1e-4f ? x * (p.ttcMaxForce * (diameter - d) / (diameter * d)) : glm::vec2(0.0f);
-  }
+  if (c < 0.0f)
+    return dist2 > 1e-8f ? x * (p.ttcMaxForce * (1.0f / std::sqrt(dist2) - 0.5f / p.radius)) : glm::vec2(0.0f);
   float a = glm::dot(v, v);
   float b = glm::dot(x, v);
-  if (b >= 0.0f || a < 1e-6f) return glm::vec2(0.0f);
   float disc = b * b - a * c;
-  if (disc <= 0.0f) return glm::vec2(0.0f);
+  if (b >= 0.0f || a < 1e-6f || disc <= 0.0f) return glm::vec2(0.0f);
   float s = std::sqrt(disc);
   float tau = c / (s - b);
   float t = std::max(tau, 0.1f);
-  float magnitude =
-      p.ttcK * std::exp(-t / p.ttcTau0) / (t * t) * (2.0f / t + 1.0f / p.ttcTau0) / std::max(s, 0.05f * a);
+  float invT = 1.0f / t;
+  const float invTau0 = 1.0f / p.ttcTau0;
+  float magnitude = p.ttcK * std::exp(-t * invTau0) * invT * invT * (2.0f * invT + invTau0) / std::max(s, 0.05f * a);
   return (x + tau * v) * magnitude;
 }
 
-// Mirrors collides() in shaders/avoidance_steer.comp.
+// Mirrors toFixed in shaders/avoidance_steer.comp.
+glm::ivec2 toFixed(glm::vec2 f) {
+  auto one = [](float v) {
+    return int(std::floor(std::clamp(v, -gpu_types::kForceTermCap, gpu_types::kForceTermCap) * gpu_types::kForceScale + 0.5f));
+  };
+  return {one(f.x), one(f.y)};
+}
+
+// Mirrors collides() in shaders/avoidance_common.glsl (division-free).
 bool collides(glm::vec2 x, glm::vec2 v, float horizon, float diameter2) {
   float xv = glm::dot(x, v);
-  if (xv >= 0.0f) return false;
-  glm::vec2 d = x + v * std::min(-xv / glm::dot(v, v), horizon);
-  return glm::dot(d, d) < diameter2;
+  float vv = glm::dot(v, v);
+  glm::vec2 atHorizon = x + v * horizon;
+  bool closestInside = -xv < horizon * vv;
+  bool hit = closestInside ? glm::dot(x, x) * vv - xv * xv < diameter2 * vv : glm::dot(atHorizon, atHorizon) < diameter2;
+  return xv < 0.0f && hit;
+}
+
+const ClipSpeeds& speedSet(const std::array<ClipSpeeds, 4>& table, uint32_t agent) {
+  return agent < table[0].end ? table[0] : agent < table[1].end ? table[1] : agent < table[2].end ? table[2] : table[3];
 }
 
 }  // namespace
@@ -145,6 +183,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
   const float diameter2 = 4.0f * p.radius * p.radius;
   const float sensing2 = p.sensing * p.sensing;
   const float cosHalfGaze = std::cos(0.5f * p.gazeAngle);
+  const std::array<ClipSpeeds, 4> speeds = clipSpeedTable(frame);
   // Every agent reads only the grid's copies of the others, so the order of updates is free.
   for (size_t i = 0; i < n; ++i) {
     const glm::vec4 goal = goals[i];
@@ -172,16 +211,15 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     }
     bool blocked = false, keepBlocked = false;
     uint32_t drawBlocked = 0;
-    glm::vec2 avoid(0.0f);
+    glm::ivec2 force(0);
     if (p.policy != SteerPolicy::None) {
       glm::ivec2 home = cellCoord(pos, grid.invCellSize);
       for (int dz = -range; dz <= range; ++dz) {
         for (int dx = -range; dx <= range; ++dx) {
-          glm::ivec2 cell = home + glm::ivec2(dx, dz);
-          uint32_t h = cellHash(cell, grid.cellCount);
-          for (uint32_t k = grid.starts[h], end = k + grid.counts[h]; k < end; ++k) {
+          uint32_t cell = cellIndex(home + glm::ivec2(dx, dz), grid.table);
+          for (uint32_t k = grid.starts[cell], end = grid.starts[cell + 1]; k < end; ++k) {
             const glm::vec4 other = grid.sorted[k];
-            if (grid.sortedIndex[k] == i || cellCoord({other.x, other.y}, grid.invCellSize) != cell) continue;
+            if (grid.sortedIndex[k] == i) continue;
             glm::vec2 x = pos - glm::vec2(other.x, other.y);
             float dist2 = glm::dot(x, x);
             if (dist2 >= sensing2) continue;
@@ -192,7 +230,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
               for (uint32_t d = 0; d < gpu_types::kRuleDraws; ++d)
                 if (collides(x, draws[d] - theirs, p.lookahead, diameter2)) drawBlocked |= 1u << d;
             } else {
-              avoid += ttcForce(p, x, vCur - glm::vec2(other.z, other.w), dist2);
+              force += toFixed(ttcForce(p, x, vCur - glm::vec2(other.z, other.w), dist2));
             }
           }
         }
@@ -218,6 +256,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
         }
       }
     } else if (p.policy == SteerPolicy::Ttc) {
+      glm::vec2 avoid = glm::vec2(force) * (1.0f / gpu_types::kForceScale);
       float avoidLength = glm::length(avoid);
       if (avoidLength > p.ttcMaxForce) avoid *= p.ttcMaxForce / avoidLength;
       v = vCur + ((vPref - vCur) / p.ttcXi + avoid) * frame.dt;
@@ -229,8 +268,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     placement[i] = place;
     float state = flags == gpu_types::kSteerFlagWaiting ? std::min(steer[i].w, 0.0f) - 1.0f : float(flags);
     steer[i] = glm::vec4(v, speed, state);
-    if (frame.fastSpeed > frame.slowSpeed)
-      motion[i].z = std::clamp((speed - frame.slowSpeed) / (frame.fastSpeed - frame.slowSpeed), 0.0f, 1.0f);
+    const ClipSpeeds& set = speedSet(speeds, uint32_t(i));
+    if (set.fast > set.slow) motion[i].z = std::clamp((speed - set.slow) / (set.fast - set.slow), 0.0f, 1.0f);
   }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Collision avoidance (DESIGN.md "Storyboards"): each agent is a cylinder of a safe radius;
-// every step a uniform grid is built by counting sort (count per cell, exclusive prefix sum,
-// scatter) and each agent looks at the agents of the nearby cells. Policies:
+// every step a uniform grid is built by counting sort (count and rank per cell, exclusive
+// prefix sum, scatter) and each agent looks at the agents of the nearby cells. Policies:
 //   * None: head for the path-vector waypoint, ignore others (the baseline of the metrics);
 //   * Rule (the published one): if the course towards the waypoint makes the safe cylinders
 //     overlap within the next `lookahead` seconds (closest approach, others keeping their
@@ -14,11 +14,13 @@
 //     average back to the blocked course). Agents already too close may always move apart;
 //   * Ttc: Karamouzas, Skinner & Guy 2014 ("Universal power law governing pedestrian
 //     interactions"): an anticipatory force from the time to collision, plus relaxation
-//     towards the waypoint velocity.
+//     towards the waypoint velocity. Forces are summed in fixed point (crowd_types.h), so
+//     the order neighbours are visited in does not matter.
 // The output of a step is the heading (placement.w) and velocity/speed (steer) each agent
 // takes, and its speed weight (motion.z, taken up by the root-motion pass at the cycle end).
 // This file is the CPU twin; avoidance_jobs.h records the same passes on the GPU.
 #include <cstdint>
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -51,6 +53,13 @@ std::vector<std::string> validateParams(const AvoidanceParams& params);
 // Neighbour cells scanned on each side: ceil(sensing / cellSize).
 int cellRange(const AvoidanceParams& params);
 
+// Root speeds of one clip pair (speed → w) for the agents [previous set's end, end).
+struct ClipSpeeds {
+  float slow = 0.0f;
+  float fast = 0.0f;
+  uint32_t end = UINT32_MAX;
+};
+
 // What changes from step to step.
 struct SteerFrame {
   float dt = 0.0f;           // seconds of this step
@@ -58,29 +67,42 @@ struct SteerFrame {
   uint32_t step = 0;         // hashed into the rule's random turn
   float slowSpeed = 0.0f;    // root speeds of the clip pair: speed → motion.z = w
   float fastSpeed = 0.0f;
+  // With several clip pairs (the crowd ordered by clip set): up to kMaxClipSets ranges, each
+  // with its pair's root speeds, used instead of slowSpeed/fastSpeed. A pair whose fast speed
+  // is not above its slow one (standing clips) leaves motion.z alone.
+  std::vector<ClipSpeeds> sets;
 };
+// The ranges the shader reads (sets, or one range of slowSpeed/fastSpeed); throws Error for
+// more than kMaxClipSets sets or ends that decrease.
+std::array<ClipSpeeds, 4> clipSpeedTable(const SteerFrame& frame);
 
-// Hashed grid table size: the power of two ≥ agents, within [1024, 2^20] (the scan handles
-// up to 1024 blocks of kScanBlock cells). Most buckets stay empty at crowd densities (several
-// agents share a cell), and the scan and sort passes cost in proportion to it.
-uint32_t gridCellCount(uint32_t agents);
+// The grid table: 2^widthShift columns × (rowMask + 1) rows, cellCount cells in all (a power
+// of two ≥ agents within [1024, 2^20]; at crowd densities most cells stay empty, and the scan
+// costs in proportion to it). Cell coordinates are taken modulo the table.
+struct GridTable {
+  uint32_t cellCount = 0;
+  uint32_t widthShift = 0;
+  uint32_t rowMask = 0;
+};
+GridTable gridTable(uint32_t agents);
 inline constexpr uint32_t kMaxGridCells = 1u << 20;
 
-// The grid: the same arrays the GPU passes fill, in the same order.
+// The grid: the same arrays the GPU passes fill. Within a cell the GPU's order is its atomics'
+// (any); the twin's is by agent index. Nothing downstream depends on that order.
 struct Grid {
-  uint32_t cellCount = 0;
+  GridTable table;
   float invCellSize = 0.0f;
-  std::vector<uint32_t> cellOf;       // per agent: hashed cell
+  std::vector<uint32_t> cellOf;       // per agent: cell index
   std::vector<uint32_t> counts;       // per cell
-  std::vector<uint32_t> starts;       // per cell: first slot (exclusive prefix sum of counts)
-  std::vector<uint32_t> sortedIndex;  // per slot: agent, by cell then increasing index
+  std::vector<uint32_t> starts;       // per cell + 1: first slot (exclusive prefix sum), then the agent count
+  std::vector<uint32_t> sortedIndex;  // per slot: agent, by cell
   std::vector<glm::vec4> sorted;      // per slot: (x, z, vx, vz)
 };
 
 // placement = (x, y, z, heading); steer = (vx, vz, speed, flags); goals = (target x, z, max
 // speed, active). Agents with goal.w == 0 are inactive: steer zero, nothing else changes.
 Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, float cellSize,
-                  uint32_t cellCount);
+                  GridTable table);
 void steerCpu(const Grid& grid, const AvoidanceParams& params, const SteerFrame& frame,
               std::span<glm::vec4> placement, std::span<glm::vec4> motion, std::span<const glm::vec4> goals,
               std::span<glm::vec4> steer);
@@ -88,10 +110,10 @@ void steerCpu(const Grid& grid, const AvoidanceParams& params, const SteerFrame&
 void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer, std::span<const glm::vec4> goals,
                 float dt);
 
-// The hashes of shaders/avoidance_common.glsl.
+// The helpers of shaders/avoidance_common.glsl.
 uint32_t pcgHash(uint32_t v);
 glm::ivec2 cellCoord(glm::vec2 p, float invCellSize);
-uint32_t cellHash(glm::ivec2 cell, uint32_t cellCount);
+uint32_t cellIndex(glm::ivec2 cell, const GridTable& table);
 float steerRandom(uint32_t agent, uint32_t step, uint32_t seed);
 
 }  // namespace throng::crowd

@@ -43,25 +43,24 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
   gpu::Fence fence(context);
-  gpu::TimestampPool timestamps(context, 3);
-  std::vector<double> gridMs, steerMs, totalMs;
+  gpu::TimestampPool timestamps(context, 6);
+  std::vector<double> countMs, scanMs, scatterMs, gridMs, steerMs, totalMs;
   const int warmup = 2;
   for (int s = 0; s < warmup + steps; ++s) {
     SteerFrame frame;
     frame.dt = 0.05f;
     frame.secondsLeft = 1.0f - 0.05f * float(s % 20);
     frame.step = uint32_t(s);
-    GridJob gridJob{&buffers, &agentBuffers, &grid};
+    GridJob gridJob{&buffers, &agentBuffers, &grid, &timestamps};
     AvoidanceJob avoid{&buffers, &agentBuffers, &grid, params, frame};
     AdvanceJob advance{&buffers, &agentBuffers, frame.dt};
     timestamps.reset();
     gpu::beginCommands(cmd);
-    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-    gridJob.record(cmd, programs);
-    timestamps.write(cmd);
+    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);  // 0
+    gridJob.record(cmd, programs);                              // 1, 2, 3
     gpu::computeToComputeBarrier(cmd);
     avoid.record(cmd, programs);
-    timestamps.write(cmd);
+    timestamps.write(cmd);  // 4
     gpu::computeToComputeBarrier(cmd);
     advance.record(cmd, programs);
     gpu::endCommands(cmd);
@@ -70,11 +69,23 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     fence.reset();
     if (s < warmup) continue;
     std::vector<uint64_t> ticks = timestamps.fetch();
-    gridMs.push_back(timestamps.millisecondsBetween(ticks, 0, 1));
-    steerMs.push_back(timestamps.millisecondsBetween(ticks, 1, 2));
-    totalMs.push_back(timestamps.millisecondsBetween(ticks, 0, 2));
+    countMs.push_back(timestamps.millisecondsBetween(ticks, 0, 1));
+    scanMs.push_back(timestamps.millisecondsBetween(ticks, 1, 2));
+    scatterMs.push_back(timestamps.millisecondsBetween(ticks, 2, 3));
+    gridMs.push_back(timestamps.millisecondsBetween(ticks, 0, 3));
+    steerMs.push_back(timestamps.millisecondsBetween(ticks, 3, 4));
+    totalMs.push_back(timestamps.millisecondsBetween(ticks, 0, 4));
   }
-  return {agents, median(gridMs), median(steerMs), median(totalMs), steps};
+  AvoidanceTiming t;
+  t.agents = agents;
+  t.gridMs = median(gridMs);
+  t.countMs = median(countMs);
+  t.scanMs = median(scanMs);
+  t.scatterMs = median(scatterMs);
+  t.steerMs = median(steerMs);
+  t.totalMs = median(totalMs);
+  t.steps = steps;
+  return t;
 }
 
 }  // namespace throng::crowd

@@ -10,9 +10,12 @@ namespace throng::crowd {
 
 struct AvoidanceTiming {
   uint32_t agents = 0;
-  double gridMs = 0.0;   // clear + count + scan + scatter + cell sort
-  double steerMs = 0.0;  // the policy pass
-  double totalMs = 0.0;  // both, plus the barriers between them
+  double gridMs = 0.0;     // clear + count + scan + scatter
+  double countMs = 0.0;    // its parts: clear + count,
+  double scanMs = 0.0;     // prefix sum,
+  double scatterMs = 0.0;  // scatter
+  double steerMs = 0.0;    // the policy pass
+  double totalMs = 0.0;    // both, plus the barriers between them
   int steps = 0;
 };
 

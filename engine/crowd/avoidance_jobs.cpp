@@ -1,5 +1,6 @@
 #include "crowd/avoidance_jobs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -43,48 +44,73 @@ void checkGrid(std::vector<std::string>& problems, const GridBuffers* grid, cons
   }
   if (crowd && crowd->count > grid->agentCapacity)
     problems.push_back(concat("the grid holds ", grid->agentCapacity, " agents, the crowd has ", crowd->count));
-  if (grid->cellCount == 0 || (grid->cellCount & (grid->cellCount - 1)) || grid->cellCount > kMaxGridCells)
-    problems.push_back(concat("grid cell count ", grid->cellCount, " is not a power of two up to ", kMaxGridCells));
+  const GridTable& t = grid->table;
+  if (t.cellCount == 0 || t.cellCount > kMaxGridCells || t.cellCount != (t.rowMask + 1u) << t.widthShift ||
+      ((t.rowMask + 1u) & t.rowMask) != 0 || t.rowMask < 31u || t.widthShift < 5u)
+    problems.push_back(concat("grid table of ", t.cellCount, " cells (", 1u << t.widthShift, " x ", t.rowMask + 1u,
+                              ") is not powers of two of at least 32 x 32 up to ", kMaxGridCells, " cells"));
   if (!(grid->cellSize > 0.0f)) problems.push_back(concat("grid cell size must be positive, got ", grid->cellSize));
 }
 
 GridPush gridPush(const GridBuffers& grid, uint32_t agents) {
   GridPush push{};
   push.agentCount = agents;
-  push.cellCount = grid.cellCount;
-  push.blockCount = (grid.cellCount + kScanBlock - 1) / kScanBlock;
+  push.cellCount = grid.table.cellCount;
+  push.widthShift = grid.table.widthShift;
+  push.rowMask = grid.table.rowMask;
   push.invCellSize = 1.0f / grid.cellSize;
   return push;
+}
+
+// Subgroup lanes the steering pass shares candidates among; throws when the device's subgroups
+// lack what the pass uses.
+uint32_t subgroupChunk(const gpu::Context& context) {
+  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(context.physicalDevice(), &properties);
+  const VkSubgroupFeatureFlags needed =
+      VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT |
+      VK_SUBGROUP_FEATURE_BALLOT_BIT;
+  if ((subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0 ||
+      (subgroup.supportedOperations & needed) != needed || subgroup.subgroupSize < 4)
+    fail("the steering pass needs compute subgroups of at least 4 lanes with vote, arithmetic and ballot; ",
+         context.info().name, " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
+         subgroup.supportedOperations);
+  return std::min(subgroup.subgroupSize, 32u);
 }
 
 }  // namespace
 
 AvoidancePrograms::AvoidancePrograms(const gpu::Context& context)
     : count(context, "avoidance_grid_count.comp"),
-      scanBlocks(context, "avoidance_scan_blocks.comp"),
-      scanSums(context, "avoidance_scan_sums.comp"),
-      scanAdd(context, "avoidance_scan_add.comp"),
+      scan(context, "avoidance_scan.comp"),
       scatter(context, "avoidance_scatter.comp"),
-      cellSort(context, "avoidance_cell_sort.comp"),
-      gather(context, "avoidance_gather.comp"),
-      steer(context, "avoidance_steer.comp"),
-      advance(context, "avoidance_advance.comp") {}
+      advance(context, "avoidance_advance.comp"),
+      goals(context, "path_goals.comp"),
+      context_(&context),
+      chunk_(subgroupChunk(context)) {}
+
+const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, int range) const {
+  std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range}];
+  if (!program) {
+    const uint32_t specialization[] = {uint32_t(policy), uint32_t(range), chunk_};
+    program = std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
+  }
+  return *program;
+}
 
 GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, float cellSize) {
   if (!(cellSize > 0.0f)) fail("grid cell size must be positive, got ", cellSize);
   GridBuffers g;
   g.agentCapacity = std::max(agentCapacity, 1u);
-  g.cellCount = gridCellCount(agentCapacity);
+  g.table = gridTable(agentCapacity);
   g.cellSize = cellSize;
-  const uint32_t blocks = (g.cellCount + kScanBlock - 1) / kScanBlock;
   auto make = [&](VkDeviceSize bytes) {
     return gpu::Buffer(context, std::max<VkDeviceSize>(bytes, 16), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   };
-  g.cellOf = make(VkDeviceSize(g.agentCapacity) * 4);
-  g.counts = make(VkDeviceSize(g.cellCount) * 4);
-  g.starts = make(VkDeviceSize(g.cellCount) * 4);
-  g.blockSums = make(VkDeviceSize(blocks) * 4);
-  g.cursor = make(VkDeviceSize(g.cellCount) * 4);
+  g.cellRank = make(VkDeviceSize(g.agentCapacity) * 8);
+  g.counts = make(VkDeviceSize(g.table.cellCount) * 4);
+  g.starts = make(VkDeviceSize(g.table.cellCount + 1) * 4);
   g.sortedIndex = make(VkDeviceSize(g.agentCapacity) * 4);
   g.sorted = make(VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4));
   return g;
@@ -110,35 +136,24 @@ std::vector<std::string> GridJob::validate() const {
 void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
   throwIfInvalid("GridJob", validate());
   const GridPush push = gridPush(*grid, crowd->count);
-  const VkDeviceSize cellBytes = VkDeviceSize(grid->cellCount) * 4;
-  vkCmdFillBuffer(cmd, grid->counts.get(), 0, cellBytes, 0);
-  vkCmdFillBuffer(cmd, grid->cursor.get(), 0, cellBytes, 0);
-  gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding count[] = {gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, grid->cellOf),
+  // The previous step's scan may still read the counts.
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  vkCmdFillBuffer(cmd, grid->counts.get(), 0, VkDeviceSize(grid->table.cellCount) * 4, 0);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  const gpu::Binding count[] = {gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, grid->cellRank),
                                 gpu::storageBinding(2, grid->counts)};
   gpu::dispatch(cmd, programs.count, count, push, crowd->count);
+  if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding blocks[] = {gpu::storageBinding(0, grid->counts), gpu::storageBinding(1, grid->starts),
-                                 gpu::storageBinding(2, grid->blockSums)};
-  gpu::dispatch(cmd, programs.scanBlocks, blocks, push, push.blockCount * 256);
+  const gpu::Binding scan[] = {gpu::storageBinding(0, grid->counts), gpu::storageBinding(1, grid->starts)};
+  gpu::dispatch(cmd, programs.scan, scan, push, gpu_types::kScanThreads);
+  if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding sums[] = {gpu::storageBinding(0, grid->blockSums)};
-  gpu::dispatch(cmd, programs.scanSums, sums, push, 256);
-  gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding add[] = {gpu::storageBinding(0, grid->starts), gpu::storageBinding(1, grid->blockSums)};
-  gpu::dispatch(cmd, programs.scanAdd, add, push, grid->cellCount);
-  gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scatter[] = {gpu::storageBinding(0, grid->cellOf), gpu::storageBinding(1, grid->starts),
-                                  gpu::storageBinding(2, grid->cursor), gpu::storageBinding(3, grid->sortedIndex)};
+  const gpu::Binding scatter[] = {gpu::storageBinding(0, crowd->placement),  gpu::storageBinding(1, agents->steer),
+                                  gpu::storageBinding(2, grid->cellRank),     gpu::storageBinding(3, grid->starts),
+                                  gpu::storageBinding(4, grid->sortedIndex),  gpu::storageBinding(5, grid->sorted)};
   gpu::dispatch(cmd, programs.scatter, scatter, push, crowd->count);
-  gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding sort[] = {gpu::storageBinding(0, grid->counts), gpu::storageBinding(1, grid->starts),
-                               gpu::storageBinding(2, grid->sortedIndex)};
-  gpu::dispatch(cmd, programs.cellSort, sort, push, grid->cellCount);
-  gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding gather[] = {gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, agents->steer),
-                                 gpu::storageBinding(2, grid->sortedIndex), gpu::storageBinding(3, grid->sorted)};
-  gpu::dispatch(cmd, programs.gather, gather, push, crowd->count);
+  if (timestamps) timestamps->write(cmd);
 }
 
 std::vector<std::string> AvoidanceJob::validate() const {
@@ -146,6 +161,11 @@ std::vector<std::string> AvoidanceJob::validate() const {
   checkCrowdAndAgents(problems, crowd, agents);
   checkGrid(problems, grid, crowd);
   for (const std::string& p : validateParams(params)) problems.push_back(p);
+  try {
+    clipSpeedTable(frame);
+  } catch (const Error& e) {
+    problems.push_back(e.what());
+  }
   if (grid && grid->cellSize != params.cellSize)
     problems.push_back(concat("the grid was built with ", grid->cellSize, " m cells, the parameters say ",
                               params.cellSize, " m"));
@@ -158,11 +178,10 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
   throwIfInvalid("AvoidanceJob", validate());
   SteerPush push{};
   push.agentCount = crowd->count;
-  push.cellCount = grid->cellCount;
-  push.policy = uint32_t(params.policy);
   push.step = frame.step;
   push.seed = params.seed;
-  push.cellRange = cellRange(params);
+  push.widthShift = grid->table.widthShift;
+  push.rowMask = grid->table.rowMask;
   push.invCellSize = 1.0f / grid->cellSize;
   push.dt = frame.dt;
   push.invSecondsLeft = 1.0f / frame.secondsLeft;
@@ -170,19 +189,24 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
   push.sensing = params.sensing;
   push.lookahead = params.lookahead;
   push.gazeAngle = params.gazeAngle;
+  push.cosHalfGaze = std::cos(0.5f * params.gazeAngle);
   push.ttcK = params.ttcK;
   push.ttcTau0 = params.ttcTau0;
   push.ttcXi = params.ttcXi;
   push.ttcMaxForce = params.ttcMaxForce;
-  push.slowSpeed = frame.slowSpeed;
-  push.fastSpeed = frame.fastSpeed;
-  push.cosHalfGaze = std::cos(0.5f * params.gazeAngle);
+  push.ttcInvTau0 = 1.0f / params.ttcTau0;
+  const std::array<ClipSpeeds, 4> sets = clipSpeedTable(frame);
+  for (int k = 0; k < 4; ++k) {
+    push.setEnd[k] = sets[size_t(k)].end;
+    push.setSlow[k] = sets[size_t(k)].slow;
+    push.setFast[k] = sets[size_t(k)].fast;
+  }
   const gpu::Binding bindings[] = {
-      gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, crowd->motion),
-      gpu::storageBinding(2, agents->goals),    gpu::storageBinding(3, agents->steer),
-      gpu::storageBinding(4, grid->counts),     gpu::storageBinding(5, grid->starts),
-      gpu::storageBinding(6, grid->sortedIndex), gpu::storageBinding(7, grid->sorted)};
-  gpu::dispatch(cmd, programs.steer, bindings, push, crowd->count);
+      gpu::storageBinding(0, crowd->placement),   gpu::storageBinding(1, crowd->motion),
+      gpu::storageBinding(2, agents->goals),      gpu::storageBinding(3, agents->steer),
+      gpu::storageBinding(4, grid->starts),       gpu::storageBinding(5, grid->sortedIndex),
+      gpu::storageBinding(6, grid->sorted)};
+  gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push, crowd->count);
 }
 
 std::vector<std::string> AdvanceJob::validate() const {

@@ -4,6 +4,8 @@
 // checks and records. Per step: GridJob, barrier, AvoidanceJob, barrier, then either
 // AdvanceJob (kinematic, `throng crowd`) or the synthesis RootMotionJob (render path), which
 // moves each character along the heading the avoidance job wrote. CPU twins: avoidance.h.
+#include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -11,19 +13,31 @@
 #include "crowd/avoidance.h"
 #include "crowd/crowd.h"
 #include "gpu/program.h"
+#include "gpu/timestamps.h"
 
 namespace throng::crowd {
 
-struct AvoidancePrograms {
-  gpu::ComputeProgram count, scanBlocks, scanSums, scanAdd, scatter, cellSort, gather, steer, advance;
+// The compiled passes. The steering pass is specialized per (policy, neighbour range), built
+// on first use; subgroups of at least 4 lanes with vote, arithmetic and ballot are required
+// (lavapipe: 8; every desktop GPU has them).
+class AvoidancePrograms {
+ public:
   explicit AvoidancePrograms(const gpu::Context& context);
+  gpu::ComputeProgram count, scan, scatter, advance, goals;
+  const gpu::ComputeProgram& steer(SteerPolicy policy, int range) const;
+  uint32_t chunk() const { return chunk_; }  // candidates shared per subgroup round
+
+ private:
+  const gpu::Context* context_;
+  uint32_t chunk_ = 8;
+  mutable std::map<std::pair<uint32_t, int>, std::unique_ptr<gpu::ComputeProgram>> steer_;
 };
 
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
 struct GridBuffers {
-  gpu::Buffer cellOf, counts, starts, blockSums, cursor, sortedIndex, sorted;
+  gpu::Buffer cellRank, counts, starts, sortedIndex, sorted;
   uint32_t agentCapacity = 0;
-  uint32_t cellCount = 0;
+  GridTable table;
   float cellSize = 0.0f;
 };
 GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, float cellSize);
@@ -38,13 +52,13 @@ struct SteerBuffers {
 SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4> goals,
                          std::span<const glm::vec4> steer);
 
-// Counting sort of the agents into the hashed grid: clear, count, scan (3 passes), scatter,
-// per-cell sort by agent index, copy of (x, z, vx, vz) in that order. Barriers between its
-// own passes.
+// Counting sort of the agents into the grid: clear, count (cell and rank per agent), scan,
+// scatter of the agent index and a copy of (x, z, vx, vz). Barriers between its own passes.
 struct GridJob {
   const CrowdBuffers* crowd = nullptr;   // input: placement
   const SteerBuffers* agents = nullptr;  // input: steer (velocities copied into the grid)
   const GridBuffers* grid = nullptr;     // output
+  gpu::TimestampPool* timestamps = nullptr;  // optional: a mark after the count, the scan and the scatter
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;

@@ -162,7 +162,7 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
         });
         crowd.placement = gpu::readback<glm::vec4>(*context, g.crowd.placement, n);
       } else {
-        Grid grid = buildGridCpu(crowd.placement, steer, options.avoidance.cellSize, gridCellCount(uint32_t(n)));
+        Grid grid = buildGridCpu(crowd.placement, steer, options.avoidance.cellSize, gridTable(uint32_t(n)));
         steerCpu(grid, options.avoidance, frame, crowd.placement, crowd.motion, goals, steer);
         advanceCpu(crowd.placement, steer, goals, dt);
       }

@@ -21,6 +21,7 @@ uint32_t drawFlags(const DrawParams& params) {
   uint32_t flags = 0;
   if (params.masks) flags |= gpu_types::kDrawUseMasks;
   if (params.masks && params.tintLevels) flags |= gpu_types::kDrawTintLevel;
+  if (params.groups) flags |= gpu_types::kDrawGroupTint;
   if (params.cachedPoses.enabled()) flags |= gpu_types::kDrawCachedPoses;
   return flags;
 }
@@ -121,8 +122,9 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
     SplatJob job{params.joints, &uniforms, &visibility_, &draws_, &nearList_, params.width, params.height,
                  params.characterCount, params.jointCount, params.splatMaxPixels,
                  context_->info().maxStorageBufferRange, params.masks ? params.masks : &noMasks_,
-                 drawFlags(params), boundCachedPoses(params, noMasks_)};
+                 drawFlags(params), boundCachedPoses(params, noMasks_), params.groups};
     job.record(cmd, splat_);
+    if (params.intoSplat) params.intoSplat(cmd, visibility_, params);
   }
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
@@ -177,7 +179,8 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
         gpu::uniformBinding(1, uniforms), gpu::storageBinding(4, nearList_),
         gpu::storageBinding(5, params.masks ? *params.masks : noMasks_),
         gpu::storageBinding(6, *cached.placement), gpu::storageBinding(7, *cached.motion),
-        gpu::storageBinding(8, *cached.poseSource), gpu::storageBinding(9, *cached.cacheData)};
+        gpu::storageBinding(8, *cached.poseSource), gpu::storageBinding(9, *cached.cacheData),
+        gpu::storageBinding(10, params.groups ? *params.groups : noMasks_)};
     push.firstCharacter = chunk.firstCharacter;
     push.listBase = chunk.firstCharacter * params.jointCount;
     joints_.bind(cmd, bindings, &push, sizeof(push));
@@ -193,6 +196,7 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
     resolve_.bind(cmd, resolveBindings, nullptr, 0);
     vkCmdDraw(cmd, 3, 1, 0, 0);
   }
+  if (params.insideRenderPass) params.insideRenderPass(cmd, params);
   vkCmdEndRenderingKHR(cmd);
 
   VkAccessFlags dstAccess = finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ? VK_ACCESS_TRANSFER_READ_BIT : 0;

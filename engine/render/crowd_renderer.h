@@ -2,6 +2,7 @@
 // The one graphics pipeline that draws every joint of every character as an instanced
 // ellipsoid (a ray-cast quad), plus the ground. Records into any colour/depth image pair (offscreen target or
 // swapchain image), so the viewer and the frame dumper share it.
+#include <functional>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -25,8 +26,14 @@ struct DrawParams {
   float splatMaxPixels = 24.0f;
   const gpu::Buffer* masks = nullptr;   // coverage LOD: CoverageMask per character (null: all joints)
   bool tintLevels = false;              // colour characters by LOD level (paper Fig. 8)
+  const gpu::Buffer* groups = nullptr;  // storyboard group per character (uint): colour by group
   CachedPoseInputs cachedPoses;         // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
+  // Optional work of a higher module: compute splats into the joint splat's visibility buffer
+  // (after the joints' splat, before the render pass; called only when the splat runs), and draws
+  // inside the render pass after the joints (depth-tested with them; viewport and scissor set).
+  std::function<void(VkCommandBuffer, const gpu::Buffer& visibility, const DrawParams&)> intoSplat;
+  std::function<void(VkCommandBuffer, const DrawParams&)> insideRenderPass;
 };
 
 // Camera, light and viewport of a frame as the shaders read them.

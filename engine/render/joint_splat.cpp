@@ -79,6 +79,7 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
         gpu::storageBinding(7, *cachedPoses.motion),
         gpu::storageBinding(8, *cachedPoses.poseSource),
         gpu::storageBinding(9, *cachedPoses.cacheData),
+        gpu::storageBinding(10, groups ? *groups : *masks),
     };
     gpu::dispatch(cmd, program, bindings, push, push.jointTotal);
   }

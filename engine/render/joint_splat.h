@@ -45,8 +45,9 @@ struct SplatJob {
   float maxPixels = 16.0f;                    // wider sprites are left to the graphics pipeline
   uint32_t maxStorageBufferRange = 0;         // chunk size of the joints binding
   const gpu::Buffer* masks = nullptr;         // input: CoverageMask per character (LOD), see flags
-  uint32_t flags = 0;                         // kDrawUseMasks, kDrawTintLevel, kDrawCachedPoses
+  uint32_t flags = 0;                         // kDrawUseMasks, kDrawTintLevel, kDrawCachedPoses, kDrawGroupTint
   CachedPoseInputs cachedPoses;               // inputs: all four bound (placeholders when unused)
+  const gpu::Buffer* groups = nullptr;        // input: group per character (kDrawGroupTint; a placeholder otherwise)
 
   std::vector<std::string> validate() const;
   // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the

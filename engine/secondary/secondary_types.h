@@ -57,6 +57,9 @@ struct ClothMesh {
   std::vector<uint32_t> triangles;  // 3 indices per triangle
   std::vector<uint32_t> pinnedVertices;
   std::vector<uint32_t> pinJoints;
+  // Per pinned vertex: its position in joint pinJoints[i]'s frame (added by the cloth part).
+  // Empty: the rest positions are taken to be at primary node 0's pose.
+  std::vector<glm::vec3> pinOffsets;
   uint32_t vertexCount() const { return uint32_t(restPositions.size()); }
 };
 

@@ -40,16 +40,29 @@ Placement placeStoryboard(const Storyboard& storyboard, const PlacementOptions& 
   p.tint.resize(n);
   p.speedRange.resize(n);
   p.speed.resize(n);
+  // Stable order by clip set: counting sort on the action.
+  for (const Glyph& g : storyboard.glyphs) ++p.setBegin[size_t(clipSetOf(g.action)) + 1];
+  for (int k = 0; k < kActionCount; ++k) p.setBegin[size_t(k) + 1] += p.setBegin[size_t(k)];
+  p.glyph.resize(n);
+  std::array<uint32_t, kActionCount + 1> next = p.setBegin;
+  for (size_t g = 0; g < n; ++g) p.glyph[next[clipSetOf(storyboard.glyphs[g].action)]++] = uint32_t(g);
+  // Random draws in glyph order, so an agent's jitter and speed do not depend on the others' actions.
   Rng rng(o.seed, 0x5b0a);
   const float cx = 0.5f * float(storyboard.width), cy = 0.5f * float(storyboard.height);
-  for (size_t i = 0; i < n; ++i) {
-    const Glyph& g = storyboard.glyphs[i];
+  std::vector<uint32_t> agentOf(n);
+  for (size_t i = 0; i < n; ++i) agentOf[p.glyph[i]] = uint32_t(i);
+  for (size_t gi = 0; gi < n; ++gi) {
+    const Glyph& g = storyboard.glyphs[gi];
+    const size_t i = agentOf[gi];
     float x = (float(g.x) + 0.5f - cx) * o.cellSize + rng.uniform(-o.jitter, o.jitter);
     float z = (float(g.y) + 0.5f - cy) * o.cellSize + rng.uniform(-o.jitter, o.jitter);
     p.crowd.placement[i] = glm::vec4(x, 0.0f, z, headingAngle(g.heading));
     const crowd::SpeedRange range = o.speeds[size_t(g.state)];
     const float speed = rng.uniform(range.min, range.max);
-    const float w = crowd::speedWeight(speed, o.slowSpeed, o.fastSpeed);
+    RootSpeeds root{o.slowSpeed, o.fastSpeed};
+    if (o.actionSpeeds) root = (*o.actionSpeeds)[size_t(g.action)];
+    const bool standing = o.actionSpeeds && root.slow == 0.0f && root.fast == 0.0f;
+    const float w = standing ? rng.uniform() : crowd::speedWeight(speed, root.slow, root.fast);
     p.crowd.motion[i] = glm::vec4(rng.uniform(), w, w, rng.uniform(o.minScale, o.maxScale));
     p.crowd.clipSet[i] = clipSetOf(g.action);
     p.tint[i] = uint32_t(g.group);

@@ -6,11 +6,13 @@
 //   * heading: the glyph's (Top faces −z, Down +z, Right +x, Left −x; diagonals between);
 //   * state → a speed range (strolling, hurried), a speed drawn in it, and w from the clip
 //     pair's root speeds;
-//   * action → Crowd::clipSet (walk 0, run 1, talk 2, jump 3). Only one clip pair is animated
-//     today: every clip set plays pair 0 until the renderer holds one pair per set;
+//   * action → Crowd::clipSet (walk 0, run 1, talk 2, jump 3): the agents are ordered by clip
+//     set (stable: within a set in glyph order), so each set is one contiguous range that one
+//     motion pair's synthesis can take; `glyph` maps an agent back to its glyph;
 //   * group → tint index (a side array, so Crowd stays what the synthesis passes read).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "crowd/crowd.h"
@@ -18,6 +20,10 @@
 #include "storyboard/codec.h"
 
 namespace throng::storyboard {
+
+struct RootSpeeds {
+  float slow = 0.0f, fast = 0.0f;  // m/s
+};
 
 struct PlacementOptions {
   float cellSize = 0.5f;  // metres per storyboard pixel
@@ -27,11 +33,16 @@ struct PlacementOptions {
   std::array<crowd::SpeedRange, kStateCount> speeds = {{{0.4f, 1.2f}, {1.2f, 2.2f}}};
   float slowSpeed = 0.0f;  // root speeds of the clip pair (crowd::clipRootSpeed); w = 0 when equal
   float fastSpeed = 0.0f;
+  // Per action, when its clip pair differs (walk, run, talk, jump): root speeds of that pair.
+  // A pair that does not travel (slow = fast = 0, e.g. talk) gets a random w: how animated.
+  std::optional<std::array<RootSpeeds, kActionCount>> actionSpeeds;
   float minScale = 0.92f, maxScale = 1.08f;
 };
 
 struct Placement {
-  crowd::Crowd crowd;
+  crowd::Crowd crowd;                            // ordered by clip set
+  std::vector<uint32_t> glyph;                   // per agent: its glyph in the storyboard
+  std::array<uint32_t, kActionCount + 1> setBegin{};  // clip set k: agents [setBegin[k], setBegin[k + 1])
   std::vector<uint32_t> tint;                    // per agent: group number
   std::vector<crowd::SpeedRange> speedRange;     // per agent: its state's range
   std::vector<float> speed;                      // per agent: the desired speed drawn in it

@@ -29,12 +29,17 @@ namespace {
 struct Variant {
   GaitParams params;
   double targetSpeed;  // m/s, what the brief asks for (independent of params.speed)
-  double cadence;      // steps per second
+  double cadence;      // steps per second (a hop lands both feet: one step); 0 standing
 };
 
 std::vector<Variant> variants() {
-  return {{slowRunGait(), 2.5, 2.6}, {fastRunGait(), 4.5, 3.0}};
+  return {{slowRunGait(), 2.5, 2.6},  {fastRunGait(), 4.5, 3.0}, {slowWalkGait(), 1.0, 1.8},
+          {fastWalkGait(), 1.6, 2.3}, {idleGait(), 0.0, 0.0},    {talkGait(), 0.0, 0.0},
+          {slowHopGait(), 0.8, 1.5},  {fastHopGait(), 1.6, 1.36}};
 }
+
+bool standing(const Variant& v) { return v.params.kind == GaitKind::Stand; }
+bool hopping(const Variant& v) { return v.params.kind == GaitKind::Hop; }
 
 fs::path committed(const GaitParams& params) {
   return throng::test::sourceDir() / "assets" / (params.name + ".bvh");
@@ -226,10 +231,15 @@ TEST_CASE("the committed assets parse: 25 joints, one cycle at 30 fps, the targe
     CHECK(clip.skeleton.jointCount() == 25);
     CHECK(clip.channelCount == 6 + 3 * 24);
     CHECK(clip.frameTime == doctest::Approx(1.0 / 30.0).epsilon(1e-6));
-    // One cycle (two steps) at the target cadence, rounded to whole frames.
-    CHECK(clip.frameCount == int(std::lround(2.0 / v.cadence * 30.0)));
-    CHECK(clip.frameCount >= 20);
-    CHECK(clip.frameCount <= 30);
+    // One cycle (two steps, one hop) at the target cadence, rounded to whole frames; standing: 2 s.
+    if (standing(v)) {
+      CHECK(clip.frameCount == 60);
+    } else {
+      const double steps = hopping(v) ? 1.0 : 2.0;
+      CHECK(clip.frameCount == int(std::lround(steps / v.cadence * 30.0)));
+      CHECK(clip.frameCount >= 20);
+      CHECK(clip.frameCount <= 34);
+    }
     CHECK(clip.skeleton.sameTopology(gaitSkeleton()));
     // The text keeps every value to within its last printed digit (plus float rounding).
     RawClip generated = generateGait(v.params);
@@ -280,8 +290,17 @@ TEST_CASE("the root travels along +z at the target speed") {
     const double first = clip.values[2],
                  last = clip.values[size_t(n - 1) * size_t(clip.channelCount) + 2];
     const double fileSpeed = (last - first) / ((n - 1) * double(clip.frameTime));
-    CHECK(std::abs(fileSpeed - v.targetSpeed) < 0.1 * v.targetSpeed);
     const double cycleSpeed = gaitCycleTravel(v.params) / duration;
+    if (standing(v)) {
+      // No travel: the root only shifts its weight from foot to foot, within a few centimetres.
+      CHECK(gaitCycleTravel(v.params) == 0.0);
+      for (int f = 0; f < n; ++f) {
+        CHECK(std::abs(clip.values[size_t(f) * size_t(clip.channelCount)]) < 0.03);
+        CHECK(std::abs(clip.values[size_t(f) * size_t(clip.channelCount) + 2]) < 1e-6);
+      }
+      continue;
+    }
+    CHECK(std::abs(fileSpeed - v.targetSpeed) < 0.1 * v.targetSpeed);
     CHECK(std::abs(cycleSpeed - v.targetSpeed) < 0.1 * v.targetSpeed);
     MESSAGE(v.params.name, ": ", n, " frames, cycle travel ", gaitCycleTravel(v.params),
             " m, speed ", cycleSpeed, " m/s (frames alone: ", fileSpeed, " m/s), cadence ",
@@ -316,9 +335,12 @@ TEST_CASE("forwardKinematics agrees with toClip's quaternions (one Euler convent
   }
 }
 
-TEST_CASE("a planted foot does not skate, and the feet take turns") {
+TEST_CASE("a planted foot does not skate; run and walk feet take turns, hops land together, standing feet stay") {
   for (const Variant& v : variants()) {
     CAPTURE(v.params.name);
+    const GaitKind kind = v.params.kind;
+    const bool run = kind == GaitKind::Alternate && v.params.stanceFraction < 0.5;
+    const bool walk = kind == GaitKind::Alternate && !run;
     RawClip clip = loadBvh(committed(v.params));
     const int n = clip.frameCount;
     for (const std::string name : {"LeftFoot", "LeftToeBase", "RightFoot", "RightToeBase"}) {
@@ -327,21 +349,33 @@ TEST_CASE("a planted foot does not skate, and the feet take turns") {
       REQUIRE(j >= 0);
       std::vector<glm::dvec3> p;
       for (int f = 0; f < n; ++f) p.push_back(framePositions(clip, f)[size_t(j)]);
+      // Planted: for a run the frames near the foot's lowest point; for the others (a swing
+      // foot may skim the ground) the stance frames the gait defines.
+      const bool left = name.rfind("Left", 0) == 0;
+      const double offset = kind == GaitKind::Alternate && !left ? 0.5 : 0.0;
       double lowest = 1e9;
       for (const glm::dvec3& q : p) lowest = std::min(lowest, q.y);
-      glm::dvec2 lo(1e9), hi(-1e9);
+      // Per stance (a stance may wrap from the clip's end to its start, a cycle's travel apart).
+      glm::dvec2 lo[2] = {glm::dvec2(1e9), glm::dvec2(1e9)}, hi[2] = {glm::dvec2(-1e9), glm::dvec2(-1e9)};
       int planted = 0;
-      for (const glm::dvec3& q : p) {
-        if (q.y > lowest + 0.01) continue;
+      for (int f = 0; f < n; ++f) {
+        const double u = double(f) / n - offset;
+        const bool stance = kind == GaitKind::Stand || u - std::floor(u) < v.params.stanceFraction;
+        if (run ? p[size_t(f)].y > lowest + 0.01 : !stance) continue;
         ++planted;
-        lo = glm::min(lo, glm::dvec2(q.x, q.z));
-        hi = glm::max(hi, glm::dvec2(q.x, q.z));
+        const int which = u < 0.0 ? 1 : 0;
+        lo[which] = glm::min(lo[which], glm::dvec2(p[size_t(f)].x, p[size_t(f)].z));
+        hi[which] = glm::max(hi[which], glm::dvec2(p[size_t(f)].x, p[size_t(f)].z));
       }
-      const double drift = std::max(hi.x - lo.x, hi.y - lo.y);
-      MESSAGE(v.params.name, " ", name, ": lowest ", lowest, " m, ", planted,
-              " frames within 1 cm of it, horizontal drift ", drift * 100.0, " cm");
+      double drift = 0.0;
+      for (int k = 0; k < 2; ++k)
+        if (hi[k].x >= lo[k].x) drift = std::max({drift, hi[k].x - lo[k].x, hi[k].y - lo[k].y});
+      MESSAGE(v.params.name, " ", name, ": lowest ", lowest, " m, ", planted, " planted frames, horizontal drift ",
+              drift * 100.0, " cm");
       CHECK(planted >= 2);  // the ankle rises early in a fast stance as the heel lifts
-      CHECK(drift < 0.02);
+      // The ball of the foot stays put while planted; the ankle of a walk or hop rolls over it.
+      const bool ball = name.find("ToeBase") != std::string::npos;
+      CHECK(drift < (run ? 0.02 : ball ? 0.002 : kind == GaitKind::Stand ? 0.005 : 0.25));
     }
     // The ball of a planted foot sits on the ground (its joint 3 cm up), never below.
     const int leftBall = clip.skeleton.findJoint("LeftToeBase");
@@ -357,19 +391,44 @@ TEST_CASE("a planted foot does not skate, and the feet take turns") {
       rightDown += right;
       bothUp += !left && !right;
       bothDown += left && right;
-      // Left contact at phase 0, right contact half a cycle later.
+      const double u = double(f) / n;
+      if (kind == GaitKind::Stand) {
+        CHECK(left);
+        CHECK(right);
+        continue;
+      }
+      // Left contact at phase 0; the right foot half a cycle later, or with it in a hop.
       if (f == 0) CHECK(left);
-      if (f == 0) CHECK(!right);
-      if (double(f) / n < v.params.stanceFraction) CHECK(left);
-      if (double(f) / n >= 0.5 && double(f) / n < 0.5 + v.params.stanceFraction) CHECK(right);
+      if (f == 0 && run) CHECK(!right);
+      if (u < v.params.stanceFraction) CHECK(left);
+      if (kind == GaitKind::Hop) CHECK(left == right);
+      if (kind == GaitKind::Alternate && u >= 0.5 && u < 0.5 + v.params.stanceFraction) CHECK(right);
     }
-    CHECK(bothDown == 0);  // a run: never both feet on the ground
-    CHECK(bothUp >= 2);    // a flight phase after each step
+    if (run) CHECK(bothDown == 0);  // a run: never both feet on the ground
+    if (run || kind == GaitKind::Hop) CHECK(bothUp >= 2);  // a flight phase after each step or hop
+    if (walk) {
+      CHECK(bothUp == 0);    // a walk: always a foot on the ground,
+      CHECK(bothDown >= 4);  // and both at each change of foot
+    }
     CHECK(std::abs(leftDown - rightDown) <= 1);
+    MESSAGE(v.params.name, ": frames with the left foot down ", leftDown, ", right ", rightDown, ", both ", bothDown,
+            ", neither ", bothUp, " of ", n);
   }
 }
 
-TEST_CASE("throng assets generate writes both clips, and a bad --out is an error") {
+TEST_CASE("the standing pair differs where it should: talking lifts the hands well above idling") {
+  RawClip idle = generateGait(idleGait()), talk = generateGait(talkGait());
+  const int hand = idle.skeleton.findJoint("RightHand");
+  REQUIRE(hand >= 0);
+  double idleHighest = -1e9, talkHighest = -1e9;
+  for (int f = 0; f < idle.frameCount; ++f) idleHighest = std::max(idleHighest, framePositions(idle, f)[size_t(hand)].y);
+  for (int f = 0; f < talk.frameCount; ++f) talkHighest = std::max(talkHighest, framePositions(talk, f)[size_t(hand)].y);
+  MESSAGE("highest right hand: idle ", idleHighest, " m, talk ", talkHighest, " m");
+  CHECK(idleHighest < 0.95);               // hanging at the side
+  CHECK(talkHighest > idleHighest + 0.2);  // raised in gestures
+}
+
+TEST_CASE("throng assets generate writes every clip, and a bad --out is an error") {
   const fs::path dir =
       fs::temp_directory_path() / ("throng_test_assets_" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -382,8 +441,8 @@ TEST_CASE("throng assets generate writes both clips, and a bad --out is an error
     REQUIRE(fs::exists(written));
     CHECK(throng::readTextFile(written) == formatBvh(generateGait(v.params)));
   }
-  // Only the two clips: no temporary file left behind by the atomic writes.
-  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 2);
+  // Only the clips: no temporary file left behind by the atomic writes.
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == long(variants().size()));
 
   const fs::path notADir = dir / "run_slow.bvh";
   throng::test::CommandResult bad = throng::test::runThrong("assets generate --out '" + notADir.string() + "'");

@@ -89,7 +89,7 @@ TEST_CASE("placement: jitter stays within bounds and is deterministic per seed")
   sb::Placement c = sb::placeStoryboard(board, o);
   bool differs = false;
   for (size_t i = 0; i < board.glyphs.size(); ++i) {
-    float x = (float(board.glyphs[i].x) + 0.5f - 0.5f * float(board.width)) * o.cellSize;
+    float x = (float(board.glyphs[a.glyph[i]].x) + 0.5f - 0.5f * float(board.width)) * o.cellSize;
     CHECK(std::abs(a.crowd.placement[i].x - x) <= 0.2f + 1e-5f);
     CHECK(a.crowd.placement[i] == b.crowd.placement[i]);
     differs |= a.crowd.placement[i] != c.crowd.placement[i];
@@ -108,4 +108,37 @@ TEST_CASE("placement: impossible options are reported") {
   o = {};
   o.speeds[1] = {2.0f, 1.0f};
   CHECK_THROWS_WITH_AS(sb::placeStoryboard(board, o), doctest::Contains("speed range of 'hurried'"), Error);
+}
+
+TEST_CASE("placement: agents are ordered by clip set in contiguous ranges, glyph order within a set") {
+  std::vector<sb::Glyph> glyphs = {
+      {5, 5, sb::Heading::Top, sb::State::Stroll, sb::Action::Jump, 0},
+      {15, 5, sb::Heading::Right, sb::State::Hurried, sb::Action::Talk, 1},
+      {25, 5, sb::Heading::Down, sb::State::Hurried, sb::Action::Walk, 0},
+      {5, 15, sb::Heading::Left, sb::State::Stroll, sb::Action::Jump, 2},
+      {15, 15, sb::Heading::LeftDown, sb::State::Stroll, sb::Action::Walk, 1},
+      {25, 15, sb::Heading::Top, sb::State::Stroll, sb::Action::Talk, 0},
+  };
+  sb::Storyboard board = boardOf(30, 20, glyphs);
+  REQUIRE(board.glyphs.size() == 6);
+  sb::PlacementOptions o;
+  o.jitter = 0.0f;
+  o.actionSpeeds = std::array<sb::RootSpeeds, sb::kActionCount>{{{1.0f, 2.0f}, {2.5f, 4.5f}, {0.0f, 0.0f}, {1.0f, 2.0f}}};
+  sb::Placement p = sb::placeStoryboard(board, o);
+  CHECK(p.crowd.clipSet == std::vector<uint32_t>{0, 0, 2, 2, 3, 3});
+  CHECK(p.setBegin == std::array<uint32_t, 5>{0, 2, 2, 4, 6});
+  for (size_t i = 0; i < 6; ++i) {
+    const sb::Glyph& g = board.glyphs[p.glyph[i]];
+    CAPTURE(i);
+    CHECK(p.crowd.clipSet[i] == sb::clipSetOf(g.action));
+    CHECK(p.tint[i] == uint32_t(g.group));
+    CHECK(p.crowd.placement[i].x == doctest::Approx((float(g.x) + 0.5f - 15.0f) * o.cellSize));
+    CHECK(p.crowd.placement[i].w == doctest::Approx(sb::headingAngle(g.heading)));
+    if (i > 0 && p.crowd.clipSet[i] == p.crowd.clipSet[i - 1]) CHECK(p.glyph[i] > p.glyph[i - 1]);
+    // Travelling pairs map the drawn speed to w through their own root speeds; talkers get any w.
+    if (g.action == sb::Action::Walk || g.action == sb::Action::Jump)
+      CHECK(p.crowd.motion[i].y == doctest::Approx(crowd::speedWeight(p.speed[i], 1.0f, 2.0f)));
+    CHECK(p.crowd.motion[i].y >= 0.0f);
+    CHECK(p.crowd.motion[i].y <= 1.0f);
+  }
 }

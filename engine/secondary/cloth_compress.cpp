@@ -1,0 +1,263 @@
+#include "secondary/cloth_compress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include "core/error.h"
+#include "secondary/cloth_decoder.h"
+#include "secondary/cloth_svd.h"
+
+namespace throng::secondary {
+
+namespace {
+constexpr uint32_t kBlockColumns = 128;
+
+ColumnSource rawColumns(const ClothFrames& frames) {
+  ColumnSource source;
+  source.rows = frames.vertexCount * 3;
+  source.cols = frames.stateCount;
+  source.blockColumns = kBlockColumns;
+  source.read = [&frames](uint32_t first, Eigen::MatrixXf& block) {
+    for (Eigen::Index j = 0; j < block.cols(); ++j) {
+      std::span<glm::vec3> out(reinterpret_cast<glm::vec3*>(block.col(j).data()),
+                               frames.vertexCount);
+      frames.positions(first + uint32_t(j), out);
+    }
+  };
+  return source;
+}
+
+Eigen::VectorXf columnMean(const ColumnSource& raw, unsigned threads) {
+  std::mutex mutex;
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(raw.rows);
+  forEachColumnBlock(raw, threads, [&](uint32_t, const Eigen::MatrixXf& block) {
+    Eigen::VectorXd part = block.cast<double>().rowwise().sum();
+    std::lock_guard<std::mutex> lock(mutex);
+    sum += part;
+  });
+  return (sum / double(raw.cols)).cast<float>();
+}
+
+ColumnSource centeredColumns(const ColumnSource& raw, const Eigen::VectorXf& mean) {
+  ColumnSource source = raw;
+  source.read = [raw, &mean](uint32_t first, Eigen::MatrixXf& block) {
+    raw.read(first, block);
+    block.colwise() -= mean;
+  };
+  return source;
+}
+
+// Largest per-vertex distance of a residual block (rows 3v + axis).
+float maxVertexNorm(const Eigen::MatrixXf& residual) {
+  float largest = 0.0f;
+  for (Eigen::Index j = 0; j < residual.cols(); ++j)
+    for (Eigen::Index r = 0; r + 2 < residual.rows(); r += 3)
+      largest = std::max(largest, residual.col(j).segment<3>(r).squaredNorm());
+  return std::sqrt(largest);
+}
+
+// Largest vertex error of D ≈ U_b C_b (the first b bases), before quantization.
+float maxErrorWithBases(const ColumnSource& centered, const TruncatedSvd& svd, uint32_t b,
+                        unsigned threads) {
+  std::mutex mutex;
+  float largest = 0.0f;
+  forEachColumnBlock(centered, threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
+    Eigen::MatrixXf residual =
+        block - svd.bases.leftCols(b) * svd.coefficients.block(0, first, b, block.cols());
+    float e = maxVertexNorm(residual);
+    std::lock_guard<std::mutex> lock(mutex);
+    largest = std::max(largest, e);
+  });
+  return largest;
+}
+
+void validateOptions(const CompressOptions& o) {
+  if (!(o.quantum > 0.0f && o.quantum < 1.0f)) fail("quantum ", o.quantum, " m: expected (0, 1)");
+  if (o.bases == 0 && !(o.targetError > 0.0f))
+    fail("target error ", o.targetError, " m: expected > 0");
+  if (o.maxBases == 0 || o.maxBases > 4096) fail("max bases ", o.maxBases, ": expected 1..4096");
+  if (o.bases > 4096) fail("bases ", o.bases, ": expected 1..4096");
+}
+}  // namespace
+
+QuantizedBasis quantizeBasis(std::span<const float> unitBasis, float scale, float quantum) {
+  THRONG_CHECK(!unitBasis.empty(), "empty basis");
+  QuantizedBasis q;
+  q.scale = scale;
+  float lo = unitBasis[0] * scale, hi = lo;
+  for (float v : unitBasis) {
+    lo = std::min(lo, v * scale);
+    hi = std::max(hi, v * scale);
+  }
+  const float range = hi - lo;
+  q.bits = range / 255.0f <= quantum ? 8 : 16;
+  const float levels = q.bits == 8 ? 255.0f : 65535.0f;
+  q.offset = lo;
+  q.step = range > 0.0f ? range / levels : 0.0f;
+  q.values.resize(unitBasis.size());
+  for (size_t r = 0; r < unitBasis.size(); ++r) {
+    float level = q.step > 0.0f ? std::round((unitBasis[r] * scale - lo) / q.step) : 0.0f;
+    q.values[r] = uint16_t(std::clamp(level, 0.0f, levels));
+  }
+  return q;
+}
+
+ReconstructionError reconstructionError(const ClothFrames& frames, const ClothDatabase& db,
+                                        unsigned threads) {
+  THRONG_CHECK(frames.stateCount == db.stateCount() && frames.vertexCount == db.vertexCount,
+               "frames (", frames.stateCount, " × ", frames.vertexCount,
+               ") do not match the database (", db.stateCount(), " × ", db.vertexCount, ")");
+  DecodedBases d = dequantize(db);
+  ColumnSource raw = rawColumns(frames);
+  std::mutex mutex;
+  double sum = 0.0;
+  float largest = 0.0f;
+  forEachColumnBlock(raw, threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
+    std::vector<glm::vec3> decoded(db.vertexCount);
+    double partSum = 0.0;
+    float partMax = 0.0f;
+    for (Eigen::Index j = 0; j < block.cols(); ++j) {
+      decodeState(d, first + uint32_t(j), decoded);
+      for (uint32_t v = 0; v < db.vertexCount; ++v) {
+        glm::vec3 truth(block(3 * v, j), block(3 * v + 1, j), block(3 * v + 2, j));
+        float e = glm::length(decoded[v] - truth);
+        partSum += e;
+        partMax = std::max(partMax, e);
+      }
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    sum += partSum;
+    largest = std::max(largest, partMax);
+  });
+  return {largest, float(sum / (double(db.stateCount()) * db.vertexCount))};
+}
+
+ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> triangles,
+                            PlaybackPrimary primary, PlaybackGraph graph,
+                            const CompressOptions& options) {
+  validateOptions(options);
+  if (frames.stateCount == 0 || frames.vertexCount == 0 || !frames.positions)
+    fail("nothing to compress: ", frames.stateCount, " states of ", frames.vertexCount,
+         " vertices");
+  if (frames.stateCount != graph.stateCount())
+    fail("the frames hold ", frames.stateCount, " states, the graph ", graph.stateCount());
+  auto stage = [&](const char* name) {
+    if (options.progress) options.progress(name);
+  };
+  const unsigned threads = options.threads;
+  ColumnSource raw = rawColumns(frames);
+  stage("mean");
+  Eigen::VectorXf mean = columnMean(raw, threads);
+  ColumnSource centered = centeredColumns(raw, mean);
+
+  stage("svd");
+  SvdOptions svdOptions;
+  svdOptions.rank = options.bases ? options.bases : options.maxBases;
+  svdOptions.oversampling = options.oversampling;
+  svdOptions.powerIterations = options.powerIterations;
+  svdOptions.seed = options.seed;
+  svdOptions.threads = threads;
+  TruncatedSvd svd = randomizedSvd(centered, svdOptions);
+  const uint32_t available = uint32_t(svd.bases.cols());
+
+  stage("bases");
+  uint32_t b = available;
+  float errorBefore = 0.0f;
+  if (options.bases) {
+    b = std::min(options.bases, available);
+    errorBefore = maxErrorWithBases(centered, svd, b, threads);
+  } else {
+    // The error falls (almost always monotonically) with b: bisect for the fewest bases meeting
+    // the target; when even all of them miss it, keep them all (the cap).
+    errorBefore = maxErrorWithBases(centered, svd, b, threads);
+    if (errorBefore <= options.targetError) {
+      uint32_t lo = 1, hi = b;
+      float hiError = errorBefore;
+      while (lo < hi) {
+        uint32_t mid = (lo + hi) / 2;
+        float e = maxErrorWithBases(centered, svd, mid, threads);
+        if (e <= options.targetError) {
+          hi = mid;
+          hiError = e;
+        } else {
+          lo = mid + 1;
+        }
+      }
+      b = hi;
+      errorBefore = hiError;
+    }
+  }
+
+  stage("quantize");
+  ClothDatabase db;
+  db.vertexCount = frames.vertexCount;
+  db.triangles = std::move(triangles);
+  db.primary = std::move(primary);
+  db.graph = std::move(graph);
+  db.mean.assign(mean.data(), mean.data() + mean.size());
+  std::vector<float> scales(b);
+  for (uint32_t i = 0; i < b; ++i) {
+    float m = svd.coefficients.row(i).cwiseAbs().maxCoeff();
+    scales[i] = m > 0.0f ? m : 1.0f;  // an all-zero row keeps its unit basis
+    std::span<const float> unit(svd.bases.col(i).data(), size_t(svd.bases.rows()));
+    db.bases.push_back(quantizeBasis(unit, scales[i], options.quantum));
+  }
+  const uint32_t S = frames.stateCount;
+  db.coefficients.resize(size_t(S) * b);
+  for (uint32_t s = 0; s < S; ++s)
+    for (uint32_t i = 0; i < b; ++i)
+      db.coefficients[size_t(s) * b + i] = quantizeCoefficient(svd.coefficients(i, s) / scales[i]);
+  validateDatabase(db, "compressed cloth");
+
+  stage("error");
+  ReconstructionError after = reconstructionError(frames, db, threads);
+  CompressionReport& r = db.report;
+  r.targetError = options.bases ? 0.0f : options.targetError;
+  r.quantum = options.quantum;
+  r.maxErrorBeforeQuantization = errorBefore;
+  r.maxError = after.max;
+  r.meanError = after.mean;
+  r.singularValues.assign(svd.singularValues.data(), svd.singularValues.data() + b);
+  r.states = S;
+  r.vertices = frames.vertexCount;
+  r.bases = b;
+  r.bases8 = uint32_t(std::count_if(db.bases.begin(), db.bases.end(),
+                                    [](const QuantizedBasis& q) { return q.bits == 8; }));
+  r.bases16 = b - r.bases8;
+  r.rawBytes = uint64_t(S) * frames.vertexCount * 12;
+  r.storedBytes = encodeClothDatabase(db).size();
+  return db;
+}
+
+nlohmann::json compressionReportJson(const ClothDatabase& db) {
+  const CompressionReport& r = db.report;
+  nlohmann::json j;
+  j["format"] = "tsc";
+  j["states"] = db.stateCount();
+  j["primary_nodes"] = db.primary.nodeCount();
+  j["vertices"] = db.vertexCount;
+  j["triangles"] = db.triangles.size() / 3;
+  j["edges"] = db.graph.edgeTarget.size();
+  j["merge_edges"] =
+      std::count(db.graph.edgeIsMerge.begin(), db.graph.edgeIsMerge.end(), uint8_t(1));
+  j["bases"] = db.basisCount();
+  j["bases_8bit"] = r.bases8;
+  j["bases_16bit"] = r.bases16;
+  j["quantum_m"] = r.quantum;
+  j["target_error_m"] = r.targetError;
+  j["raw_bytes"] = r.rawBytes;
+  j["compressed_bytes"] = r.storedBytes;
+  j["ratio"] = r.ratio();
+  j["max_error_before_quantization_m"] = r.maxErrorBeforeQuantization;
+  j["max_reconstruction_error_m"] = r.maxError;
+  j["mean_reconstruction_error_m"] = r.meanError;
+  j["bucket_width"] = db.primary.run.bucketWidth;
+  return j;
+}
+
+nlohmann::json clothCompressedInfo(const std::filesystem::path& path) {
+  return compressionReportJson(readClothDatabase(path));
+}
+
+}  // namespace throng::secondary

@@ -1,0 +1,63 @@
+#pragma once
+// Compression of explored cloth states (Kim et al. 2013, §6): the data matrix D (3V rows ×
+// S states, character-space positions, the mean of each row subtracted) is factored D ≈ B C by
+// a randomized SVD that streams the states (memory stays bounded), b bases are kept (given, or
+// the fewest whose largest vertex error is at most a target), each basis is rescaled by
+// m_i = max_j |C_ij| so coefficients lie in [−1, 1], bases are quantized to 8 or 16 bits at a
+// length quantum and coefficients to 16 bits.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <span>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "secondary/cloth_database.h"
+
+namespace throng::secondary {
+
+// The cloth states to compress, read by index; `positions` must be deterministic and safe to
+// call from several threads at once (the SVD reads blocks in parallel, several times).
+struct ClothFrames {
+  uint32_t stateCount = 0;
+  uint32_t vertexCount = 0;
+  std::function<void(uint32_t state, std::span<glm::vec3> positions)> positions;
+};
+
+struct CompressOptions {
+  uint32_t bases = 0;          // 0: the fewest meeting targetError, at most maxBases
+  float targetError = 0.002f;  // metres, largest vertex error before quantization
+  uint32_t maxBases = 96;
+  float quantum = 300e-6f;  // metres: a basis goes to 8 bits when its range × m_i / 255 ≤ quantum
+  uint32_t oversampling = 10;
+  uint32_t powerIterations = 1;
+  uint64_t seed = 1;
+  unsigned threads = 0;                             // 0: all cores
+  std::function<void(const char* stage)> progress;  // optional: called as each stage starts
+};
+
+// The whole pipeline: mean, SVD, basis count, rescaling, quantization, and the report (raw vs
+// stored bytes, largest error before and after quantization). Throws Error on bad options or an
+// inconsistent graph (validateDatabase).
+ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> triangles,
+                            PlaybackPrimary primary, PlaybackGraph graph,
+                            const CompressOptions& options);
+
+// Basis i rescaled by m_i and quantized: 8 bits when range(basis × m_i) / 255 ≤ quantum, else 16.
+QuantizedBasis quantizeBasis(std::span<const float> unitBasis, float scale, float quantum);
+
+// Largest and mean per-vertex distance between the frames and their decoded states.
+struct ReconstructionError {
+  float max = 0.0f;
+  float mean = 0.0f;
+};
+ReconstructionError reconstructionError(const ClothFrames& frames, const ClothDatabase& db,
+                                        unsigned threads = 0);
+
+// `throng cloth info` for a .tsc file: states, primary nodes, bases (8/16 bits), raw and stored
+// bytes, ratio, errors in metres. Throws Error naming the file when it is not a valid .tsc.
+nlohmann::json clothCompressedInfo(const std::filesystem::path& path);
+nlohmann::json compressionReportJson(const ClothDatabase& db);
+
+}  // namespace throng::secondary

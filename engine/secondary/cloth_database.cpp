@@ -1,0 +1,285 @@
+#include "secondary/cloth_database.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/error.h"
+#include "core/file_io.h"
+#include "secondary/binary_io.h"
+#include "synth/motion_cache.h"
+
+namespace throng::secondary {
+
+namespace {
+constexpr std::string_view kKind = "compressed cloth (.tsc)";
+
+// Index arrays take the narrowest unsigned type holding their largest value.
+void addIndices(ChunkWriter& w, std::string_view tag, const std::vector<uint32_t>& values) {
+  uint32_t largest = values.empty() ? 0u : *std::max_element(values.begin(), values.end());
+  if (largest < 256u) {
+    w.add(tag, std::vector<uint8_t>(values.begin(), values.end()));
+  } else if (largest < 65536u) {
+    w.add(tag, std::vector<uint16_t>(values.begin(), values.end()));
+  } else {
+    w.add(tag, values);
+  }
+}
+
+template <typename T>
+std::vector<uint32_t> widened(const ChunkReader& r, std::string_view tag) {
+  std::vector<T> narrow = r.vector<T>(tag);
+  return {narrow.begin(), narrow.end()};
+}
+
+std::vector<uint32_t> readIndices(const ChunkReader& r, std::string_view tag) {
+  switch (r.require(tag).type) {
+    case ElementType::U8:
+      return widened<uint8_t>(r, tag);
+    case ElementType::U16:
+      return widened<uint16_t>(r, tag);
+    default:
+      return r.vector<uint32_t>(tag);
+  }
+}
+
+// One bit per merge flag.
+std::vector<uint8_t> packBits(const std::vector<uint8_t>& flags) {
+  std::vector<uint8_t> bytes((flags.size() + 7) / 8, 0);
+  for (size_t i = 0; i < flags.size(); ++i)
+    if (flags[i]) bytes[i / 8] |= uint8_t(1u << (i % 8));
+  return bytes;
+}
+
+struct BasisHeader {
+  uint32_t bits;
+  float scale, offset, step;
+};
+static_assert(sizeof(BasisHeader) == 16);
+
+struct ReportRecord {
+  float targetError, quantum, maxErrorBeforeQuantization, maxError, meanError, reserved;
+};
+static_assert(sizeof(ReportRecord) == 24);
+
+ChunkWriter writer(const ClothDatabase& db) {
+  validateDatabase(db, "cloth database");
+  ChunkWriter w(kClothDatabaseMagic, kClothDatabaseVersion);
+  w.addScalar("VERT", db.vertexCount);
+  addIndices(w, "TRIS", db.triangles);
+  const PlaybackPrimary& p = db.primary;
+  w.add("NODE", p.nodes);
+  addIndices(w, "PSUO", p.firstSuccessor);
+  addIndices(w, "PSUC", p.successors);
+  w.addScalar("BWID", p.run.bucketWidth);
+  addIndices(w, "FPBK", p.run.framesPerBucket);
+  // firstEdge follows from the states' nodes; merge flags are one bit each.
+  addIndices(w, "SNOD", db.graph.stateNode);
+  addIndices(w, "ETGT", db.graph.edgeTarget);
+  w.add("EMRG", packBits(db.graph.edgeIsMerge));
+  w.add("MEAN", db.mean);
+  std::vector<BasisHeader> headers;
+  std::vector<uint8_t> values8;
+  std::vector<uint16_t> values16;
+  for (const QuantizedBasis& b : db.bases) {
+    headers.push_back({b.bits, b.scale, b.offset, b.step});
+    if (b.bits == 8)
+      values8.insert(values8.end(), b.values.begin(), b.values.end());
+    else
+      values16.insert(values16.end(), b.values.begin(), b.values.end());
+  }
+  w.add("BASH", headers);
+  w.add("BAS8", values8);
+  w.add("BA16", values16);
+  w.add("COEF", db.coefficients);
+  const CompressionReport& r = db.report;
+  w.addScalar("REPT", ReportRecord{r.targetError, r.quantum, r.maxErrorBeforeQuantization,
+                                   r.maxError, r.meanError, 0.0f});
+  w.add("SVAL", r.singularValues);
+  return w;
+}
+
+ClothDatabase read(const ChunkReader& r) {
+  ClothDatabase db;
+  const std::string& name = r.name();
+  db.vertexCount = r.scalar<uint32_t>("VERT");
+  db.triangles = readIndices(r, "TRIS");
+  PlaybackPrimary& p = db.primary;
+  p.nodes = r.vector<PrimaryNode>("NODE");
+  p.firstSuccessor = readIndices(r, "PSUO");
+  p.successors = readIndices(r, "PSUC");
+  p.run.bucketWidth = r.scalar<float>("BWID");
+  p.run.framesPerBucket = readIndices(r, "FPBK");
+  db.graph.stateNode = readIndices(r, "SNOD");
+  db.graph.edgeTarget = readIndices(r, "ETGT");
+  if (p.firstSuccessor.size() != p.nodes.size() + 1)
+    fail(name, ": primary successor offsets do not match the nodes");
+  db.graph.firstEdge.assign(1, 0u);
+  for (uint32_t node : db.graph.stateNode) {
+    if (node >= p.nodes.size() || p.firstSuccessor[node] > p.firstSuccessor[node + 1])
+      fail(name, ": a state sits at node ", node, ", out of range (", p.nodes.size(), " nodes)");
+    db.graph.firstEdge.push_back(db.graph.firstEdge.back() + p.firstSuccessor[node + 1] -
+                                 p.firstSuccessor[node]);
+  }
+  r.expectCount(r.require("EMRG"), (db.graph.edgeTarget.size() + 7) / 8);
+  std::vector<uint8_t> bits = r.vector<uint8_t>("EMRG");
+  db.graph.edgeIsMerge.resize(db.graph.edgeTarget.size());
+  for (size_t i = 0; i < db.graph.edgeIsMerge.size(); ++i)
+    db.graph.edgeIsMerge[i] = (bits[i / 8] >> (i % 8)) & 1u;
+  db.mean = r.vector<float>("MEAN");
+  std::vector<BasisHeader> headers = r.vector<BasisHeader>("BASH");
+  const size_t rows = size_t(db.vertexCount) * 3;
+  size_t count8 = 0, count16 = 0;
+  for (const BasisHeader& h : headers) {
+    if (h.bits != 8 && h.bits != 16)
+      fail(name, ": a basis has ", h.bits, " bits, expected 8 or 16");
+    (h.bits == 8 ? count8 : count16) += rows;
+  }
+  r.expectCount(r.require("BAS8"), count8);
+  r.expectCount(r.require("BA16"), count16);
+  r.expectCount(r.require("COEF"), uint64_t(db.graph.stateNode.size()) * headers.size());
+  std::vector<uint8_t> values8 = r.vector<uint8_t>("BAS8");
+  std::vector<uint16_t> values16 = r.vector<uint16_t>("BA16");
+  size_t at8 = 0, at16 = 0;
+  for (const BasisHeader& h : headers) {
+    QuantizedBasis b;
+    b.bits = uint8_t(h.bits);
+    b.scale = h.scale;
+    b.offset = h.offset;
+    b.step = h.step;
+    if (b.bits == 8) {
+      b.values.assign(values8.begin() + long(at8), values8.begin() + long(at8 + rows));
+      at8 += rows;
+    } else {
+      b.values.assign(values16.begin() + long(at16), values16.begin() + long(at16 + rows));
+      at16 += rows;
+    }
+    db.bases.push_back(std::move(b));
+  }
+  db.coefficients = r.vector<int16_t>("COEF");
+  ReportRecord rec = r.scalar<ReportRecord>("REPT");
+  CompressionReport& rep = db.report;
+  rep.targetError = rec.targetError;
+  rep.quantum = rec.quantum;
+  rep.maxErrorBeforeQuantization = rec.maxErrorBeforeQuantization;
+  rep.maxError = rec.maxError;
+  rep.meanError = rec.meanError;
+  rep.singularValues = r.vector<float>("SVAL");
+  validateDatabase(db, name);
+  rep.states = db.stateCount();
+  rep.vertices = db.vertexCount;
+  rep.bases = db.basisCount();
+  rep.bases8 = uint32_t(std::count_if(db.bases.begin(), db.bases.end(),
+                                      [](const QuantizedBasis& b) { return b.bits == 8; }));
+  rep.bases16 = rep.bases - rep.bases8;
+  rep.rawBytes = uint64_t(rep.states) * rep.vertices * 12;
+  rep.storedBytes = r.totalBytes();
+  return db;
+}
+}  // namespace
+
+PlaybackPrimary playbackPrimary(const PrimaryGraph& graph, float bucketWidth) {
+  if (!(bucketWidth > 0.0f && bucketWidth <= 1.0f))
+    fail("bucket width ", bucketWidth, ": expected (0, 1]");
+  PlaybackPrimary p;
+  p.nodes = graph.nodes;
+  p.firstSuccessor.push_back(0);
+  for (const std::vector<uint32_t>& s : graph.successors) {
+    p.successors.insert(p.successors.end(), s.begin(), s.end());
+    p.firstSuccessor.push_back(uint32_t(p.successors.size()));
+  }
+  p.run.bucketWidth = bucketWidth;
+  p.run.framesPerBucket.assign(synth::speedBucketCount(bucketWidth), 0u);
+  for (const PrimaryNode& n : graph.nodes) {
+    if (n.clip != 0) continue;
+    if (n.bucket >= p.run.framesPerBucket.size())
+      fail("primary node of bucket ", n.bucket, " but a bucket width of ", bucketWidth, " gives ",
+           p.run.framesPerBucket.size(), " buckets");
+    p.run.framesPerBucket[n.bucket] = std::max(p.run.framesPerBucket[n.bucket], n.frame + 1);
+  }
+  return p;
+}
+
+void validateDatabase(const ClothDatabase& db, const std::string& name) {
+  const uint32_t V = db.vertexCount, S = db.stateCount(), N = db.primary.nodeCount(),
+                 B = db.basisCount();
+  auto bad = [&](const auto&... what) { fail(name, ": ", what...); };
+  if (V == 0) bad("the garment has no vertices");
+  if (db.triangles.size() % 3 != 0)
+    bad("triangle indices (", db.triangles.size(), ") are not a multiple of 3");
+  for (uint32_t i : db.triangles)
+    if (i >= V) bad("triangle index ", i, " out of range (", V, " vertices)");
+  const PlaybackPrimary& p = db.primary;
+  if (p.firstSuccessor.size() != size_t(N) + 1 || p.firstSuccessor.front() != 0 ||
+      p.firstSuccessor.back() != p.successors.size())
+    bad("primary successor offsets are inconsistent");
+  for (size_t n = 0; n < N; ++n)
+    if (p.firstSuccessor[n] > p.firstSuccessor[n + 1])
+      bad("primary successor offsets decrease at node ", n);
+  for (uint32_t s : p.successors)
+    if (s >= N) bad("primary successor ", s, " out of range (", N, " nodes)");
+  if (!(p.run.bucketWidth > 0.0f && p.run.bucketWidth <= 1.0f))
+    bad("bucket width ", p.run.bucketWidth);
+  if (p.run.framesPerBucket.size() != synth::speedBucketCount(p.run.bucketWidth))
+    bad("frames per bucket has ", p.run.framesPerBucket.size(), " entries, the bucket width gives ",
+        synth::speedBucketCount(p.run.bucketWidth));
+  const PlaybackGraph& g = db.graph;
+  if (S == 0) bad("no cloth states");
+  if (g.firstEdge.size() != size_t(S) + 1 || g.firstEdge.front() != 0 ||
+      g.firstEdge.back() != g.edgeTarget.size() || g.edgeIsMerge.size() != g.edgeTarget.size())
+    bad("secondary edge offsets are inconsistent");
+  for (uint32_t s = 0; s < S; ++s) {
+    uint32_t node = g.stateNode[s];
+    if (node >= N) bad("state ", s, " sits at node ", node, ", out of range (", N, " nodes)");
+    uint32_t edges = g.firstEdge[s + 1] - g.firstEdge[s];
+    uint32_t successors = p.firstSuccessor[node + 1] - p.firstSuccessor[node];
+    if (g.firstEdge[s] > g.firstEdge[s + 1] || edges != successors)
+      bad("state ", s, " has ", edges, " edges, its primary node ", node, " has ", successors,
+          " successors");
+    for (uint32_t k = 0; k < edges; ++k) {
+      uint32_t t = g.edgeTarget[g.firstEdge[s] + k];
+      if (t >= S)
+        bad("edge of state ", s, " leads to state ", t, ", out of range (", S, " states)");
+      if (g.stateNode[t] != p.successors[p.firstSuccessor[node] + k])
+        bad("edge ", k, " of state ", s, " leads to a state at node ", g.stateNode[t],
+            ", not at successor node ", p.successors[p.firstSuccessor[node] + k]);
+    }
+  }
+  if (db.mean.size() != size_t(V) * 3)
+    bad("mean has ", db.mean.size(), " values, expected ", size_t(V) * 3);
+  if (B == 0) bad("no bases");
+  for (uint32_t i = 0; i < B; ++i) {
+    const QuantizedBasis& b = db.bases[i];
+    if (b.bits != 8 && b.bits != 16)
+      bad("basis ", i, " has ", int(b.bits), " bits, expected 8 or 16");
+    if (b.values.size() != size_t(V) * 3)
+      bad("basis ", i, " has ", b.values.size(), " values, expected ", size_t(V) * 3);
+    if (b.bits == 8 && *std::max_element(b.values.begin(), b.values.end()) > 255)
+      bad("8-bit basis ", i, " exceeds 255");
+  }
+  if (db.coefficients.size() != size_t(S) * B)
+    bad("coefficients: ", db.coefficients.size(), " values, expected ", size_t(S) * B);
+}
+
+std::vector<uint8_t> encodeClothDatabase(const ClothDatabase& db) {
+  return writer(db).bytes();
+}
+
+bool isClothDatabase(std::span<const uint8_t> bytes) {
+  return bytes.size() >= kMagicBytes &&
+         std::memcmp(bytes.data(), kClothDatabaseMagic.data(), kMagicBytes) == 0;
+}
+
+ClothDatabase decodeClothDatabase(std::span<const uint8_t> bytes, const std::string& name) {
+  return read(ChunkReader::fromBytes(std::vector<uint8_t>(bytes.begin(), bytes.end()), name,
+                                     kClothDatabaseMagic, kClothDatabaseVersion, kKind));
+}
+
+void writeClothDatabase(const std::filesystem::path& path, const ClothDatabase& db) {
+  writer(db).writeFileAtomic(path);
+}
+
+ClothDatabase readClothDatabase(const std::filesystem::path& path) {
+  return read(ChunkReader::openFile(path, kClothDatabaseMagic, kClothDatabaseVersion, kKind));
+}
+
+}  // namespace throng::secondary

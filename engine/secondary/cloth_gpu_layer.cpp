@@ -1,0 +1,101 @@
+#include "secondary/cloth_gpu_layer.h"
+
+#include <cstring>
+
+#include "core/error.h"
+#include "gpu/commands.h"
+
+namespace throng::secondary {
+
+namespace {
+// Marks per frame: start, advanced, marked, decoded (compute hook), splat start and end, draw
+// start and end.
+constexpr uint32_t kMarks = 8;
+constexpr uint32_t kNoMark = 0xFFFFFFFFu;
+}  // namespace
+
+ClothLayer::ClothLayer(const gpu::Context& context, const ClothDatabase& db,
+                       const crowd::CrowdBuffers& crowd, VkFormat colorFormat, VkFormat depthFormat,
+                       const ClothLayerOptions& options)
+    : crowd_(&crowd),
+      options_(options),
+      programs_(context, colorFormat, depthFormat),
+      cloth_(uploadCloth(context, db)),
+      buffers_(makeClothCrowdBuffers(context, cloth_, crowd.count, options.fineBudgetBytes)) {
+  for (uint32_t i = 0; i < render::kFramesInFlight; ++i) {
+    views_.emplace_back(context, sizeof(gpu_types::ClothView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                        gpu::MemoryUse::HostVisible);
+    timestamps_.push_back(std::make_unique<gpu::TimestampPool>(context, kMarks));
+  }
+  splatMarks_.assign(render::kFramesInFlight, kNoMark);
+  drawMarks_.assign(render::kFramesInFlight, kNoMark);
+  splatted_.assign(render::kFramesInFlight, false);
+}
+
+render::FrameHooks ClothLayer::hooks(uint32_t slot) {
+  THRONG_CHECK(slot < render::kFramesInFlight, "frame slot ", slot, " out of range");
+  render::FrameHooks h;
+  h.afterSynthesis = [this, slot](VkCommandBuffer cmd, const render::DrawParams& params) {
+    recordCompute(cmd, params, slot);
+  };
+  h.intoSplat = [this, slot](VkCommandBuffer cmd, const gpu::Buffer& visibility,
+                             const render::DrawParams&) { recordSplat(cmd, visibility, slot); };
+  h.insideRenderPass = [this, slot](VkCommandBuffer cmd, const render::DrawParams&) {
+    recordDraw(cmd, slot);
+  };
+  return h;
+}
+
+void ClothLayer::recordCompute(VkCommandBuffer cmd, const render::DrawParams& params,
+                               uint32_t slot) {
+  gpu_types::ClothView view = makeClothView(params.camera, params.width, params.height, cloth_.lod,
+                                            options_.lod, clothSplattable(cloth_));
+  view.viewport.w = options_.tintLevels ? 1.0f : 0.0f;
+  std::memcpy(views_[slot].mapped(), &view, sizeof(view));
+  gpu::TimestampPool& t = *timestamps_[slot];
+  t.reset();
+  splatMarks_[slot] = drawMarks_[slot] = kNoMark;
+  splatted_[slot] = false;
+  t.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+  ClothAdvanceJob{&cloth_, crowd_, &buffers_}.record(cmd, programs_);
+  t.write(cmd);
+  gpu::computeToComputeBarrier(cmd);
+  ClothMarkJob{&cloth_, crowd_, &buffers_, &views_[slot]}.record(cmd, programs_);
+  t.write(cmd);
+  ClothDecodeJob{&cloth_, &buffers_}.record(cmd, programs_);
+  t.write(cmd);
+}
+
+void ClothLayer::recordSplat(VkCommandBuffer cmd, const gpu::Buffer& visibility, uint32_t slot) {
+  if (!clothSplattable(cloth_)) return;
+  gpu::TimestampPool& t = *timestamps_[slot];
+  splatMarks_[slot] = t.write(cmd);
+  gpu::computeToComputeBarrier(cmd);  // after the joints' splat into the same buffer
+  ClothSplatJob{&cloth_, crowd_, &buffers_, &views_[slot], &visibility}.record(cmd, programs_);
+  t.write(cmd);
+  splatted_[slot] = true;
+}
+
+void ClothLayer::recordDraw(VkCommandBuffer cmd, uint32_t slot) {
+  gpu::TimestampPool& t = *timestamps_[slot];
+  drawMarks_[slot] = t.write(cmd);
+  ClothDrawJob draw{&cloth_,        crowd_, &buffers_, &views_[slot], options_.tintLevels,
+                    splatted_[slot]};
+  draw.record(cmd, programs_);
+  t.write(cmd);
+}
+
+ClothTimings ClothLayer::timings(uint32_t slot) const {
+  const gpu::TimestampPool& t = *timestamps_[slot];
+  std::vector<uint64_t> ticks = t.fetch();
+  if (ticks.size() < 4) return {};
+  ClothTimings out{t.millisecondsBetween(ticks, 0, 1), t.millisecondsBetween(ticks, 1, 2),
+                   t.millisecondsBetween(ticks, 2, 3), 0.0, 0.0};
+  if (splatMarks_[slot] != kNoMark)
+    out.splatMs = t.millisecondsBetween(ticks, splatMarks_[slot], splatMarks_[slot] + 1);
+  if (drawMarks_[slot] != kNoMark)
+    out.drawMs = t.millisecondsBetween(ticks, drawMarks_[slot], drawMarks_[slot] + 1);
+  return out;
+}
+
+}  // namespace throng::secondary

@@ -1,0 +1,60 @@
+#pragma once
+// Capes on a rendered crowd: owns the uploaded database, the crowd's cloth buffers, the programs
+// and per-frame-slot view uniforms and timestamps, and hands render::recordCrowdFrame the hooks
+// that record the cloth passes (advance, mark, decode after the synthesis; the splat of far capes
+// into the joint renderer's visibility buffer when it splats; the draw inside the render pass).
+#include <memory>
+#include <vector>
+
+#include "gpu/timestamps.h"
+#include "render/crowd_frame.h"
+#include "secondary/cloth_gpu_jobs.h"
+#include "secondary/cloth_view.h"
+
+namespace throng::secondary {
+
+struct ClothLayerOptions {
+  ClothLodSettings lod;
+  bool tintLevels = false;                 // colour capes by garment level
+  uint64_t fineBudgetBytes = 48ull << 20;  // decoded vertices above the coarsest level
+};
+
+// GPU time of the cloth passes in one frame (timestamps), milliseconds.
+struct ClothTimings {
+  double advanceMs = 0.0, markMs = 0.0, decodeMs = 0.0, splatMs = 0.0, drawMs = 0.0;
+  double totalMs() const { return advanceMs + markMs + decodeMs + splatMs + drawMs; }
+};
+
+class ClothLayer {
+ public:
+  ClothLayer(const gpu::Context& context, const ClothDatabase& db, const crowd::CrowdBuffers& crowd,
+             VkFormat colorFormat, VkFormat depthFormat, const ClothLayerOptions& options = {});
+
+  // Hooks for a frame recorded into `frameSlot` (< render::kFramesInFlight). Record a slot again
+  // only after its previous frame completed (its uniforms and timestamps are reused).
+  render::FrameHooks hooks(uint32_t frameSlot);
+  // After the frame recorded into `frameSlot` completed.
+  ClothTimings timings(uint32_t frameSlot) const;
+  ClothStats stats() const { return readClothStats(buffers_); }
+
+  ClothLayerOptions& options() { return options_; }
+  const ClothGpuData& gpuData() const { return cloth_; }
+  const ClothCrowdBuffers& buffers() const { return buffers_; }
+
+ private:
+  void recordCompute(VkCommandBuffer cmd, const render::DrawParams& params, uint32_t slot);
+  void recordSplat(VkCommandBuffer cmd, const gpu::Buffer& visibility, uint32_t slot);
+  void recordDraw(VkCommandBuffer cmd, uint32_t slot);
+
+  const crowd::CrowdBuffers* crowd_ = nullptr;
+  ClothLayerOptions options_;
+  ClothPrograms programs_;
+  ClothGpuData cloth_;
+  ClothCrowdBuffers buffers_;
+  std::vector<gpu::Buffer> views_;
+  std::vector<std::unique_ptr<gpu::TimestampPool>> timestamps_;
+  std::vector<uint32_t> splatMarks_, drawMarks_;  // per slot: first of the two marks, or none
+  std::vector<bool> splatted_;                    // per slot: far capes went to the splat
+};
+
+}  // namespace throng::secondary

@@ -1,0 +1,97 @@
+#include "secondary/cloth_splat_cpu.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "core/error.h"
+
+namespace throng::secondary {
+
+glm::vec3 clothTint(uint32_t character) {
+  uint32_t h = character * 747796405u + 2891336453u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  glm::vec3 random(float(h & 255u), float((h >> 8) & 255u), float((h >> 16) & 255u));
+  return glm::mix(glm::vec3(0.55f, 0.1f, 0.12f), random / 255.0f, 0.35f);
+}
+
+glm::vec3 clothLevelTint(uint32_t level) {
+  static const glm::vec3 tints[4] = {
+      {0.2f, 0.75f, 0.3f}, {0.95f, 0.8f, 0.2f}, {0.95f, 0.5f, 0.15f}, {0.9f, 0.2f, 0.2f}};
+  return tints[std::min(level, 3u)];
+}
+
+namespace {
+float edge(glm::vec2 a, glm::vec2 b, glm::vec2 p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+uint32_t packColour(glm::vec4 c) {
+  uint32_t out = 0;
+  for (int i = 0; i < 4; ++i)
+    out |= uint32_t(std::round(std::clamp(c[i], 0.0f, 1.0f) * 255.0f)) << (8 * i);
+  return out;
+}
+}  // namespace
+
+void splatCapesCpu(const SplatInputs& in, std::span<const uint32_t> splatted,
+                   std::span<uint64_t> visibility) {
+  const gpu_types::ClothView& view = *in.view;
+  const int width = int(view.viewport.x), height = int(view.viewport.y);
+  THRONG_CHECK(visibility.size() >= size_t(width) * height,
+               "visibility buffer smaller than the view");
+  const uint32_t level = gpu_types::kClothSplatLevel;
+  const ClothLod& lod = *in.lod;
+  const uint32_t n = lod.levelVertices[level];
+  std::vector<glm::vec3> local(n), world(n), screen(n);
+  for (uint32_t character : splatted) {
+    const ClothCharacter& c = in.characters[character];
+    const uint32_t state = shownState(*in.tables, c, level);
+    const uint32_t decodedAt = in.stateLevel[state];
+    decodeStateSubset(*in.decoded, state, lod.order, lod.levelBases[decodedAt], local);
+    const glm::vec4 place = in.placement[character];
+    const float scale = in.motion[character].w;
+    const glm::vec2 heading = scale * glm::vec2(std::cos(place.w), std::sin(place.w));
+    for (uint32_t k = 0; k < n; ++k) {
+      const glm::vec3 p = local[k];
+      world[k] = glm::vec3(place) + glm::vec3(heading.x * p.x + heading.y * p.z, scale * p.y,
+                                              -heading.y * p.x + heading.x * p.z);
+      glm::vec4 clip = view.viewProjection * glm::vec4(world[k], 1.0f);
+      screen[k] = glm::vec3((glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(view.viewport),
+                            clip.z / clip.w);
+    }
+    const glm::vec3 base = view.viewport.w != 0.0f ? clothLevelTint(level) : clothTint(character);
+    for (uint32_t t = 0; t < lod.indexCount[level] / 3; ++t) {
+      const uint32_t* tri = &lod.indices[lod.firstIndex[level] + 3 * t];
+      const glm::vec3 p0 = screen[tri[0]], p1 = screen[tri[1]], p2 = screen[tri[2]];
+      const float area = edge(glm::vec2(p0), glm::vec2(p1), glm::vec2(p2));
+      const glm::vec2 lo = glm::min(glm::min(glm::vec2(p0), glm::vec2(p1)), glm::vec2(p2));
+      const glm::vec2 hi = glm::max(glm::max(glm::vec2(p0), glm::vec2(p1)), glm::vec2(p2));
+      const glm::ivec2 from = glm::max(glm::ivec2(glm::ceil(lo - 0.5f)), glm::ivec2(0));
+      const glm::ivec2 to =
+          glm::min(glm::ivec2(glm::floor(hi - 0.5f)), glm::ivec2(width, height) - 1);
+      if (std::abs(area) < 1e-8f || from.x > to.x || from.y > to.y) continue;
+      glm::vec3 normal =
+          glm::normalize(glm::cross(world[tri[1]] - world[tri[0]], world[tri[2]] - world[tri[0]]));
+      if (glm::dot(normal, glm::vec3(view.eye) - world[tri[0]]) < 0.0f) normal = -normal;
+      const float light = 0.35f + 0.65f * std::max(glm::dot(normal, glm::vec3(view.light)), 0.0f);
+      const uint32_t colour = packColour(glm::vec4(base * light, 1.0f));
+      const float inverseArea = 1.0f / area;
+      for (int y = from.y; y <= to.y; ++y)
+        for (int x = from.x; x <= to.x; ++x) {
+          const glm::vec2 p(float(x) + 0.5f, float(y) + 0.5f);
+          const float b0 = edge(glm::vec2(p1), glm::vec2(p2), p) * inverseArea;
+          const float b1 = edge(glm::vec2(p2), glm::vec2(p0), p) * inverseArea, b2 = 1.0f - b0 - b1;
+          if (b0 < 0.0f || b1 < 0.0f || b2 < 0.0f) continue;
+          const float depth = b0 * p0.z + b1 * p1.z + b2 * p2.z;
+          if (depth < 0.0f || depth > 1.0f) continue;
+          uint32_t depthBits;
+          std::memcpy(&depthBits, &depth, 4);
+          uint64_t& pixel = visibility[size_t(y) * width + x];
+          pixel = std::min(pixel, (uint64_t(depthBits) << 32) | colour);
+        }
+    }
+  }
+}
+
+}  // namespace throng::secondary

@@ -1,0 +1,42 @@
+#pragma once
+// The .tsg file: everything an exploration needs to be inspected, compressed or resumed —
+// the run config (garment and exploration options), the primary graph, the cloth mesh, the
+// secondary graph (states, edges, merge errors), every cloth frame (positions + velocities),
+// the merge queue, counters and the error history. binary_io chunks (magic "THRNGTSG"),
+// written atomically, so the file on disk is always a complete graph.
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "secondary/binary_io.h"
+#include "secondary/secondary_graph.h"
+
+namespace throng::secondary {
+
+constexpr std::string_view kTsgMagic = "THRNGTSG";
+constexpr uint32_t kTsgVersion = 1;
+
+struct ExploreFile {
+  nlohmann::json
+      config;  // {"garment": {...}, "explore": {"depth", "max_states", "velocity_scale"}}
+  PrimaryGraph primary;
+  ClothMesh mesh;
+  SecondaryGraph graph;
+};
+
+// Mesh chunks (tags 'M…'), for any file that embeds a garment.
+void addClothMeshChunks(ChunkWriter& writer, const ClothMesh& mesh);
+ClothMesh readClothMeshChunks(const ChunkReader& reader);
+// Secondary graph chunks (tags 'S…'); the frames are borrowed: `graph` must outlive the write.
+void addSecondaryGraphChunks(ChunkWriter& writer, const SecondaryGraph& graph);
+SecondaryGraph readSecondaryGraphChunks(const ChunkReader& reader, const PrimaryGraph& primary);
+
+void saveExploreFile(const std::filesystem::path& path, const nlohmann::json& config,
+                     const PrimaryGraph& primary, const ClothMesh& mesh,
+                     const SecondaryGraph& graph);
+// Throws Error naming the file on a bad magic, version, size, checksum or an inconsistent graph.
+ExploreFile loadExploreFile(const std::filesystem::path& path);
+// `throng cloth info` for a .tsg: counts, largest merge error, bytes; reads no frame.
+nlohmann::json exploreFileInfo(const std::filesystem::path& path, bool withHistory = false);
+
+}  // namespace throng::secondary

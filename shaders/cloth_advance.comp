@@ -1,0 +1,68 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Cloth playback, pass 1: each character's cloth state follows its own traversal of the
+// secondary graph (twin: secondary::advanceCharacter).
+#include "cloth_common.glsl"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };  // (phase, w, wTarget, scale)
+layout(std430, binding = 1) buffer Characters { ClothCharacter characters[]; };
+layout(std430, binding = 2) readonly buffer Graph { uint graph[]; };
+layout(push_constant) uniform Push { ClothAdvancePush push; };
+
+uint table(uint which, uint index) { return graph[graph[which] + index]; }
+
+uint characterNode(vec4 m) {
+  uint bucket = clothSpeedBucket(m.y, push.bucketWidth, push.bucketCount);
+  uint first = table(kTableRunFirst, bucket);
+  uint frames = table(kTableRunFirst, bucket + 1u) - first;
+  if (frames == 0u) return kClothNone;
+  uint frame = min(uint(max(m.x, 0.0) * float(frames)), frames - 1u);
+  return table(kTableRunNodes, first + frame);
+}
+
+uint successorIndex(uint from, uint to) {
+  uint begin = table(kTableFirstSuccessor, from), end = table(kTableFirstSuccessor, from + 1u);
+  for (uint e = begin; e < end; ++e)
+    if (table(kTableSuccessors, e) == to) return e - begin;
+  return kClothNone;
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= push.characterCount) return;
+  ClothCharacter c = characters[i];
+  uint target = characterNode(motion[i]);
+  if (target == kClothNone || target == c.node) return;
+  if (c.node != kClothNone && c.state != kClothNone) {
+    ClothCharacter walk = c;
+    for (uint step = 0u; step < push.maxWalkSteps; ++step) {
+      uint k = successorIndex(walk.node, target);
+      bool arrived = k != kClothNone;
+      if (!arrived) k = table(kTableNaturalSuccessor, walk.node);
+      if (k == kClothNone) break;
+      uint edge = table(kTableFirstEdge, walk.state) + k;
+      if (table(kTableEdgeIsMerge, edge) != 0u) {
+        walk.blendSource = walk.state;
+        walk.countdown = push.blendFrames;
+      } else if (walk.countdown > 0u) {
+        walk.countdown -= 1u;
+      }
+      walk.state = table(kTableEdgeTarget, edge);
+      walk.node = table(kTableSuccessors, table(kTableFirstSuccessor, walk.node) + k);
+      if (arrived) {
+        characters[i] = walk;
+        return;
+      }
+    }
+  }
+  uint state = table(kTableFirstStateAtNode, target);
+  if (state == kClothNone) return;
+  if (c.state != kClothNone) {
+    c.blendSource = c.state;
+    c.countdown = push.blendFrames;
+  }
+  c.state = state;
+  c.node = target;
+  characters[i] = c;
+}

@@ -1,0 +1,32 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Path-vector waypoints for one simulated second, on the GPU (once per second, not per step):
+// goal[i] = (start + R · Σ_{k≤j} P_k, max speed, 1) for agents active during that second, 0 for
+// the others. A source's vectors loop: past its end the agent starts over from where it is.
+// CPU twin: crowd::writeGoals (AgentPaths::waypoint).
+#include "crowd_types.h"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = 0) readonly buffer AgentStart { vec4 agentStart[]; };  // start x, z, rotation cos, sin
+layout(std430, binding = 1) readonly buffer AgentInfo { uvec4 agentInfo[]; };   // source, first second, last second, max speed bits
+layout(std430, binding = 2) readonly buffer SourceRange { uvec2 sourceRange[]; };  // first cumulative entry, vector count n
+layout(std430, binding = 3) readonly buffer Cumulative { vec2 cumulative[]; };     // per source: n + 1 partial sums
+layout(std430, binding = 4) writeonly buffer Goals { vec4 goals[]; };
+layout(push_constant) uniform Push { GoalPush push; };
+
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  if (i >= push.agentCount) return;
+  uvec4 info = agentInfo[i];
+  if (push.second < info.y || push.second >= info.z) {
+    goals[i] = vec4(0.0);
+    return;
+  }
+  uvec2 range = sourceRange[info.x];
+  uint j = push.second - info.y + 1u;
+  uint n = range.y;
+  vec2 offset = j <= n ? cumulative[range.x + j] : float(j / n) * cumulative[range.x + n] + cumulative[range.x + j % n];
+  vec4 start = agentStart[i];
+  vec2 w = start.xy + vec2(start.z * offset.x - start.w * offset.y, start.w * offset.x + start.z * offset.y);
+  goals[i] = vec4(w, uintBitsToFloat(info.w), 1.0);
+}

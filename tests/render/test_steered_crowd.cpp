@@ -1,0 +1,195 @@
+// The storyboard crowd in the frame (render::SteeredCrowd through recordCrowdFrame's hooks):
+// steering before root motion moves walkers along their path vectors, standing pairs stay,
+// several motion pairs draw as one crowd, and group tints colour the characters.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+
+#include "anim/default_clips.h"
+#include "core/error.h"
+#include "core/math.h"
+#include "gpu/commands.h"
+#include "gpu_fixture.h"
+#include "render/offscreen_target.h"
+#include "render/steered_crowd.h"
+
+using namespace throng;
+
+namespace {
+
+// `walkers` agents 6 m apart along x facing +z, then `talkers`; every walker follows one
+// straight source at 1.2 m/s. Walkers use the walk pair, talkers the idle/talk pair (or all
+// the walk pair with `onePair`).
+render::SteeredCrowdSetup lineSetup(uint32_t walkers, uint32_t talkers, bool onePair) {
+  render::SteeredCrowdSetup s;
+  const uint32_t n = walkers + talkers;
+  s.crowd.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    s.crowd.placement[i] = glm::vec4(6.0f * float(i) - 20.0f, 0.0f, 0.0f, 0.0f);
+    s.crowd.motion[i] = glm::vec4(0.1f * float(i), 0.3f, 0.3f, 1.0f);
+  }
+  crowd::PathSource source;
+  source.vectors.assign(12, glm::vec2(0.0f, 1.2f));
+  std::vector<crowd::PathSource> sources{source};
+  s.paths = crowd::followSources(s.crowd, sources, std::vector<uint32_t>(n, 0),
+                                 std::vector<float>(n, 2.0f));
+  for (uint32_t i = walkers; i < n; ++i) s.paths.lastSecond[i] = 0;  // talkers never steer
+  s.tints.assign(n, 0);
+  for (uint32_t i = walkers; i < n; ++i) s.tints[i] = 1;
+  anim::ClipPair walk = anim::defaultWalkPair();
+  s.pairs.push_back(anim::makeMotionPair(walk.slow, walk.fast));
+  if (onePair || talkers == 0) {
+    s.pairFirst = {0, n};
+  } else {
+    anim::ClipPair talk = anim::defaultTalkPair();
+    s.pairs.push_back(anim::makeMotionPair(talk.slow, talk.fast));
+    s.pairFirst = {0, walkers, n};
+  }
+  return s;
+}
+
+struct Rendered {
+  std::vector<glm::vec4> placement, motion;
+  ImageRgba8 image;
+};
+
+Rendered run(render::SteeredCrowd& steered, int frames, float dt, const render::Camera& camera,
+             uint32_t width, uint32_t height) {
+  gpu::Context& ctx = test::gpuContext();
+  render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
+  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
+  render::FrameTargets targets{target.color.get(),
+                               target.color.view(),
+                               target.depth.get(),
+                               target.depth.view(),
+                               width,
+                               height,
+                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  gpu::TimestampPool timestamps(ctx, 8);
+  for (int f = 0; f < frames; ++f) {
+    timestamps.reset();
+    render::FrameHooks hooks;
+    steered.addHooks(hooks, dt);
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      render::recordCrowdFrame(cmd, ctx, steered.programs(), steered.synth(), renderer, camera,
+                               60.0f, targets, dt, timestamps, 0, {}, false, &hooks);
+      render::recordReadback(cmd, target);
+    });
+  }
+  Rendered r;
+  r.placement = gpu::readback<glm::vec4>(ctx, steered.crowd().placement, steered.count());
+  r.motion = gpu::readback<glm::vec4>(ctx, steered.crowd().motion, steered.count());
+  r.image = render::readbackImage(target);
+  CHECK(ctx.validationMessageCount() == 0);
+  return r;
+}
+
+bool finite(glm::vec4 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "steered crowd: walkers follow their path vectors through root motion, talkers stand, nothing "
+    "is NaN") {
+  for (bool onePair : {false, true}) {
+    CAPTURE(onePair);
+    const uint32_t walkers = 5, talkers = 2;
+    render::SteeredCrowdSetup setup = lineSetup(walkers, talkers, onePair);
+    const std::vector<glm::vec4> start = setup.crowd.placement;
+    render::SteeredCrowd steered(test::gpuContext(), std::move(setup), {}, {});
+    CHECK(steered.pairCount() == (onePair ? 1u : 2u));
+    CHECK(steered.count() == walkers + talkers);
+    render::Camera camera = render::cameraPreset("top", 25.0f);
+    Rendered r = run(steered, 60, 1.0f / 30.0f, camera, 96, 54);  // two simulated seconds
+    CHECK(steered.seconds() == doctest::Approx(2.0));
+    for (uint32_t i = 0; i < walkers + talkers; ++i) {
+      CAPTURE(i);
+      REQUIRE(finite(r.placement[i]));
+      REQUIRE(finite(r.motion[i]));
+      CHECK(r.motion[i].z >= 0.0f);
+      CHECK(r.motion[i].z <= 1.0f);
+      const glm::vec2 moved(r.placement[i].x - start[i].x, r.placement[i].z - start[i].z);
+      if (i < walkers || onePair) {
+        // Along +z at about the path's 1.2 m/s (the walk pair moves at 1.0 to 1.6 m/s; w
+        // changes at cycle ends), without drifting sideways.
+        CHECK(moved.y > 1.8f);
+        CHECK(moved.y < 3.4f);
+        CHECK(std::abs(moved.x) < 0.3f);
+        CHECK(std::abs(r.placement[i].w) < 0.2f);  // still heading +z
+      } else {
+        CHECK(glm::length(moved) < 0.05f);  // the idle/talk pair does not travel
+      }
+    }
+  }
+}
+
+// Mean colour (normalized RGB) of the characters drawn in the left and right halves.
+std::array<glm::vec3, 2> sideColours(const ImageRgba8& image) {
+  const Rgba8 background = image.at(image.width / 2, 2);
+  glm::vec3 sum[2] = {glm::vec3(0.0f), glm::vec3(0.0f)};
+  int count[2] = {0, 0};
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const Rgba8 p = image.at(x, y);
+      if (std::abs(int(p.r) - int(background.r)) + std::abs(int(p.g) - int(background.g)) +
+              std::abs(int(p.b) - int(background.b)) <
+          60)
+        continue;
+      const int side = x < image.width / 2 ? 0 : 1;
+      sum[side] += glm::vec3(p.r, p.g, p.b);
+      ++count[side];
+    }
+  REQUIRE(count[0] > 20);
+  REQUIRE(count[1] > 20);
+  return {glm::normalize(sum[0] / float(count[0])), glm::normalize(sum[1] / float(count[1]))};
+}
+
+TEST_CASE("steered crowd: each group gets its own colour, several pairs draw as one crowd") {
+  // Two groups (one per motion pair) far apart seen from above: two hues; with one group
+  // for all, one hue (so the colour comes from the group, not from the character).
+  render::Camera camera;
+  camera.eye = {0.0f, 12.0f, -0.01f};
+  camera.target = {0.0f, 0.0f, 0.0f};
+  std::array<glm::vec3, 2> colours[2];
+  for (int sameGroup = 0; sameGroup < 2; ++sameGroup) {
+    render::SteeredCrowdSetup setup = lineSetup(4, 4, false);
+    for (uint32_t i = 0; i < 8; ++i)
+      setup.crowd.placement[i] =
+          glm::vec4(i < 4 ? -4.0f : 4.0f, 0.0f, 1.5f * float(i % 4) - 2.25f, 0.0f);
+    crowd::PathSource still;
+    still.vectors.assign(4, glm::vec2(0.0f, 0.0f));
+    std::vector<crowd::PathSource> sources{still};
+    setup.paths = crowd::followSources(setup.crowd, sources, std::vector<uint32_t>(8, 0),
+                                       std::vector<float>(8, 1.0f));
+    if (sameGroup) setup.tints.assign(8, 3);
+    render::SteeredCrowd steered(test::gpuContext(), std::move(setup), {}, {});
+    colours[sameGroup] = sideColours(run(steered, 2, 1.0f / 30.0f, camera, 128, 96).image);
+  }
+  const glm::vec3 a = colours[0][0], b = colours[0][1];
+  MESSAGE("two groups, normalized mean RGB: ", a.x, " ", a.y, " ", a.z, " vs ", b.x, " ", b.y, " ",
+          b.z);
+  CHECK(glm::dot(a, b) < 0.97f);                           // clearly different hues
+  CHECK(glm::dot(colours[1][0], colours[1][1]) > 0.995f);  // one group: one hue on both sides
+}
+
+TEST_CASE("steered crowd: inconsistent setups are refused") {
+  render::SteeredCrowdSetup setup = lineSetup(3, 2, false);
+  SUBCASE("ranges that leave agents out") {
+    setup.pairFirst = {0, 3, 4};
+    CHECK_THROWS_WITH_AS(render::SteeredCrowd(test::gpuContext(), std::move(setup), {}, {}),
+                         doctest::Contains("pair ranges"), Error);
+  }
+  SUBCASE("a pair without agents") {
+    setup.pairFirst = {0, 5, 5};
+    CHECK_THROWS_WITH_AS(render::SteeredCrowd(test::gpuContext(), std::move(setup), {}, {}),
+                         doctest::Contains("motion pair 1 has no agent"), Error);
+  }
+  SUBCASE("too few tints") {
+    setup.tints.pop_back();
+    CHECK_THROWS_WITH_AS(render::SteeredCrowd(test::gpuContext(), std::move(setup), {}, {}),
+                         doctest::Contains("tints"), Error);
+  }
+}

@@ -1,0 +1,96 @@
+// `throng cloth compress` end to end on a small explored cape, and its error paths.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_support.h"
+#include "core/file_io.h"
+#include "secondary/cloth_compress.h"
+
+using namespace throng;
+
+namespace {
+// A small cape (8 × 12 vertices) explored for a few expansions: about 0.5 s.
+std::filesystem::path exploredCape(const std::filesystem::path& dir) {
+  std::filesystem::path tsg = dir / "cape.tsg";
+  test::CommandResult r = test::runThrong(
+      "cloth explore --garment-config '{\"cape\": {\"columns\": 8, \"rows\": 12}}' "
+      "--budget-expansions 3 --quiet --out " +
+      tsg.string());
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  return tsg;
+}
+}  // namespace
+
+TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the result") {
+  std::filesystem::path dir = test::freshDirectory("cloth_compress");
+  std::filesystem::path tsg = exploredCape(dir), tsc = dir / "cape.tsc";
+  test::CommandResult r = test::runThrong("cloth compress " + tsg.string() + " --out " +
+                                          tsc.string() + " --json --quiet");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  nlohmann::json report = nlohmann::json::parse(r.output);
+  secondary::ClothDatabase db = secondary::readClothDatabase(tsc);
+  CHECK(report["states"] == db.stateCount());
+  CHECK(report["vertices"] == 96);
+  CHECK(report["compressed_bytes"] == std::filesystem::file_size(tsc));
+  CHECK(report["raw_bytes"] == uint64_t(db.stateCount()) * 96 * 12);
+  CHECK(report["max_reconstruction_error_m"].get<double>() >= 0.0);
+  CHECK(db.primary.run.bucketWidth == doctest::Approx(0.05f));  // the cape's run graph
+  CHECK(db.triangles.size() > 0);
+
+  test::CommandResult info = test::runThrong("cloth info " + tsc.string() + " --json");
+  INFO(info.output);
+  REQUIRE(info.exitCode == 0);
+  nlohmann::json j = nlohmann::json::parse(info.output);
+  CHECK(j["format"] == "tsc");
+  CHECK(j["bases"] == report["bases"]);
+  CHECK(j["max_reconstruction_error_m"] == report["max_reconstruction_error_m"]);
+
+  // A fixed basis count and a coarser quantum.
+  r = test::runThrong("cloth compress " + tsg.string() + " --out " + (dir / "b8.tsc").string() +
+                      " --bases 8 --quantum 0.001 --json --quiet");
+  REQUIRE(r.exitCode == 0);
+  CHECK(nlohmann::json::parse(r.output)["bases"] == 8);
+}
+
+TEST_CASE("cloth compress: bad input and options fail clearly and write nothing") {
+  std::filesystem::path dir = test::freshDirectory("cloth_compress_errors");
+  std::filesystem::path tsg = exploredCape(dir);
+  struct Case {
+    std::string arguments, expected;
+  };
+  const Case cases[] = {
+      {"cloth compress " + (dir / "missing.tsg").string() + " --out " + (dir / "a.tsc").string(),
+       "missing.tsg"},
+      {"cloth compress " + tsg.string() + " --out " + (dir / "a.tsc").string() + " --quantum 0",
+       "--quantum"},
+      {"cloth compress " + tsg.string() + " --out " + (dir / "a.tsc").string() +
+           " --bucket-width 2",
+       "--bucket-width"},
+      {"cloth compress " + tsg.string() + " --out /proc/no/a.tsc", "/proc/no"},
+      {"cloth compress " + tsg.string(), "--out"},
+  };
+  for (const Case& c : cases) {
+    test::CommandResult r = test::runThrong(c.arguments);
+    INFO(c.arguments, "\n", r.output);
+    CHECK(r.exitCode != 0);
+    CHECK(r.output.find(c.expected) != std::string::npos);
+  }
+  // Not an explored graph: a text file, and a truncated .tsg.
+  writeTextFileAtomic(dir / "text.tsg", "not a graph at all");
+  test::CommandResult r = test::runThrong("cloth compress " + (dir / "text.tsg").string() +
+                                          " --out " + (dir / "a.tsc").string());
+  CHECK(r.exitCode != 0);
+  CHECK(r.output.find("text.tsg") != std::string::npos);
+  std::filesystem::copy_file(tsg, dir / "cut.tsg");
+  std::filesystem::resize_file(dir / "cut.tsg", std::filesystem::file_size(tsg) / 2);
+  r = test::runThrong("cloth compress " + (dir / "cut.tsg").string() + " --out " +
+                      (dir / "a.tsc").string());
+  CHECK(r.exitCode != 0);
+  CHECK(r.output.find("truncated") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "a.tsc"));
+}

@@ -1,0 +1,178 @@
+// throng cloth compress: an explored secondary motion graph (.tsg) → a compressed playback
+// database (.tsc): SVD bases chosen by error, rescaled, quantized to 8/16 bits at a length
+// quantum, 16-bit coefficients (Kim et al. 2013, §6). `cloth explore` and `cloth info` live in
+// cmd_cloth.cpp; both files get-or-create the `cloth` parent command.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "core/error.h"
+#include "core/file_io.h"
+#include "secondary/cloth_compress.h"
+#include "secondary/explore_file.h"
+#include "secondary/secondary_graph.h"
+#include "synth/motion_cache.h"
+
+namespace throng::tools {
+namespace {
+namespace sec = throng::secondary;
+using nlohmann::json;
+
+struct CompressArgs {
+  std::string in, out;
+  uint32_t bases = 0;
+  float targetError = 0.002f;
+  uint32_t maxBases = 96;
+  float quantum = 300e-6f;
+  uint32_t powerIterations = 1;
+  uint64_t seed = 1;
+  unsigned threads = 0;
+  std::optional<float> bucketWidth;
+  bool json = false, quiet = false;
+};
+
+// The run graph's bucket width: the option, else the cape's config, else the width that gives
+// the graph's bucket count (buckets 0 … B−1 at w = b / (B − 1)).
+float bucketWidthOf(const CompressArgs& a, const sec::ExploreFile& file) {
+  if (a.bucketWidth) return *a.bucketWidth;
+  const json& garment = file.config.contains("garment") ? file.config["garment"] : json::object();
+  if (garment.value("name", "") == "cape" && garment.contains("cape") &&
+      garment["cape"].contains("bucket_width"))
+    return garment["cape"]["bucket_width"].get<float>();
+  uint32_t buckets = 0;
+  for (const sec::PrimaryNode& n : file.primary.nodes)
+    if (n.clip == 0) buckets = std::max(buckets, n.bucket + 1);
+  return buckets > 1 ? 1.0f / float(buckets - 1) : 1.0f;
+}
+
+json reportJson(const sec::ClothDatabase& db, const std::string& in, const std::string& out,
+                double seconds) {
+  json j = sec::compressionReportJson(db);
+  j["input"] = in;
+  j["output"] = out;
+  j["seconds"] = seconds;
+  return j;
+}
+
+void runCompress(const CompressArgs& a) {
+  if (!(a.quantum > 0.0f && a.quantum < 1.0f))
+    fail("--quantum ", a.quantum, ": expected metres in (0, 1)");
+  if (a.bases == 0 && !(a.targetError > 0.0f))
+    fail("--target-error ", a.targetError, ": expected metres > 0");
+  if (a.maxBases < 1 || a.maxBases > 4096) fail("--max-bases ", a.maxBases, ": expected 1..4096");
+  if (a.bases > 4096) fail("--bases ", a.bases, ": expected 0 (by error) or 1..4096");
+  if (a.bucketWidth && !(*a.bucketWidth > 0.0f && *a.bucketWidth <= 1.0f))
+    fail("--bucket-width ", *a.bucketWidth, ": expected (0, 1]");
+  const std::filesystem::path outPath = a.out;
+  // Refuse an unwritable output before the long part.
+  ensureWritableDirectory(outPath.has_parent_path() ? outPath.parent_path()
+                                                    : std::filesystem::path("."));
+
+  const auto start = std::chrono::steady_clock::now();
+  sec::ExploreFile file = sec::loadExploreFile(a.in);
+  const sec::SecondaryGraph& g = file.graph;
+  if (g.stateCount() == 0) fail(a.in, ": the graph has no cloth states");
+  sec::PlaybackGraph playback = sec::playbackGraph(g);
+  sec::PlaybackPrimary primary = sec::playbackPrimary(file.primary, bucketWidthOf(a, file));
+
+  sec::ClothFrames frames;
+  frames.stateCount = g.stateCount();
+  frames.vertexCount = g.vertexCount;
+  frames.positions = [&g](uint32_t s, std::span<glm::vec3> out) {
+    sec::FrameView f = g.frame(s);
+    std::copy(f.positions.begin(), f.positions.end(), out.begin());
+  };
+  sec::CompressOptions options;
+  options.bases = a.bases;
+  options.targetError = a.targetError;
+  options.maxBases = a.maxBases;
+  options.quantum = a.quantum;
+  options.powerIterations = a.powerIterations;
+  options.seed = a.seed;
+  options.threads = a.threads;
+  if (!a.quiet)
+    options.progress = [&](const char* stage) {
+      std::fprintf(stderr, "compress: %s (%u frames × %u vertices)\n", stage, frames.stateCount,
+                   frames.vertexCount);
+    };
+  sec::ClothDatabase db = sec::compressCloth(frames, file.mesh.triangles, std::move(primary),
+                                             std::move(playback), options);
+  sec::writeClothDatabase(outPath, db);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  json report = reportJson(db, a.in, a.out, seconds);
+  if (a.json) {
+    std::cout << report.dump(2) << '\n';
+    return;
+  }
+  const sec::CompressionReport& r = db.report;
+  std::printf("%s → %s: %u cloth frames × %u vertices, %u bases (%u at 8 bits, %u at 16)\n",
+              a.in.c_str(), a.out.c_str(), r.states, r.vertices, r.bases, r.bases8, r.bases16);
+  std::printf("  raw float32 %.2f MB → stored %.3f MB: %.1f:1\n", r.rawBytes / 1e6,
+              r.storedBytes / 1e6, r.ratio());
+  std::printf(
+      "  max reconstruction error %.3f mm (%.3f mm before quantization at %.0f µm), mean %.3f mm; "
+      "%.1f s\n",
+      1000.0 * r.maxError, 1000.0 * r.maxErrorBeforeQuantization, 1e6 * r.quantum,
+      1000.0 * r.meanError, seconds);
+}
+
+CLI::App* clothCommand(CLI::App& app) {
+  // `cloth` is shared with cmd_cloth.cpp; registration order is unspecified, so whichever comes
+  // first creates it (CLI11 2.1 has no get_subcommand_no_throw).
+  try {
+    return app.get_subcommand("cloth");
+  } catch (const CLI::OptionNotFound&) {
+    CLI::App* cloth =
+        app.add_subcommand("cloth", "Secondary motion: cloth exploration, compression, info");
+    cloth->require_subcommand(1);
+    return cloth;
+  }
+}
+
+void addClothCompressCommand(CLI::App& app, int& /*exitCode*/) {
+  CLI::App* cloth = clothCommand(app);
+  auto a = std::make_shared<CompressArgs>();
+  CLI::App* cmd = cloth->add_subcommand("compress",
+                                        "Compress an explored graph (.tsg) into a playback "
+                                        "database (.tsc): SVD + 8/16-bit quantization");
+  cmd->add_option("graph", a->in, "The explored secondary motion graph (.tsg)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out,-o", a->out, "The compressed database (.tsc, written atomically)")
+      ->required();
+  cmd->add_option("--bases", a->bases,
+                  "Number of bases (default: the fewest meeting --target-error)");
+  cmd->add_option("--target-error", a->targetError,
+                  "Largest vertex error (m) before quantization that picks the basis count")
+      ->capture_default_str();
+  cmd->add_option("--max-bases", a->maxBases, "Cap on the basis count chosen by error")
+      ->capture_default_str();
+  cmd->add_option(
+         "--quantum", a->quantum,
+         "Length quantum (m): a basis takes 8 bits when its range × m_i / 255 fits it, else 16")
+      ->capture_default_str();
+  cmd->add_option("--power-iterations", a->powerIterations, "Randomized SVD power iterations")
+      ->capture_default_str();
+  cmd->add_option("--seed", a->seed, "Seed of the randomized SVD")->capture_default_str();
+  cmd->add_option("--threads", a->threads, "Threads (0: all cores)");
+  cmd->add_option("--bucket-width", a->bucketWidth,
+                  "Speed-bucket width of the run graph (default: the garment's, else from the "
+                  "graph's bucket count)");
+  cmd->add_flag("--json", a->json, "Print the report as JSON");
+  cmd->add_flag("--quiet", a->quiet, "No progress lines");
+  cmd->callback([a] { runCompress(*a); });
+}
+
+const CommandRegistration kRegistration("cloth_compress", addClothCompressCommand);
+
+}  // namespace
+}  // namespace throng::tools

@@ -1,0 +1,175 @@
+#include "scene_storyboard.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "crowd/trajectories.h"
+#include "storyboard/codec.h"
+#include "storyboard/legend.h"
+#include "storyboard/storyboard_placement.h"
+
+namespace throng::tools {
+namespace sb = throng::storyboard;
+
+namespace {
+
+sb::Storyboard readSceneStoryboard(const StoryboardSceneOptions& s) {
+  const sb::Legend legend = s.legend.empty() ? sb::Legend{} : sb::loadLegend(s.legend);
+  sb::Storyboard board = sb::readStoryboard(s.storyboard, legend, false);
+  if (board.glyphs.empty()) fail(s.storyboard, ": no valid glyph, so no agent to animate");
+  return board;
+}
+
+void requireFile(const std::string& path, const char* option) {
+  if (!std::filesystem::is_regular_file(path)) fail(option, " ", path, ": no such file");
+}
+
+// Path vectors scaled to the speeds the agent's clip pair can produce (root motion moves a
+// character at least as fast as the slow clip): the agent keeps its source's path shape, turns
+// and pauses aside. A pair that does not travel (talk) stands: its path is never active.
+void fitPathsToClips(crowd::AgentPaths& paths, std::span<const crowd::PathSource> sources,
+                     std::span<const uint32_t> assigned, std::span<const uint32_t> pairOf,
+                     std::span<const sb::RootSpeeds> speeds) {
+  for (size_t i = 0; i < paths.size(); ++i) {
+    const sb::RootSpeeds r = speeds[pairOf[i]];
+    if (!(r.fast > 0.0f)) {
+      paths.lastSecond[i] = 0;
+      paths.maxSpeed[i] = 0.0f;
+      continue;
+    }
+    const float mean = sources[assigned[i]].meanSpeed();
+    const float scale = mean > 0.05f ? std::clamp(mean, r.slow, r.fast) / mean : 1.0f;
+    paths.rotation[i] *= scale;
+    paths.maxSpeed[i] = 1.25f * r.fast;
+  }
+}
+
+}  // namespace
+
+crowd::SteerPolicy scenePolicy(const std::string& name) {
+  if (name == "published" || name == "rule") return crowd::SteerPolicy::Rule;
+  if (name == "anticipatory" || name == "ttc") return crowd::SteerPolicy::Ttc;
+  if (name == "none") return crowd::SteerPolicy::None;
+  fail("--policy '", name, "': expected anticipatory, published or none");
+}
+
+void validateStoryboardScene(SceneOptions& o) {
+  StoryboardSceneOptions& s = o.story;
+  if (s.storyboard.empty() || s.trajectories.empty())
+    fail("the storyboard scene needs --storyboard FILE.png and --trajectories FILE");
+  if (!(s.cell > 0.0f) || !std::isfinite(s.cell)) fail("--cell: expected metres > 0, got ", s.cell);
+  if (!(s.jitter >= 0.0f) || !std::isfinite(s.jitter))
+    fail("--jitter: expected metres >= 0, got ", s.jitter);
+  if (!(s.radius > 0.0f) || !std::isfinite(s.radius))
+    fail("--radius: expected metres > 0, got ", s.radius);
+  if (!(s.stepTime >= 0.0f)) fail("--step-time: expected seconds >= 0, got ", s.stepTime);
+  scenePolicy(s.policy);
+  if (o.speedPeriod != 0.0f)
+    fail("--speed-period: storyboard agents take their speeds from their path vectors");
+  requireFile(s.storyboard, "--storyboard");
+  requireFile(s.trajectories, "--trajectories");
+  if (!s.legend.empty()) requireFile(s.legend, "--legend");
+  const sb::Storyboard board = readSceneStoryboard(s);  // a bad file fails before the GPU starts
+  s.extent = 0.5f * float(std::max(board.width, board.height)) * s.cell;
+}
+
+render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
+                                              const anim::ClipPair* userClips) {
+  const StoryboardSceneOptions& s = o.story;
+  const sb::Storyboard board = readSceneStoryboard(s);
+  crowd::TrajectoryOptions trajectoryOptions;
+  trajectoryOptions.secondsPerStep = s.stepTime;
+  const crowd::Trajectories tracks = crowd::loadTrajectories(s.trajectories, trajectoryOptions);
+  const std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(tracks);
+
+  // One motion pair per action (walk, run, talk, jump), or the user's pair for all of them.
+  std::vector<anim::ClipPair> clips;
+  if (userClips)
+    clips.push_back(*userClips);
+  else
+    clips = anim::defaultClipSets();
+  std::vector<anim::MotionPair> motion;
+  std::vector<sb::RootSpeeds> speeds;
+  for (const anim::ClipPair& c : clips) {
+    motion.push_back(anim::makeMotionPair(c.slow, c.fast));
+    speeds.push_back(
+        {crowd::clipRootSpeed(motion.back().slow), crowd::clipRootSpeed(motion.back().fast)});
+  }
+  sb::PlacementOptions placeOptions;
+  placeOptions.cellSize = s.cell;
+  placeOptions.jitter = s.jitter;
+  placeOptions.seed = o.scenario.seed;
+  if (userClips) {
+    placeOptions.slowSpeed = speeds[0].slow;
+    placeOptions.fastSpeed = speeds[0].fast;
+  } else {
+    placeOptions.actionSpeeds.emplace();
+    std::copy_n(speeds.begin(), sb::kActionCount, placeOptions.actionSpeeds->begin());
+  }
+  const sb::Placement placed = sb::placeStoryboard(board, placeOptions);
+  const size_t n = placed.crowd.size();
+
+  const std::vector<uint32_t> assigned =
+      crowd::assignSources(sources, placed.speedRange, o.scenario.seed);
+  render::SteeredCrowdSetup setup;
+  setup.paths = crowd::followSources(placed.crowd, sources, assigned, std::vector<float>(n, 1.0f));
+  std::vector<uint32_t> pairOf(n, 0);
+  if (!userClips) pairOf = placed.crowd.clipSet;
+  fitPathsToClips(setup.paths, sources, assigned, pairOf, speeds);
+  setup.crowd = placed.crowd;
+  setup.tints = placed.tint;
+  setup.pairFirst.push_back(0);
+  for (size_t k = 0; k < motion.size(); ++k) {
+    const uint32_t end = userClips ? uint32_t(n) : placed.setBegin[k + 1];
+    if (end == setup.pairFirst.back()) continue;  // no agent does this action
+    setup.pairs.push_back(std::move(motion[k]));
+    setup.pairFirst.push_back(end);
+  }
+  setup.avoidance.policy = scenePolicy(s.policy);
+  setup.avoidance.radius = s.radius;
+  setup.avoidance.seed = uint32_t(o.scenario.seed);
+  logInfo(concat("storyboard ", s.storyboard, ": ", n, " agents (walk ", placed.setBegin[1],
+                 ", run ", placed.setBegin[2] - placed.setBegin[1], ", talk ",
+                 placed.setBegin[3] - placed.setBegin[2], ", jump ",
+                 placed.setBegin[4] - placed.setBegin[3], "; ", board.invalid.size(),
+                 " invalid glyphs skipped) following ", sources.size(), " tracked people of ",
+                 s.trajectories, ", avoidance ", crowd::steerPolicyName(setup.avoidance.policy)));
+  return setup;
+}
+
+SceneCrowd::SceneCrowd(const gpu::Context& context, const SceneOptions& o,
+                       const anim::ClipPair& clips) {
+  if (o.storyboard()) {
+    const anim::ClipPair* user = o.slowClip.empty() ? nullptr : &clips;
+    steered_ = std::make_unique<render::SteeredCrowd>(context, makeStoryboardSetup(o, user),
+                                                      sceneCacheOptions(o),
+                                                      sceneLodOptions(o, clips.slow.skeleton));
+    return;
+  }
+  pair_ = std::make_unique<anim::MotionPair>(anim::makeMotionPair(clips.slow, clips.fast));
+  programs_ = std::make_unique<synth::SynthPrograms>(context, *pair_);
+  synth_ = synth::makeCrowdSynth(context, *pair_, makeSceneCrowd(o), sceneCacheOptions(o),
+                                 sceneLodOptions(o, clips.slow.skeleton));
+}
+
+const synth::CrowdSynth& SceneCrowd::synth() const {
+  return steered_ ? steered_->synth() : synth_;
+}
+const synth::SynthPrograms& SceneCrowd::programs() const {
+  return steered_ ? steered_->programs() : *programs_;
+}
+const crowd::CrowdBuffers& SceneCrowd::crowd() const {
+  return steered_ ? steered_->crowd() : synth_.crowd;
+}
+uint32_t SceneCrowd::count() const {
+  return crowd().count;
+}
+
+void SceneCrowd::addHooks(render::FrameHooks& hooks, float dt) {
+  if (steered_) steered_->addHooks(hooks, dt);
+}
+
+}  // namespace throng::tools

@@ -1,0 +1,45 @@
+#pragma once
+// The storyboard scene of `throng render` and `throng view` (--storyboard FILE --trajectories
+// FILE): the storyboard's glyphs placed as agents (ordered by clip set), each following the
+// path vectors of a tracked person from real video, with GPU collision avoidance, animated by
+// the clip pair of its action (built-in walk, run, idle/talk and hop pairs; --slow/--fast give
+// one pair to every action) and tinted by its group. The frame work is render::SteeredCrowd.
+#include <memory>
+
+#include "gpu/context.h"
+#include "render/steered_crowd.h"
+#include "scene_options.h"
+
+namespace throng::tools {
+
+// Checks the storyboard options and reads the storyboard's size (sets options.story.extent);
+// throws Error naming the option or file.
+void validateStoryboardScene(SceneOptions& options);
+crowd::SteerPolicy scenePolicy(const std::string& name);  // published|rule, anticipatory|ttc, none
+
+// Loads the storyboard and the trajectories and builds the agents, their paths and the pairs.
+// `userClips`: the --slow/--fast pair for every action (null: the built-in pair per action).
+render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& options,
+                                              const anim::ClipPair* userClips);
+
+// What a frame animates: the plain scenario's crowd (one CrowdSynth) or a storyboard crowd.
+class SceneCrowd {
+ public:
+  SceneCrowd(const gpu::Context& context, const SceneOptions& options, const anim::ClipPair& clips);
+  const synth::CrowdSynth& synth() const;  // what recordCrowdFrame synthesizes
+  const synth::SynthPrograms& programs() const;
+  const crowd::CrowdBuffers& crowd() const;  // every character's placement and motion
+  uint32_t count() const;
+  uint32_t jointCount() const { return synth().jointCount(); }
+  const render::SteeredCrowd* steered() const { return steered_.get(); }
+  // The storyboard's work of this frame (nothing for a plain scene); once per frame.
+  void addHooks(render::FrameHooks& hooks, float dt);
+
+ private:
+  std::unique_ptr<anim::MotionPair> pair_;
+  std::unique_ptr<synth::SynthPrograms> programs_;
+  synth::CrowdSynth synth_;
+  std::unique_ptr<render::SteeredCrowd> steered_;
+};
+
+}  // namespace throng::tools
