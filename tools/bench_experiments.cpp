@@ -109,52 +109,53 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
       synth::poseCrowdCpu(pair, crowd, cpuJoints, threads);
       cpuMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
-    synth::CrowdSynth full = synth::makeCrowdSynth(context, pair, crowd);
-    synth::CrowdSynth lod = synth::makeCrowdSynth(context, pair, crowd, {}, {true, {}, &skeleton});
-    // The cache poses every character at its bucket's speed.
-    crowd::Crowd bucketed = crowd;
-    for (glm::vec4& m : bucketed.motion) m.y = m.z = synth::quantizeSpeed(m.y, 0.05f);
-    synth::CrowdSynth cached =
-        synth::makeCrowdSynth(context, pair, bucketed, {true, 0.05f, 20ull << 20}, {true, {}, &skeleton});
     const float extent = crowd::scenarioExtent(scenario);
     gpu::CommandPool pool(context);
     VkCommandBuffer cmd = pool.allocate();
     gpu::Fence fence(context);
-    gpu::TimestampPool timestamps(context, 4);
-    double activeShare = 0.0;
-    for (int f = 0; f < o.frames; ++f) {
-      // Orbit: a full turn over the run, height and distance of the default wide camera.
-      float angle = 6.2831853f * float(f) / float(o.frames);
-      render::Camera camera = render::cameraPreset("wide", extent);
-      glm::vec3 offset = camera.eye - camera.target;
-      float radius = glm::length(glm::vec2(offset.x, offset.z));
-      camera.eye = camera.target + glm::vec3(radius * std::sin(angle), offset.y, -radius * std::cos(angle));
-      synth::CoverageCamera lodCamera = synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane);
-      timestamps.reset();
-      gpu::beginCommands(cmd);
-      timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-      synth::recordSynthesis(cmd, programs, full, 1.0f / 30.0f, context.info().maxStorageBufferRange);
-      timestamps.write(cmd);
-      synth::recordSynthesis(cmd, programs, lod, 1.0f / 30.0f, context.info().maxStorageBufferRange, {}, &lodCamera);
-      timestamps.write(cmd);
-      synth::recordSynthesis(cmd, programs, cached, 1.0f / 30.0f, context.info().maxStorageBufferRange, {}, &lodCamera);
-      timestamps.write(cmd);
-      gpu::endCommands(cmd);
-      gpu::submit(context, cmd, fence.get());
-      fence.wait();
-      fence.reset();
-      if (f < 2) continue;
-      std::vector<uint64_t> ticks = timestamps.fetch();
-      fullMs.push_back(timestamps.millisecondsBetween(ticks, 0, 1));
-      lodMs.push_back(timestamps.millisecondsBetween(ticks, 1, 2));
-      cachedMs.push_back(timestamps.millisecondsBetween(ticks, 2, 3));
-      if (f == o.frames - 1) {
-        auto masks = gpu::readback<synth::CoverageMask>(context, lod.masks, n);
-        size_t active = 0;
-        for (const synth::CoverageMask& m : masks) active += size_t(std::popcount(synth::maskBits(m)));
-        activeShare = double(active) / (double(n) * pair.jointCount());
+    gpu::TimestampPool timestamps(context, 2);
+    // Each variant runs the same orbit on its own synthesis, one at a time, so that a million
+    // characters need one joint buffer of device memory, not three.
+    auto timeVariant = [&](const synth::CrowdSynth& synth, bool lodOn) {
+      std::vector<double> ms;
+      for (int f = 0; f < o.frames; ++f) {
+        // Orbit: a full turn over the run, height and distance of the default wide camera.
+        float angle = 6.2831853f * float(f) / float(o.frames);
+        render::Camera camera = render::cameraPreset("wide", extent);
+        glm::vec3 offset = camera.eye - camera.target;
+        float radius = glm::length(glm::vec2(offset.x, offset.z));
+        camera.eye = camera.target + glm::vec3(radius * std::sin(angle), offset.y, -radius * std::cos(angle));
+        synth::CoverageCamera lodCamera =
+            synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane);
+        timestamps.reset();
+        gpu::beginCommands(cmd);
+        timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+        synth::recordSynthesis(cmd, programs, synth, 1.0f / 30.0f, context.info().maxStorageBufferRange, {},
+                               lodOn ? &lodCamera : nullptr);
+        timestamps.write(cmd);
+        gpu::endCommands(cmd);
+        gpu::submit(context, cmd, fence.get());
+        fence.wait();
+        fence.reset();
+        if (f >= 2) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
       }
+      return ms;
+    };
+    double activeShare = 0.0;
+    fullMs = timeVariant(synth::makeCrowdSynth(context, pair, crowd), false);
+    {
+      synth::CrowdSynth lod = synth::makeCrowdSynth(context, pair, crowd, {}, {true, {}, &skeleton});
+      lodMs = timeVariant(lod, true);
+      auto masks = gpu::readback<synth::CoverageMask>(context, lod.masks, n);
+      size_t active = 0;
+      for (const synth::CoverageMask& m : masks) active += size_t(std::popcount(synth::maskBits(m)));
+      activeShare = double(active) / (double(n) * pair.jointCount());
     }
+    // The cache poses every character at its bucket's speed.
+    crowd::Crowd bucketed = crowd;
+    for (glm::vec4& m : bucketed.motion) m.y = m.z = synth::quantizeSpeed(m.y, 0.05f);
+    cachedMs = timeVariant(
+        synth::makeCrowdSynth(context, pair, bucketed, {true, 0.05f, 20ull << 20}, {true, {}, &skeleton}), true);
     std::printf("%10u %10.3f %12.3f %12.3f %14.3f %13.1f%%\n", n, median(cpuMs), median(fullMs), median(lodMs),
                 median(cachedMs), 100.0 * activeShare);
     std::fflush(stdout);
