@@ -31,6 +31,6 @@ void main() {
     return;
   }
   poseSource[i] = kPoseInJoints;
-  uint index = atomicAdd(listCounts[2u * push.chunk + 1u], 1u);
-  characterList[push.firstCharacter + push.listStride + index] = local;
+  uint index = atomicAdd(listCounts[push.chunk], 1u);
+  characterList[push.firstCharacter + index] = local;
 }

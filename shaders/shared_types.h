@@ -82,8 +82,8 @@ THRONG_STRUCT(CachePush) {
   uint slotCount;         // capacity (fill pass: slots × segments invocations)
   float bucketWidth;
   uint firstCharacter;    // classify: the chunk
-  uint chunk;             // classify: the uncached count is at listCounts[2·chunk + 1]
-  uint listStride;        // classify: the uncached list starts listStride entries in
+  uint chunk;             // classify: the chunk's uncached count is at listCounts[chunk]
+  uint pad2;
   uint jointCount;        // classify: cached pose entries are jointCount matrices apart
   uint slowFrames;        // classify: frames of the slow and fast clips name the segment
   uint fastFrames;

@@ -326,16 +326,8 @@ void runInfo(const InfoArgs& a) {
 }
 
 CLI::App* clothCommand(CLI::App& app) {
-  // `cloth` is shared with cmd_cloth_compress.cpp; registration order is unspecified, so
-  // whichever comes first creates it (CLI11 2.1 has no get_subcommand_no_throw).
-  try {
-    return app.get_subcommand("cloth");
-  } catch (const CLI::OptionNotFound&) {
-    CLI::App* cloth =
-        app.add_subcommand("cloth", "Secondary motion: cloth exploration, compression, info");
-    cloth->require_subcommand(1);
-    return cloth;
-  }
+  // Shared with tools/cmd_cloth_compress.
+  return commandGroup(app, "cloth", "Secondary motion: cloth exploration, compression, info");
 }
 
 void addClothExploreCommands(CLI::App& app, int& /*exitCode*/) {

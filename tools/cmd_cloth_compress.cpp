@@ -126,16 +126,8 @@ void runCompress(const CompressArgs& a) {
 }
 
 CLI::App* clothCommand(CLI::App& app) {
-  // `cloth` is shared with cmd_cloth.cpp; registration order is unspecified, so whichever comes
-  // first creates it (CLI11 2.1 has no get_subcommand_no_throw).
-  try {
-    return app.get_subcommand("cloth");
-  } catch (const CLI::OptionNotFound&) {
-    CLI::App* cloth =
-        app.add_subcommand("cloth", "Secondary motion: cloth exploration, compression, info");
-    cloth->require_subcommand(1);
-    return cloth;
-  }
+  // Shared with tools/cmd_cloth.
+  return commandGroup(app, "cloth", "Secondary motion: cloth exploration, compression, info");
 }
 
 void addClothCompressCommand(CLI::App& app, int& /*exitCode*/) {

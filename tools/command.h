@@ -13,4 +13,8 @@ struct CommandRegistration {
 
 void addRegisteredCommands(CLI::App& app, int& exitCode);
 
+// A command group that several cmd_*.cpp files add subcommands to (e.g. `cloth`): the first
+// caller creates it (requiring one subcommand), later ones get the same one.
+CLI::App* commandGroup(CLI::App& app, const char* name, const char* description);
+
 }  // namespace throng::tools

@@ -23,6 +23,17 @@ CommandRegistration::CommandRegistration(const char* name, AddCommandFn add) {
 void addRegisteredCommands(CLI::App& app, int& exitCode) {
   for (auto& [name, add] : registry()) add(app, exitCode);
 }
+
+CLI::App* commandGroup(CLI::App& app, const char* name, const char* description) {
+  // CLI11 2.1 has no get_subcommand_no_throw.
+  try {
+    return app.get_subcommand(name);
+  } catch (const CLI::OptionNotFound&) {
+    CLI::App* group = app.add_subcommand(name, description);
+    group->require_subcommand(1);
+    return group;
+  }
+}
 }  // namespace throng::tools
 
 int main(int argc, char** argv) {

@@ -41,9 +41,9 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
     VkDeviceSize n = std::max<VkDeviceSize>(crowd.size(), 1);
     std::vector<uint32_t> inJoints(n, gpu_types::kPoseInJoints);
     synth.poseSource = gpu::makeStorageBuffer<uint32_t>(context, inJoints);
-    synth.characterLists = gpu::Buffer(context, 2 * n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-    synth.listCounts = gpu::Buffer(context, 2 * n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-    synth.dispatchArgs = gpu::Buffer(context, 2 * n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+    synth.characterLists = gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    synth.listCounts = gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    synth.dispatchArgs = gpu::Buffer(context, n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                      gpu::MemoryUse::DeviceLocal);
   }
   return synth;
@@ -82,7 +82,7 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
   const uint32_t chunks = (synth.crowd.count + chunk - 1) / chunk;
   if (cached) {
     CacheJob{&synth.motion, &synth.crowd, &synth.cache}.record(cmd, programs);
-    vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(2) * chunks * 4, 0u);
+    vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunks) * 4, 0u);
     gpu::computeToComputeBarrier(cmd);
     for (uint32_t c = 0; c < chunks; ++c) {
       uint32_t first = c * chunk;
@@ -92,7 +92,6 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
       push.bucketWidth = synth.cache.options.bucketWidth;
       push.firstCharacter = first;
       push.chunk = c;
-      push.listStride = synth.crowd.count;
       push.jointCount = synth.jointCount();
       push.slowFrames = synth.motion.slowFrames;
       push.fastFrames = synth.motion.fastFrames;
@@ -102,9 +101,8 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
       gpu::dispatch(cmd, programs.cacheClassify, bindings, push, push.characterCount);
     }
     gpu::computeToComputeBarrier(cmd);
-    const uint32_t counts = 2 * chunks;
     gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts), gpu::storageBinding(8, synth.dispatchArgs)};
-    gpu::dispatch(cmd, programs.cacheArgs, argBindings, counts, counts);
+    gpu::dispatch(cmd, programs.cacheArgs, argBindings, chunks, chunks);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
   }
@@ -120,9 +118,9 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
     pose.characterList = &synth.characterLists;
     pose.listCounts = &synth.listCounts;
     pose.dispatchArgs = &synth.dispatchArgs;
-    pose.listBase = first + synth.crowd.count;  // the characters whose bucket is not resident
-    pose.countIndex = 2 * c + 1;
-    pose.argsOffset = VkDeviceSize(2 * c + 1) * 12;
+    pose.listBase = first;  // the characters whose bucket is not resident
+    pose.countIndex = c;
+    pose.argsOffset = VkDeviceSize(c) * 12;
     pose.record(cmd, programs);
   }
   // The cache counters are read on the host after the frame.

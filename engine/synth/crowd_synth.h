@@ -28,9 +28,9 @@ struct CrowdSynth {
   // its cache entry; the renderer composes cached ones), and per pose chunk the list of
   // characters that the full pose pass synthesizes.
   gpu::Buffer poseSource;      // uint per character
-  gpu::Buffer characterLists;  // 2 × crowd.count (the uncached list starts at + count)
-  gpu::Buffer listCounts;      // 2 per chunk ([2c + 1]: uncached)
-  gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per count
+  gpu::Buffer characterLists;  // crowd.count: chunk c's uncached characters from its first one
+  gpu::Buffer listCounts;      // one per chunk
+  gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per chunk
   // With LOD on: the body parts and thresholds (uniform) and each character's mask.
   bool lod = false;
   gpu::Buffer coverageParts;
