@@ -15,7 +15,7 @@ function(throng_embed_shaders target)
     add_custom_command(
       OUTPUT ${out}
       COMMAND ${Vulkan_GLSLANG_VALIDATOR_EXECUTABLE} --target-env vulkan1.2 -Os
-              -I${CMAKE_CURRENT_SOURCE_DIR} --vn ${var} --depfile ${out}.d -o ${out}
+              -I${CMAKE_CURRENT_SOURCE_DIR} -I${CMAKE_CURRENT_BINARY_DIR}/generated --vn ${var} --depfile ${out}.d -o ${out}
               ${CMAKE_CURRENT_SOURCE_DIR}/${src}
       DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${src}
       DEPFILE ${out}.d

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_KHR_shader_subgroup_vote : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Motion cache, step 3 (an indirect dispatch, one invocation per fresh slot × segment): synthesize
 // the character-space pose of every entry inserted this frame at its bucket's speed, once for
 // all characters that share it.
@@ -10,8 +11,8 @@
 #include "cache_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer SlowMotion { vec4 slowMotion[]; };
-layout(std430, binding = 1) readonly buffer FastMotion { vec4 fastMotion[]; };
+layout(std430, binding = 0) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
+layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; };
 layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = 7) readonly buffer SlotBucket { int slotBucket[]; };

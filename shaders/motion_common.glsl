@@ -19,17 +19,20 @@ vec4 slerpShortest(vec4 a, vec4 b, float t) {
 
 // Series slerp, mirrors slerpFast in engine/core/math.h (see there for the error bound). The
 // t-dependent terms are computed once per character (makeSlerpWeights) and reused by all joints.
-const int kSlerpTerms = 12;
-const float kSlerpOnePlusMu = 1.894;
+const int kSlerpTerms = 4;
+const float kSlerpOnePlusMu = 1.142;
 
 struct SlerpWeights {
+  bool upperHalf;
   float t;
   float termsT[kSlerpTerms];
   float termsD[kSlerpTerms];
 };
 
-SlerpWeights makeSlerpWeights(float t) {
+SlerpWeights makeSlerpWeights(float tWhole) {
   SlerpWeights s;
+  s.upperHalf = tWhole >= 0.5;
+  float t = s.upperHalf ? 2.0 * tWhole - 1.0 : 2.0 * tWhole;
   s.t = t;
   float d = 1.0 - t;
   [[unroll]] for (int i = 1; i <= kSlerpTerms; ++i) {
@@ -48,13 +51,19 @@ SlerpWeights makeSlerpWeights(float t) {
 vec4 slerpFast(vec4 a, vec4 b, SlerpWeights s) {
   float cosTheta = dot(a, b);
   float sign = cosTheta < 0.0 ? -1.0 : 1.0;
-  float xm1 = sign * cosTheta - 1.0;
+  float cosWhole = sign * cosTheta;
+  vec4 end = sign * b;
+  float inverseLength = inversesqrt(2.0 + 2.0 * cosWhole);
+  vec4 mid = (a + end) * inverseLength;
+  float xm1 = (1.0 + cosWhole) * inverseLength - 1.0;
   float rT = 1.0, rD = 1.0;
   [[unroll]] for (int i = kSlerpTerms - 1; i >= 0; --i) {
     rT = 1.0 + s.termsT[i] * xm1 * rT;
     rD = 1.0 + s.termsD[i] * xm1 * rD;
   }
-  return ((1.0 - s.t) * rD) * a + (sign * s.t * rT) * b;
+  vec4 from = s.upperHalf ? mid : a;
+  vec4 to = s.upperHalf ? end : mid;
+  return ((1.0 - s.t) * rD) * from + (s.t * rT) * to;
 }
 
 vec4 quatMul(vec4 a, vec4 b) {

@@ -1,6 +1,6 @@
 // The pose of one character computed joint by joint (slerp per joint, hierarchy, draw matrices
 // A = M·O·F), shared by the pose pass and the motion-cache fill. The including shader declares
-// the buffers this reads and writes: slowMotion, fastMotion (motion texels), jointRadius,
+// the buffers this reads and writes: slowMotion, fastMotion (motion texels as u64vec2), jointRadius,
 // constantOffsets and the output `joints`. CPU twin: anim::poseCharacterFrames.
 #ifndef THRONG_POSE_SKELETON_GLSL
 #define THRONG_POSE_SKELETON_GLSL
@@ -84,6 +84,18 @@ bool offsetAnimated(int j) {
   return j < 32 ? ((kAnimatedOffsetsLow >> uint(j)) & 1u) != 0u : ((kAnimatedOffsetsHigh >> uint(j - 32)) & 1u) != 0u;
 }
 
+// Bit j set: joint j's bone is the same in both clips and never changes (synth::fixedBones): its
+// offset, length and the rotation aligning +y with it are specialization constants
+// (fixedBoneOffset/Length/Align, generated), so the compiler folds them into the arithmetic:
+// no square root, division or alignYTo per joint, and the zero components of an axis-aligned
+// bone (most BVH skeletons have many) drop out of the rotations altogether.
+layout(constant_id = 68) const uint kFixedBonesLow = 0u;
+layout(constant_id = 69) const uint kFixedBonesHigh = 0u;
+bool boneFixed(int j) {
+  return j < 32 ? ((kFixedBonesLow >> uint(j)) & 1u) != 0u : ((kFixedBonesHigh >> uint(j - 32)) & 1u) != 0u;
+}
+#include "pose_bones.glsl"
+
 // A switch rather than an array: glslang has no constant arrays of specialization constants,
 // and once the loop is unrolled every call folds to one constant.
 int parentOf(int j) {
@@ -155,6 +167,12 @@ int parentOf(int j) {
   }
   return -1;
 }
+// Motion texels are read as two 64-bit words: lavapipe gathers a vector one component per lane
+// at a time, so two wide components cost half as much as four floats (the bytes are the same).
+vec4 texelOf(u64vec2 words) {
+  return vec4(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y)));
+}
+
 vec3 globalPosition[64];
 vec4 globalRotation[64];
 
@@ -184,9 +202,10 @@ void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 or
     // the joint when none of them needs it; a lane that does not need it just does not write.
     bool jointNeeded = !kUseMasks || ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
     if (kUseMasks && !subgroupAny(jointNeeded)) continue;
-    vec4 q = slerpFast(slowMotion[slowRow + 2 * j], fastMotion[fastRow + 2 * j], weights);
-    vec3 o = offsetAnimated(j)
-                 ? slowMotion[slowRow + 2 * j + 1].xyz * (1.0 - w) + fastMotion[fastRow + 2 * j + 1].xyz * w
+    vec4 q = slerpFast(texelOf(slowMotion[slowRow + 2 * j]), texelOf(fastMotion[fastRow + 2 * j]), weights);
+    vec3 o = boneFixed(j) ? fixedBoneOffset(j)
+             : offsetAnimated(j)
+                 ? texelOf(slowMotion[slowRow + 2 * j + 1]).xyz * (1.0 - w) + texelOf(fastMotion[fastRow + 2 * j + 1]).xyz * w
                  : constantOffsets[2 * j].xyz * (1.0 - w) + constantOffsets[2 * j + 1].xyz * w;
     int p = parentOf(j);
     float radius = jointRadius[j];
@@ -205,10 +224,16 @@ void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 or
       vec3 parentPosition = globalPosition[p];
       globalPosition[j] = parentPosition + quatRotate(parentRotation, scale * o);
       globalRotation[j] = quatMul(parentRotation, q);
-      len = length(o);
-      vec3 dir = len > 1e-6 ? o / len : vec3(0.0, 1.0, 0.0);
+      vec4 align;
+      if (boneFixed(j)) {
+        len = fixedBoneLength(j);
+        align = fixedBoneAlign(j);
+      } else {
+        len = length(o);
+        align = alignYTo(len > 1e-6 ? o / len : vec3(0.0, 1.0, 0.0));
+      }
       start = parentPosition;
-      orientation = quatMul(parentRotation, alignYTo(dir));
+      orientation = quatMul(parentRotation, align);
       if (len <= 1e-6) radius = 0.0;  // zero-length bones are not drawn
     }
     if (!kUseMasks || jointNeeded) writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);

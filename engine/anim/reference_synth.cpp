@@ -21,12 +21,6 @@ glm::vec3 rootAt(const MotionTexture& tex, int k) {
 
 glm::vec3 mixVec(glm::vec3 a, glm::vec3 b, float w) { return a * (1.0f - w) + b * w; }
 
-// Rotation taking +y onto the unit vector d; |(d.z, 0, -d.x, 1 + d.y)|² = 2(1 + d.y).
-glm::vec4 alignYTo(glm::vec3 d) {
-  if (d.y < -0.9999f) return glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-  return glm::vec4(d.z, 0.0f, -d.x, 1.0f + d.y) * (1.0f / std::sqrt(2.0f + 2.0f * d.y));
-}
-
 void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
   float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
   float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;

@@ -14,6 +14,14 @@ gpu::Image2D uploadMotionTexture(const gpu::Context& context, const anim::Motion
   return image;
 }
 
+std::vector<bool> fixedBones(const anim::MotionPair& pair) {
+  std::vector<bool> fixed(size_t(pair.jointCount()), false);
+  for (int j = 0; j < pair.jointCount(); ++j)
+    fixed[size_t(j)] = pair.parents[size_t(j)] >= 0 && !pair.animatedOffset[size_t(j)] &&
+                       pair.slow.offset(0, j) == pair.fast.offset(0, j);
+  return fixed;
+}
+
 GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPair& pair) {
   GpuMotionPair gpuPair;
   gpuPair.slow = uploadMotionTexture(context, pair.slow);

@@ -7,6 +7,10 @@
 
 namespace throng::synth {
 
+// Joints whose bone never changes: the offset is the same in both clips and not animated, so the
+// pose pass gets its offset, length and alignment as specialization constants (synth_jobs.cpp).
+std::vector<bool> fixedBones(const anim::MotionPair& pair);
+
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;

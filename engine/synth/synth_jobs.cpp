@@ -1,6 +1,9 @@
 #include "synth/synth_jobs.h"
 
+#include <bit>
+
 #include "core/error.h"
+#include "core/math.h"
 #include "gpu/commands.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
@@ -16,18 +19,30 @@ void throwIfInvalid(const std::string& job, const std::vector<std::string>& prob
 
 namespace {
 // Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j,
-// [65], [66] the bit mask of joints whose offsets change over frames, [67] use LOD masks.
+// [65], [66] the bit mask of joints whose offsets change over frames, [67] use LOD masks,
+// [68], [69] the bit mask of fixed bones (synth::fixedBones), and from 70 + 8j joint j's fixed
+// bone: offset xyz, length, and the rotation aligning +y with it (xyzw), as float bits.
 std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, bool useMasks = false) {
   const std::vector<int32_t>& parents = pair.parents;
   if (parents.empty() || parents.size() > 64)
     fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
-  std::vector<uint32_t> values(68, static_cast<uint32_t>(-1));
+  std::vector<uint32_t> values(70 + 8 * 64, static_cast<uint32_t>(-1));
   values[67] = useMasks ? 1u : 0u;
   values[0] = static_cast<uint32_t>(parents.size());
   for (size_t j = 0; j < parents.size(); ++j) values[1 + j] = static_cast<uint32_t>(parents[j]);
   values[65] = values[66] = 0;
   for (size_t j = 0; j < pair.animatedOffset.size(); ++j)
     if (pair.animatedOffset[j]) values[65 + j / 32] |= 1u << (j % 32);
+  values[68] = values[69] = 0;
+  std::vector<bool> fixed = fixedBones(pair);
+  for (size_t j = 0; j < fixed.size(); ++j) {
+    glm::vec3 offset = pair.slow.offset(0, int(j));
+    float length = glm::length(offset);
+    glm::vec4 align = alignYTo(length > 1e-6f ? offset / length : glm::vec3(0.0f, 1.0f, 0.0f));
+    float bone[8] = {offset.x, offset.y, offset.z, length, align.x, align.y, align.z, align.w};
+    for (int c = 0; c < 8; ++c) values[70 + 8 * j + size_t(c)] = fixed[j] ? std::bit_cast<uint32_t>(bone[c]) : 0u;
+    if (fixed[j]) values[68 + j / 32] |= 1u << (j % 32);
+  }
   return values;
 }
 }  // namespace
