@@ -74,6 +74,9 @@ float maxErrorWithBases(const ColumnSource& centered, const TruncatedSvd& svd, u
 
 void validateOptions(const CompressOptions& o) {
   if (!(o.quantum > 0.0f && o.quantum < 1.0f)) fail("quantum ", o.quantum, " m: expected (0, 1)");
+  if (!(o.coefficientQuantum >= 0.0f && o.coefficientQuantum < 1.0f))
+    fail("coefficient quantum ", o.coefficientQuantum, " m: expected [0, 1)");
+  if (!(o.minRatio >= 0.0)) fail("minimum ratio ", o.minRatio, ": expected ≥ 0");
   if (o.bases == 0 && !(o.targetError > 0.0f))
     fail("target error ", o.targetError, " m: expected > 0");
   if (o.maxBases == 0 || o.maxBases > 4096) fail("max bases ", o.maxBases, ": expected 1..4096");
@@ -101,6 +104,23 @@ QuantizedBasis quantizeBasis(std::span<const float> unitBasis, float scale, floa
     q.values[r] = uint16_t(std::clamp(level, 0.0f, levels));
   }
   return q;
+}
+
+uint16_t coefficientStepFor(const QuantizedBasis& basis, float coefficientQuantum) {
+  if (!(coefficientQuantum > 0.0f)) return 1;
+  float largest = 0.0f;
+  for (size_t r = 0; r + 2 < basis.values.size(); r += 3)
+    largest = std::max(largest, glm::length(glm::vec3(basis.value(r), basis.value(r + 1),
+                                                      basis.value(r + 2))));
+  if (!(largest > 0.0f)) return 1;
+  const double step = std::floor(double(coefficientQuantum) * kCoefficientScale / largest);
+  return uint16_t(std::clamp(step, 1.0, double(kCoefficientScale)));
+}
+
+int16_t quantizeCoefficientInSteps(float unitCoefficient, uint16_t step) {
+  const int32_t limit = int32_t(kCoefficientScale) / step;
+  const double multiple = std::round(double(unitCoefficient) * kCoefficientScale / step);
+  return int16_t(std::clamp<double>(multiple, -limit, limit) * step);
 }
 
 ReconstructionError reconstructionError(const ClothFrames& frames, const ClothDatabase& db,
@@ -190,24 +210,52 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   }
 
   stage("quantize");
+  // Every available basis is quantized once; a database of b bases takes the first b of them.
+  const uint32_t S = frames.stateCount;
+  std::vector<QuantizedBasis> quantized;
+  std::vector<uint16_t> steps;
+  std::vector<float> scales;
+  for (uint32_t i = 0; i < available; ++i) {
+    float m = svd.coefficients.row(i).cwiseAbs().maxCoeff();
+    scales.push_back(m > 0.0f ? m : 1.0f);  // an all-zero row keeps its unit basis
+    std::span<const float> unit(svd.bases.col(i).data(), size_t(svd.bases.rows()));
+    quantized.push_back(quantizeBasis(unit, scales[i], options.quantum));
+    steps.push_back(coefficientStepFor(quantized.back(), options.coefficientQuantum));
+  }
   ClothDatabase db;
   db.vertexCount = frames.vertexCount;
   db.triangles = std::move(triangles);
   db.primary = std::move(primary);
   db.graph = std::move(graph);
   db.mean.assign(mean.data(), mean.data() + mean.size());
-  std::vector<float> scales(b);
-  for (uint32_t i = 0; i < b; ++i) {
-    float m = svd.coefficients.row(i).cwiseAbs().maxCoeff();
-    scales[i] = m > 0.0f ? m : 1.0f;  // an all-zero row keeps its unit basis
-    std::span<const float> unit(svd.bases.col(i).data(), size_t(svd.bases.rows()));
-    db.bases.push_back(quantizeBasis(unit, scales[i], options.quantum));
+  auto keepBases = [&](uint32_t count) {
+    db.bases.assign(quantized.begin(), quantized.begin() + count);
+    db.coefficientSteps.assign(steps.begin(), steps.begin() + count);
+    db.coefficients.resize(size_t(S) * count);
+    for (uint32_t s = 0; s < S; ++s)
+      for (uint32_t i = 0; i < count; ++i)
+        db.coefficients[size_t(s) * count + i] =
+            quantizeCoefficientInSteps(svd.coefficients(i, s) / scales[i], steps[i]);
+  };
+  const uint64_t rawBytes = uint64_t(S) * frames.vertexCount * 12;
+  auto ratioWith = [&](uint32_t count) {
+    keepBases(count);
+    return double(rawBytes) / double(encodeClothDatabase(db).size());
+  };
+  if (options.bases == 0 && options.minRatio > 0.0 && ratioWith(b) < options.minRatio) {
+    // Stored bytes grow with b: bisect for the most bases keeping the ratio (at least one).
+    uint32_t lo = 1, hi = b - 1;
+    while (lo < hi) {
+      uint32_t mid = (lo + hi + 1) / 2;
+      if (ratioWith(mid) >= options.minRatio)
+        lo = mid;
+      else
+        hi = mid - 1;
+    }
+    b = lo;
+    errorBefore = maxErrorWithBases(centered, svd, b, threads);
   }
-  const uint32_t S = frames.stateCount;
-  db.coefficients.resize(size_t(S) * b);
-  for (uint32_t s = 0; s < S; ++s)
-    for (uint32_t i = 0; i < b; ++i)
-      db.coefficients[size_t(s) * b + i] = quantizeCoefficient(svd.coefficients(i, s) / scales[i]);
+  keepBases(b);
   validateDatabase(db, "compressed cloth");
 
   stage("error");
@@ -215,6 +263,7 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   CompressionReport& r = db.report;
   r.targetError = options.bases ? 0.0f : options.targetError;
   r.quantum = options.quantum;
+  r.coefficientQuantum = options.coefficientQuantum;
   r.maxErrorBeforeQuantization = errorBefore;
   r.maxError = after.max;
   r.meanError = after.mean;
@@ -225,7 +274,7 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   r.bases8 = uint32_t(std::count_if(db.bases.begin(), db.bases.end(),
                                     [](const QuantizedBasis& q) { return q.bits == 8; }));
   r.bases16 = b - r.bases8;
-  r.rawBytes = uint64_t(S) * frames.vertexCount * 12;
+  r.rawBytes = rawBytes;
   r.storedBytes = encodeClothDatabase(db).size();
   return db;
 }
@@ -245,6 +294,7 @@ nlohmann::json compressionReportJson(const ClothDatabase& db) {
   j["bases_8bit"] = r.bases8;
   j["bases_16bit"] = r.bases16;
   j["quantum_m"] = r.quantum;
+  j["coefficient_quantum_m"] = r.coefficientQuantum;
   j["target_error_m"] = r.targetError;
   j["raw_bytes"] = r.rawBytes;
   j["compressed_bytes"] = r.storedBytes;

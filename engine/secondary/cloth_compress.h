@@ -4,7 +4,8 @@
 // a randomized SVD that streams the states (memory stays bounded), b bases are kept (given, or
 // the fewest whose largest vertex error is at most a target), each basis is rescaled by
 // m_i = max_j |C_ij| so coefficients lie in [−1, 1], bases are quantized to 8 or 16 bits at a
-// length quantum and coefficients to 16 bits.
+// length quantum and coefficients to 16 bits, in steps of the basis' coefficient step (so one
+// step moves no vertex more than the coefficient quantum); the file entropy-codes both.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -30,6 +31,13 @@ struct CompressOptions {
   float targetError = 0.002f;  // metres, largest vertex error before quantization
   uint32_t maxBases = 96;
   float quantum = 300e-6f;  // metres: a basis goes to 8 bits when its range × m_i / 255 ≤ quantum
+  // Metres: the coefficient step of basis i is the largest multiple of 1/32767 that moves no
+  // vertex more than this; 0 keeps every coefficient at full 16-bit precision (so the round trip
+  // stays within the quantum; `cloth compress` passes 1 mm).
+  float coefficientQuantum = 0.0f;
+  // > 0 and bases == 0: at most the bases that keep raw / stored bytes at least this (the file's
+  // bytes, as reported); the error target still picks fewer when it can.
+  double minRatio = 0.0;
   uint32_t oversampling = 10;
   uint32_t powerIterations = 1;
   uint64_t seed = 1;
@@ -46,6 +54,11 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
 
 // Basis i rescaled by m_i and quantized: 8 bits when range(basis × m_i) / 255 ≤ quantum, else 16.
 QuantizedBasis quantizeBasis(std::span<const float> unitBasis, float scale, float quantum);
+// The coefficient step of a quantized basis: the largest k (1 … 32767) such that k / 32767 times
+// the basis' largest vertex displacement is at most `coefficientQuantum` (1 when that is 0).
+uint16_t coefficientStepFor(const QuantizedBasis& basis, float coefficientQuantum);
+// C_ij / m_i on 16 bits as a multiple of `step` (the nearest one inside [−32767, 32767]).
+int16_t quantizeCoefficientInSteps(float unitCoefficient, uint16_t step);
 
 // Largest and mean per-vertex distance between the frames and their decoded states.
 struct ReconstructionError {

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "secondary/binary_io.h"
+#include "secondary/cloth_entropy.h"
 #include "synth/motion_cache.h"
 
 namespace throng::secondary {
@@ -57,9 +58,39 @@ struct BasisHeader {
 static_assert(sizeof(BasisHeader) == 16);
 
 struct ReportRecord {
-  float targetError, quantum, maxErrorBeforeQuantization, maxError, meanError, reserved;
+  float targetError, quantum, maxErrorBeforeQuantization, maxError, meanError, coefficientQuantum;
 };
 static_assert(sizeof(ReportRecord) == 24);
+
+uint32_t coefficientStep(const ClothDatabase& db, uint32_t basis) {
+  return db.coefficientSteps.empty() ? 1u : db.coefficientSteps[basis];
+}
+
+// Bases: each value minus the same axis of the previous vertex (the garment's vertices are in
+// grid order and bases are smooth over it, so the differences are small), one model per basis.
+std::vector<uint8_t> encodeBases(const ClothDatabase& db) {
+  const size_t rows = size_t(db.vertexCount) * 3;
+  std::vector<int32_t> deltas;
+  deltas.reserve(rows * db.bases.size());
+  for (const QuantizedBasis& b : db.bases)
+    for (size_t r = 0; r < rows; ++r)
+      deltas.push_back(int32_t(b.values[r]) - (r >= 3 ? int32_t(b.values[r - 3]) : 0));
+  return encodeIntegerBlocks(deltas, rows);
+}
+
+// Coefficients basis by basis (one model each: their spreads differ by orders of magnitude), as
+// multiples of the basis' step. Predicting them from the previous frame was measured on the
+// 25,252-frame cape and gained nothing past the first few bases (the fine motion is not smooth
+// from frame to frame), so they are coded as they are.
+std::vector<uint8_t> encodeCoefficients(const ClothDatabase& db) {
+  const uint32_t S = db.stateCount(), B = db.basisCount();
+  std::vector<int32_t> values;
+  values.reserve(size_t(S) * B);
+  for (uint32_t i = 0; i < B; ++i)
+    for (uint32_t s = 0; s < S; ++s)
+      values.push_back(db.coefficients[size_t(s) * B + i] / int32_t(coefficientStep(db, i)));
+  return encodeIntegerBlocks(values, S);
+}
 
 ChunkWriter writer(const ClothDatabase& db) {
   validateDatabase(db, "cloth database");
@@ -78,22 +109,19 @@ ChunkWriter writer(const ClothDatabase& db) {
   w.add("EMRG", packBits(db.graph.edgeIsMerge));
   w.add("MEAN", db.mean);
   std::vector<BasisHeader> headers;
-  std::vector<uint8_t> values8;
-  std::vector<uint16_t> values16;
-  for (const QuantizedBasis& b : db.bases) {
+  std::vector<uint16_t> steps;
+  for (uint32_t i = 0; i < db.basisCount(); ++i) {
+    const QuantizedBasis& b = db.bases[i];
     headers.push_back({b.bits, b.scale, b.offset, b.step});
-    if (b.bits == 8)
-      values8.insert(values8.end(), b.values.begin(), b.values.end());
-    else
-      values16.insert(values16.end(), b.values.begin(), b.values.end());
+    steps.push_back(uint16_t(coefficientStep(db, i)));
   }
   w.add("BASH", headers);
-  w.add("BAS8", values8);
-  w.add("BA16", values16);
-  w.add("COEF", db.coefficients);
+  w.add("BENC", encodeBases(db));
+  w.add("CSTP", steps);
+  w.add("CENC", encodeCoefficients(db));
   const CompressionReport& r = db.report;
   w.addScalar("REPT", ReportRecord{r.targetError, r.quantum, r.maxErrorBeforeQuantization,
-                                   r.maxError, r.meanError, 0.0f});
+                                   r.maxError, r.meanError, r.coefficientQuantum});
   w.add("SVAL", r.singularValues);
   return w;
 }
@@ -101,6 +129,11 @@ ChunkWriter writer(const ClothDatabase& db) {
 ClothDatabase read(const ChunkReader& r) {
   ClothDatabase db;
   const std::string& name = r.name();
+  // Version 1 stored plain bases and coefficients; nothing reads it any more (recompressing the
+  // .tsg takes a minute), so it is refused by name rather than half-read.
+  if (r.version() != kClothDatabaseVersion)
+    fail(name, ": ", kKind, " version ", r.version(), " unsupported (this build reads version ",
+         kClothDatabaseVersion, "): recompress it with `throng cloth compress`");
   db.vertexCount = r.scalar<uint32_t>("VERT");
   db.triangles = readIndices(r, "TRIS");
   PlaybackPrimary& p = db.primary;
@@ -128,34 +161,42 @@ ClothDatabase read(const ChunkReader& r) {
   db.mean = r.vector<float>("MEAN");
   std::vector<BasisHeader> headers = r.vector<BasisHeader>("BASH");
   const size_t rows = size_t(db.vertexCount) * 3;
-  size_t count8 = 0, count16 = 0;
-  for (const BasisHeader& h : headers) {
+  if (rows == 0) fail(name, ": the garment has no vertices");
+  for (const BasisHeader& h : headers)
     if (h.bits != 8 && h.bits != 16)
       fail(name, ": a basis has ", h.bits, " bits, expected 8 or 16");
-    (h.bits == 8 ? count8 : count16) += rows;
-  }
-  r.expectCount(r.require("BAS8"), count8);
-  r.expectCount(r.require("BA16"), count16);
-  r.expectCount(r.require("COEF"), uint64_t(db.graph.stateNode.size()) * headers.size());
-  std::vector<uint8_t> values8 = r.vector<uint8_t>("BAS8");
-  std::vector<uint16_t> values16 = r.vector<uint16_t>("BA16");
-  size_t at8 = 0, at16 = 0;
-  for (const BasisHeader& h : headers) {
+  std::vector<int32_t> deltas =
+      decodeIntegerBlocks(r.vector<uint8_t>("BENC"), rows * headers.size(), rows, name);
+  for (size_t i = 0; i < headers.size(); ++i) {
     QuantizedBasis b;
-    b.bits = uint8_t(h.bits);
-    b.scale = h.scale;
-    b.offset = h.offset;
-    b.step = h.step;
-    if (b.bits == 8) {
-      b.values.assign(values8.begin() + long(at8), values8.begin() + long(at8 + rows));
-      at8 += rows;
-    } else {
-      b.values.assign(values16.begin() + long(at16), values16.begin() + long(at16 + rows));
-      at16 += rows;
+    b.bits = uint8_t(headers[i].bits);
+    b.scale = headers[i].scale;
+    b.offset = headers[i].offset;
+    b.step = headers[i].step;
+    const int32_t largest = b.bits == 8 ? 255 : 65535;
+    b.values.resize(rows);
+    for (size_t k = 0; k < rows; ++k) {
+      int64_t v = int64_t(deltas[i * rows + k]) + (k >= 3 ? int64_t(b.values[k - 3]) : 0);
+      if (v < 0 || v > largest)
+        fail(name, ": basis ", i, " decodes to ", v, ", outside its ", int(b.bits), " bits");
+      b.values[k] = uint16_t(v);
     }
     db.bases.push_back(std::move(b));
   }
-  db.coefficients = r.vector<int16_t>("COEF");
+  const size_t S = db.graph.stateNode.size();
+  r.expectCount(r.require("CSTP"), headers.size());
+  db.coefficientSteps = r.vector<uint16_t>("CSTP");
+  std::vector<int32_t> multiples =
+      decodeIntegerBlocks(r.vector<uint8_t>("CENC"), S * headers.size(), S, name);
+  db.coefficients.resize(S * headers.size());
+  for (size_t i = 0; i < headers.size(); ++i)
+    for (size_t s = 0; s < S; ++s) {
+      int64_t q = int64_t(multiples[i * S + s]) * db.coefficientSteps[i];
+      if (q < -32767 || q > 32767)
+        fail(name, ": coefficient ", i, " of state ", s, " decodes to ", q,
+             ", outside 16 bits");
+      db.coefficients[s * headers.size() + i] = int16_t(q);
+    }
   ReportRecord rec = r.scalar<ReportRecord>("REPT");
   CompressionReport& rep = db.report;
   rep.targetError = rec.targetError;
@@ -163,6 +204,7 @@ ClothDatabase read(const ChunkReader& r) {
   rep.maxErrorBeforeQuantization = rec.maxErrorBeforeQuantization;
   rep.maxError = rec.maxError;
   rep.meanError = rec.meanError;
+  rep.coefficientQuantum = rec.coefficientQuantum;
   rep.singularValues = r.vector<float>("SVAL");
   validateDatabase(db, name);
   rep.states = db.stateCount();
@@ -258,6 +300,19 @@ void validateDatabase(const ClothDatabase& db, const std::string& name) {
   }
   if (db.coefficients.size() != size_t(S) * B)
     bad("coefficients: ", db.coefficients.size(), " values, expected ", size_t(S) * B);
+  if (!db.coefficientSteps.empty()) {
+    if (db.coefficientSteps.size() != B)
+      bad("coefficient steps: ", db.coefficientSteps.size(), " values, expected ", B);
+    for (uint32_t i = 0; i < B; ++i) {
+      const int32_t step = db.coefficientSteps[i];
+      if (step < 1 || step > 32767) bad("basis ", i, " has a coefficient step of ", step);
+      for (uint32_t s = 0; s < S; ++s)
+        if (db.coefficients[size_t(s) * B + i] % step != 0)
+          bad("coefficient ", i, " of state ", s, " is not a multiple of its step ", step);
+    }
+  }
+  for (int16_t c : db.coefficients)
+    if (c < -32767) bad("a coefficient is -32768, outside [-32767, 32767]");
 }
 
 std::vector<uint8_t> encodeClothDatabase(const ClothDatabase& db) {

@@ -2,7 +2,9 @@
 // The compressed secondary-motion database (.tsc): what playback needs and nothing more — the
 // garment's triangles, the primary graph's nodes and edges with the run-graph parameters that map
 // a character's (speed weight, phase) to a node, the secondary graph's edges, and the cloth
-// states as mean + quantized bases × quantized coefficients (Kim et al. 2013, §6).
+// states as mean + quantized bases × quantized coefficients (Kim et al. 2013, §6). In the file
+// (version 2) bases and coefficients are entropy-coded (cloth_entropy.h); in memory they are the
+// plain 8/16-bit values and 16-bit coefficients playback reads.
 #include <cstdint>
 #include <filesystem>
 #include <span>
@@ -62,6 +64,7 @@ struct CompressionReport {
   uint64_t storedBytes = 0;                 // the whole .tsc file
   float targetError = 0.0f;                 // metres, before quantization (0: bases were given)
   float quantum = 0.0f;                     // metres
+  float coefficientQuantum = 0.0f;          // metres: largest vertex move of one coefficient step
   float maxErrorBeforeQuantization = 0.0f;  // metres, L∞ over states and vertices
   float maxError = 0.0f;                    // metres, after quantization
   float meanError = 0.0f;                   // metres, mean per-vertex distance after quantization
@@ -77,6 +80,9 @@ struct ClothDatabase {
   std::vector<float> mean;  // 3V
   std::vector<QuantizedBasis> bases;
   std::vector<int16_t> coefficients;  // states × bases, state-major
+  // Per basis: its coefficients are multiples of this step (a coarser coefficient quantum for
+  // bases whose motion is small: the multiples entropy-code to fewer bits). Empty: all 1.
+  std::vector<uint16_t> coefficientSteps;
   CompressionReport report;
   uint32_t stateCount() const { return graph.stateCount(); }
   uint32_t basisCount() const { return uint32_t(bases.size()); }
@@ -87,10 +93,11 @@ struct ClothDatabase {
 void validateDatabase(const ClothDatabase& db, const std::string& sourceName);
 
 // A versioned chunked binary file (binary_io.h, magic kClothDatabaseMagic) with a checksum;
-// decode throws Error naming the source on a bad magic, version, truncation, checksum or
-// content. write is atomic.
+// decode throws Error naming the source on a bad magic, version (version 1 files, with plain
+// bases and coefficients, are refused: recompress them), truncation, checksum or content.
+// write is atomic.
 constexpr std::string_view kClothDatabaseMagic = "THRNGTSC";
-constexpr uint32_t kClothDatabaseVersion = 1;
+constexpr uint32_t kClothDatabaseVersion = 2;
 std::vector<uint8_t> encodeClothDatabase(const ClothDatabase& db);
 ClothDatabase decodeClothDatabase(std::span<const uint8_t> bytes, const std::string& sourceName);
 void writeClothDatabase(const std::filesystem::path& path, const ClothDatabase& db);

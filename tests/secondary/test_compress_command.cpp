@@ -54,7 +54,13 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
   r = test::runThrong("cloth compress " + tsg.string() + " --out " + (dir / "b8.tsc").string() +
                       " --bases 8 --quantum 0.001 --json --quiet");
   REQUIRE(r.exitCode == 0);
-  CHECK(nlohmann::json::parse(r.output)["bases"] == 8);
+  CHECK(nlohmann::json::parse(r.output)["bases"] == 8);  // given: the ratio cap does not apply
+  // The default size cap (100:1) against none: the cap keeps fewer bases on this small cape.
+  r = test::runThrong("cloth compress " + tsg.string() + " --out " + (dir / "free.tsc").string() +
+                      " --min-ratio 0 --json --quiet");
+  REQUIRE(r.exitCode == 0);
+  CHECK(nlohmann::json::parse(r.output)["bases"].get<int>() > report["bases"].get<int>());
+  CHECK(report["coefficient_quantum_m"].get<double>() == doctest::Approx(0.001));
 }
 
 TEST_CASE("cloth compress: bad input and options fail clearly and write nothing") {

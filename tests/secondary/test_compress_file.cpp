@@ -6,6 +6,7 @@
 #include "cloth_fixtures.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "secondary/binary_io.h"
 #include "test_support.h"
 
 using namespace throng;
@@ -58,18 +59,41 @@ TEST_CASE(".tsc round trip is exact") {
     CHECK(back.bases[i].values == db.bases[i].values);
   }
   CHECK(back.coefficients == db.coefficients);
+  CHECK(back.coefficientSteps == std::vector<uint16_t>(db.basisCount(), 1));  // none given: 1
   CHECK(back.report.maxError == db.report.maxError);
+  CHECK(back.report.coefficientQuantum == db.report.coefficientQuantum);
   CHECK(back.report.singularValues == db.report.singularValues);
   CHECK(back.report.storedBytes == bytes.size());
   CHECK(back.report.rawBytes == uint64_t(db.stateCount()) * db.vertexCount * 12);
-  // 8-bit bases take one byte per value in the file.
-  ClothDatabase all16 = db;
-  for (QuantizedBasis& b : all16.bases) b.bits = 16;
-  const long grown = long(encodeClothDatabase(all16).size()) - long(bytes.size());
-  const long rows =
-      long(db.vertexCount) * 3;  // two 8-bit bases become 16-bit: + 2 × rows (chunk padding aside)
-  CHECK(grown >= 2 * rows - 16);
-  CHECK(grown <= 2 * rows + 16);
+  // Entropy-coded: coarser coefficient steps and smoother bases take fewer bytes.
+  ClothDatabase smooth = db;
+  for (QuantizedBasis& b : smooth.bases)
+    for (size_t r = 0; r < b.values.size(); ++r) b.values[r] = uint16_t(100 + r / 3 % 2);
+  CHECK(encodeClothDatabase(smooth).size() + db.basisCount() * db.vertexCount / 2 < bytes.size());
+}
+
+TEST_CASE(".tsc: coefficient steps round trip, and coefficients off their step are refused") {
+  ClothDatabase db = smallDatabase();
+  db.coefficientSteps.assign(db.basisCount(), 1);
+  db.coefficientSteps[2] = 300;
+  for (uint32_t s = 0; s < db.stateCount(); ++s) {
+    int16_t& c = db.coefficients[size_t(s) * db.basisCount() + 2];
+    c = int16_t(c / 300 * 300);
+  }
+  std::vector<uint8_t> bytes = encodeClothDatabase(db);
+  ClothDatabase back = decodeClothDatabase(bytes, "memory");
+  CHECK(back.coefficientSteps == db.coefficientSteps);
+  CHECK(back.coefficients == db.coefficients);
+  // Fewer bytes than the same database with full-precision coefficients.
+  CHECK(bytes.size() < encodeClothDatabase(smallDatabase()).size());
+  ClothDatabase off = db;
+  off.coefficients[2] += 1;
+  CHECK_THROWS_WITH_AS(encodeClothDatabase(off), doctest::Contains("not a multiple of its step"),
+                       Error);
+  ClothDatabase wrongCount = db;
+  wrongCount.coefficientSteps.pop_back();
+  CHECK_THROWS_WITH_AS(encodeClothDatabase(wrongCount), doctest::Contains("coefficient steps"),
+                       Error);
 }
 
 TEST_CASE(".tsc: corrupted, truncated and foreign files give clear errors") {
@@ -97,6 +121,12 @@ TEST_CASE(".tsc: corrupted, truncated and foreign files give clear errors") {
   future[8] = 9;
   CHECK_THROWS_WITH_AS(decodeClothDatabase(future, "g.tsc"),
                        doctest::Contains("version 9 unsupported"), Error);
+  // Version 1 (plain bases and coefficients) is refused by name: it must be recompressed.
+  ChunkWriter version1(kClothDatabaseMagic, 1);
+  version1.addScalar("VERT", 4u);
+  CHECK_THROWS_WITH_AS(decodeClothDatabase(version1.bytes(), "old.tsc"),
+                       doctest::Contains("old.tsc: compressed cloth (.tsc) version 1 unsupported"),
+                       Error);
 }
 
 TEST_CASE(".tsc: inconsistent content is refused on write and read") {

@@ -107,6 +107,28 @@ TEST_CASE("GPU vs CPU twin: 1000 random characters on a synthetic pair, several 
   CHECK(worst.placement <= 1e-4f);
 }
 
+TEST_CASE("fixed bones (offsets folded into the pose pass) and blended bones both match the CPU twin") {
+  anim::MotionPair pair = test::syntheticPair(12, 20, 16, 9);
+  auto setOffset = [](anim::MotionTexture& clip, int joint, glm::vec3 offset) {
+    for (int f = 0; f < clip.frameCount; ++f) clip.texels[size_t(f) * clip.width() + size_t(2 * joint + 1)] = glm::vec4(offset, 0.0f);
+  };
+  setOffset(pair.fast, 3, pair.slow.offset(0, 3) * 1.5f + glm::vec3(0.02f, 0.0f, 0.0f));  // blended by w
+  setOffset(pair.slow, 5, glm::vec3(0.0f));  // a zero-length bone, fixed and not drawn
+  setOffset(pair.fast, 5, glm::vec3(0.0f));
+  setOffset(pair.slow, 6, glm::vec3(0.0f, -0.3f, 0.0f));  // straight down: alignYTo's special case
+  setOffset(pair.fast, 6, glm::vec3(0.0f, -0.3f, 0.0f));
+  std::vector<bool> fixed = synth::fixedBones(pair);
+  CHECK_FALSE(fixed[0]);  // the root is never a bone
+  CHECK_FALSE(fixed[3]);
+  CHECK(fixed[5]);
+  CHECK(fixed[6]);
+  crowd::ScenarioOptions options;
+  options.characters = 500;
+  options.seed = 4;
+  Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 4, 1.0f / 30.0f);
+  CHECK(worst.joints <= 1e-4f);
+}
+
 TEST_CASE("GPU vs CPU twin: circle scenario steers identically") {
   anim::MotionPair pair = test::syntheticPair(12, 20, 16, 5);
   crowd::ScenarioOptions options;
