@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Root motion (DESIGN eq. 10), one invocation per character: advance the phase, move the root by
 // the blended per-frame displacement rotated by the heading and scaled; w changes to wTarget
 // only when the cycle ends. CPU twin: anim::stepCharacter.
@@ -8,16 +9,26 @@
 #include "motion_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(binding = 0) uniform sampler2D slowMotion;
-layout(binding = 1) uniform sampler2D fastMotion;
+// The motion texels as storage buffers read in 64-bit words (texel (x, f) is element f·2J + x):
+// on lavapipe a texelFetch goes through the whole sampler path and cost as much as the pose
+// pass's hundred buffer loads per character.
+layout(constant_id = 0) const int kJointCount = 1;
+layout(std430, binding = 0) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
+layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; };
 layout(std430, binding = 2) buffer Placement { vec4 placement[]; };
 layout(std430, binding = 3) buffer Motion { vec4 motion[]; };
 layout(push_constant) uniform Push { RootMotionPush push; };
 
-vec3 rootAt(sampler2D tex, uint frames, vec3 cycleTravel, int k) {
+vec3 rootOffset(u64vec2 words) {
+  return vec3(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y).x));
+}
+
+// Root position at an unwrapped frame index k ≥ 0 (k ≥ F continues into the next cycle).
+vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, int k) {
   int cycles = k / int(frames);
   int frame = k - cycles * int(frames);
-  return texelFetch(tex, ivec2(1, frame), 0).xyz + float(cycles) * cycleTravel;
+  int texel = frame * 2 * kJointCount + 1;
+  return rootOffset(fast ? fastMotion[texel] : slowMotion[texel]) + float(cycles) * cycleTravel;
 }
 
 void main() {
@@ -29,10 +40,10 @@ void main() {
   float duration = push.slowDuration * (1.0 - w) + push.fastDuration * w;
   float phase0 = m.x;
   float phase1 = phase0 + push.dt / duration;
-  vec3 dSlow = rootAt(slowMotion, push.slowFrames, push.slowCycleTravel.xyz, int(phase1 * float(push.slowFrames))) -
-               rootAt(slowMotion, push.slowFrames, push.slowCycleTravel.xyz, int(phase0 * float(push.slowFrames)));
-  vec3 dFast = rootAt(fastMotion, push.fastFrames, push.fastCycleTravel.xyz, int(phase1 * float(push.fastFrames))) -
-               rootAt(fastMotion, push.fastFrames, push.fastCycleTravel.xyz, int(phase0 * float(push.fastFrames)));
+  vec3 dSlow = rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, int(phase1 * float(push.slowFrames))) -
+               rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, int(phase0 * float(push.slowFrames)));
+  vec3 dFast = rootAt(true, push.fastFrames, push.fastCycleTravel.xyz, int(phase1 * float(push.fastFrames))) -
+               rootAt(true, push.fastFrames, push.fastCycleTravel.xyz, int(phase0 * float(push.fastFrames)));
   vec3 d = dSlow * (1.0 - w) + dFast * w;
   if (push.steering == 1u) place.w = atan(-place.z, place.x);
   float c = cos(place.w), s = sin(place.w);

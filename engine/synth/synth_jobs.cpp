@@ -48,7 +48,7 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, bool useM
 }  // namespace
 
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
-    : rootMotion(context, "root_motion.comp"),
+    : rootMotion(context, "root_motion.comp", std::vector<uint32_t>{uint32_t(pair.jointCount())}),
       pose(context, "synth_pose.comp", poseSpecialization(pair)),
       poseMasked(context, "synth_pose.comp", poseSpecialization(pair, true)),
       cacheLookup(context, "cache_lookup.comp"),
@@ -113,6 +113,9 @@ std::vector<std::string> RootMotionJob::validate() const {
 
 void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("RootMotionJob", validate());
+  if (programs.poseParents.size() != motion->jointCount)  // the texel row width is baked in
+    fail("RootMotionJob: the programs were built for ", programs.poseParents.size(), " joints, the motion pair has ",
+         motion->jointCount);
   RootMotionPush push{};
   push.characterCount = crowd->count;
   push.slowFrames = static_cast<uint32_t>(clips->slow.frameCount);
@@ -129,8 +132,8 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
   push.slowCycleTravel = glm::vec4(clips->slow.cycleTravel, 0.0f);
   push.fastCycleTravel = glm::vec4(clips->fast.cycleTravel, 0.0f);
   gpu::Binding bindings[] = {
-      gpu::sampledImageBinding(0, motion->slow.view(), motion->sampler),
-      gpu::sampledImageBinding(1, motion->fast.view(), motion->sampler),
+      gpu::storageBinding(0, motion->slowTexels),
+      gpu::storageBinding(1, motion->fastTexels),
       gpu::storageBinding(2, crowd->placement),
       gpu::storageBinding(3, crowd->motion),
   };
