@@ -1,9 +1,11 @@
-// `throng bench`: synthesis on the GPU vs the CPU twin (one and all threads) and synthesis +
-// render, medians of many frames after warm-up, GPU timestamps. Prints a table and writes JSON.
+// `throng bench`: synthesis on the GPU vs the CPU twin (one and all threads), synthesis + render,
+// and with --cloth a whole frame of a caped crowd (bench_cloth.h); medians of many frames after
+// warm-up, GPU timestamps. Prints a table and writes JSON.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +20,7 @@
 #include "scene_options.h"
 #include "stats.h"
 #include "synth/cpu_synth.h"
+#include "bench_cloth.h"
 #include "bench_experiments.h"
 
 namespace throng::tools {
@@ -33,6 +36,8 @@ struct BenchOptions {
   std::string device;
   bool quick = false;
   std::string experiments;  // directory for the paper's experiments (CSV + PNG); empty: skip
+  std::string cloth;        // .tsc for the caped-crowd row; empty: the row is skipped (said so)
+  bool clothOnly = false;   // only the caped-crowd row (seconds instead of a minute)
 };
 
 struct Row {
@@ -169,6 +174,45 @@ void printTargetRatios(const std::vector<Row>& rows, unsigned threads) {
   }
 }
 
+constexpr const char* kClothSkipped =
+    "cloth row skipped: no --cloth FILE.tsc (make one with `throng cloth explore --garment cape "
+    "--out cape.tsg` and `throng cloth compress cape.tsg --out cape.tsc`)";
+
+// The caped frame against its target, and where its cloth time goes.
+void printClothRow(const ClothBenchResult& r, double targetMs) {
+  const secondary::ClothStats& s = r.stats;
+  std::printf("  caped frame: %.2f ms median (min %.2f, max %.2f over %d frames), target < %.0f ms: %s\n",
+              r.frameMs, r.frameMsMin, r.frameMsMax, r.frames, targetMs, r.frameMs < targetMs ? "met" : "NOT met");
+  std::printf("  cloth passes %.2f ms: advance %.2f, mark %.2f, decode %.2f, far-cape splat %.2f, draw %.2f\n",
+              r.clothMs, r.advanceMs, r.markMs, r.decodeMs, r.splatMs, r.drawMs);
+  std::printf("  capes per level %u / %u / %u / %u (triangles … splatted), %u states decoded, %u demoted\n",
+              s.capes[0], s.capes[1], s.capes[2], s.capes[3], s.usedStates, s.demoted);
+}
+
+nlohmann::json clothJson(const ClothBenchResult& r, double targetMs) {
+  const secondary::ClothStats& s = r.stats;
+  return {{"variant", r.variant},
+          {"characters", r.characters},
+          {"frames", r.frames},
+          {"frameMsMedian", r.frameMs},
+          {"frameMsMin", r.frameMsMin},
+          {"frameMsMax", r.frameMsMax},
+          {"targetMs", targetMs},
+          {"targetMet", r.frameMs < targetMs},
+          {"synthesisMsMedian", r.synthesisMs},
+          {"renderMsMedian", r.renderMs},
+          {"clothMsMedian",
+           {{"total", r.clothMs},
+            {"advance", r.advanceMs},
+            {"mark", r.markMs},
+            {"decode", r.decodeMs},
+            {"splat", r.splatMs},
+            {"draw", r.drawMs}}},
+          {"capesPerLevel", {s.capes[0], s.capes[1], s.capes[2], s.capes[3]}},
+          {"statesDecoded", s.usedStates},
+          {"demoted", s.demoted}};
+}
+
 void runBench(BenchOptions& o) {
   if (o.quick) {
     o.counts = {1000};
@@ -178,9 +222,11 @@ void runBench(BenchOptions& o) {
     o.size = "320x180";
   }
   if (o.frames < 1 || o.warmup < 0) fail("--frames must be >= 1 and --warmup >= 0");
+  if (o.clothOnly && o.cloth.empty()) fail("--cloth-only needs --cloth FILE.tsc");
   for (uint32_t n : o.counts)
     if (n == 0 || n > 4000000) fail("--characters: each count must be 1..4000000, got ", n);
   parseSize(o.size);
+  if (!o.cloth.empty()) secondary::readClothDatabase(o.cloth);  // a bad file fails before any row
   if (!o.json.empty()) ensureWritableDirectory(std::filesystem::absolute(o.json).parent_path());
   if (!o.experiments.empty()) ensureWritableDirectory(o.experiments);
 
@@ -200,15 +246,31 @@ void runBench(BenchOptions& o) {
   };
   std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
   std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
-  for (uint32_t n : o.counts) {
+  for (uint32_t n : o.clothOnly ? std::vector<uint32_t>{} : o.counts) {
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Full));
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Lod));
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::LodCache));
     report(benchCpuSynthesis(pair, n, 1, o));
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
-  report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::Full));
-  report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::LodCache));
+  if (!o.clothOnly) {
+    report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::Full));
+    report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::LodCache));
+  }
+  std::optional<ClothBenchResult> cloth;
+  if (!o.cloth.empty()) {
+    ClothBenchOptions c;
+    c.cloth = o.cloth;
+    c.characters = o.renderCharacters;
+    c.size = o.size;
+    c.frames = o.frames;
+    c.warmup = o.warmup;
+    cloth = benchCloth(context, c);
+    report({cloth->variant, cloth->characters, cloth->synthesisMs, cloth->renderMs, cloth->frames});
+    printClothRow(*cloth, c.targetMs);
+  } else {
+    std::printf("%s\n", kClothSkipped);
+  }
   printTargetRatios(rows, threads);
   if (!o.experiments.empty()) {
     ExperimentOptions experiment;
@@ -237,6 +299,10 @@ void runBench(BenchOptions& o) {
                               {"synthesisMsMedian", r.synthesisMs}, {"renderMsMedian", r.renderMs},
                               {"frames", r.frames}});
   }
+  if (cloth)
+    doc["cloth"] = clothJson(*cloth, ClothBenchOptions{}.targetMs);
+  else
+    doc["cloth"] = {{"skipped", kClothSkipped}};
   if (!o.json.empty()) {
     writeTextFileAtomic(o.json, doc.dump(2) + "\n");
     std::printf("wrote %s\n", o.json.c_str());
@@ -253,6 +319,9 @@ void addBenchCommand(CLI::App& app, int&) {
   cmd->add_option("--render-characters", options->renderCharacters, "Crowd size of the render row")->capture_default_str();
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
+  cmd->add_option("--cloth", options->cloth,
+                  "Also time a whole frame of the render crowd wearing this .tsc's capes (--lod --cache)");
+  cmd->add_flag("--cloth-only", options->clothOnly, "Only the caped-crowd row (needs --cloth)");
   cmd->add_flag("--quick", options->quick, "A few frames of 1000 characters (smoke test)");
   cmd->add_option("--experiments", options->experiments,
                   "Also run the paper's experiments (cache vs N, hit rate vs bucket width) into this directory");

@@ -103,6 +103,24 @@ void cache(PanelControls& c, const PanelInfo& info) {
               s.budgetBytes / 1048576.0);
 }
 
+// The capes of the newest completed frame, as the cloth layer counted and timed them.
+void capes(const PanelInfo& info) {
+  const ClothFrameStats& f = info.stats->cloth();
+  ImGui::TextDisabled("%s", info.clothFile.c_str());
+  if (f.frame == 0) {
+    ImGui::TextDisabled("no frame completed yet");
+    return;
+  }
+  const CapeCounts n = capeCounts(f.capes, info.clothSplat);
+  ImGui::Text("states decoded %u  (demoted %u)", f.capes.usedStates, f.capes.demoted);
+  ImGui::Text("capes: triangles %u  coarse %u  splatted %u", n.triangles, n.coarse, n.splatted);
+  ImGui::TextDisabled("levels 0-3: %u / %u / %u / %u", f.capes.capes[0], f.capes.capes[1],
+                      f.capes.capes[2], f.capes.capes[3]);
+  ImGui::Text("cloth GPU ms %.2f: decode %.2f, draw %.2f, splat %.2f", f.gpu.totalMs(),
+              f.gpu.decodeMs, f.gpu.drawMs, f.gpu.splatMs);
+  ImGui::TextDisabled("advance %.2f, mark %.2f", f.gpu.advanceMs, f.gpu.markMs);
+}
+
 void lodAndCache(PanelControls& c, const PanelInfo& info) {
   lod(c, info);
   ImGui::Separator();
@@ -124,6 +142,8 @@ PanelRect drawPanel(PanelControls& controls, const PanelInfo& info) {
       playbackAndCamera(controls);
     if (ImGui::CollapsingHeader("LOD and cache", ImGuiTreeNodeFlags_DefaultOpen))
       lodAndCache(controls, info);
+    if (info.clothEnabled && ImGui::CollapsingHeader("capes", ImGuiTreeNodeFlags_DefaultOpen))
+      capes(info);
     if (ImGui::CollapsingHeader("keys and mouse")) bindings();
     ImGui::PopItemWidth();
     if (!controls.message.empty()) {

@@ -51,6 +51,9 @@ struct PanelInfo {
   LodStats lod;             // active joints and levels (every joint without the LOD)
   bool cacheEnabled = false;  // in the running crowd
   synth::MotionCacheStats cache;
+  bool clothEnabled = false;  // --cloth: stats->cloth() holds the newest frame's capes
+  bool clothSplat = false;    // far capes splatted (else drawn as the coarse mesh)
+  std::string clothFile;
   const ViewStats* stats = nullptr;
   const render::Camera* camera = nullptr;
 };

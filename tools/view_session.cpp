@@ -201,6 +201,7 @@ void ViewSession::respawn(const SceneOptions& next) {
   try {
     respawnCrowd(context_, *scene_, next);
     lod_.reset();  // the GPU is idle: pending mask copies describe the old crowd
+    stats_.resetCloth();  // a new cloth layer numbers its frames from 1
     ++respawns_;
     panel_.message.clear();
   } catch (const Error& e) {
@@ -225,7 +226,9 @@ void ViewSession::collectTimes(uint32_t slot) {
   std::vector<uint64_t> ticks = pool.fetch();
   stats_.passTimes({t.synthesisMs, t.renderMs,
                     pool.millisecondsBetween(ticks, marks_[slot].rendered, panelMarks_[slot])});
-  if (scene_->cloth) clothMs_.push_back(scene_->cloth->timings(slot).totalMs());
+  if (scene_->cloth && scene_->cloth->frameNumber(slot) > 0)
+    stats_.clothFrame({scene_->cloth->frameNumber(slot), scene_->cloth->stats(slot),
+                       scene_->cloth->timings(slot)});
 }
 
 void ViewSession::saveScreenshot(const fs::path& path) {
@@ -249,6 +252,11 @@ PanelInfo ViewSession::panelInfo() const {
   info.lodEnabled = frameSynth(*scene_).lod;
   info.cacheEnabled = frameSynth(*scene_).cache.options.enabled;
   if (info.cacheEnabled) info.cache = synth::readCacheStats(frameSynth(*scene_).cache);
+  info.clothEnabled = scene_->cloth != nullptr;
+  if (scene_->cloth) {
+    info.clothSplat = secondary::clothSplattable(scene_->cloth->gpuData());
+    info.clothFile = scene_->options.cloth;
+  }
   info.stats = &stats_;
   info.camera = &camera_;
   return info;
@@ -266,7 +274,7 @@ void ViewSession::report() {
       "GPU time per frame (median): synthesis %.2f ms, render %.2f ms, panel %.2f ms  [%s]\n",
       median.synthesisMs, median.renderMs, median.panelMs, context_.info().name.c_str());
   if (scene_->cloth)
-    std::printf("cloth (median, inside render): %.2f ms\n", tools::median(clothMs_));
+    std::printf("cloth (median, inside render): %.2f ms\n", stats_.clothMedianMs());
   if (o_.printStats) {
     nlohmann::json j;
     j["frames"] = stats_.frames();
@@ -311,9 +319,21 @@ void ViewSession::report() {
     j["speedChanges"] = speedChanges_;
     j["respawns"] = respawns_;
     if (scene_->cloth) {
-      secondary::ClothStats c = scene_->cloth->stats();
-      j["cloth"] = {{"file", scene_->options.cloth}, {"gpuMs", tools::median(clothMs_)},
-                    {"usedStates", c.usedStates}, {"demoted", c.demoted}};
+      // What the panel shows (panelInfo): the newest completed frame's counters and times.
+      const PanelInfo info = panelInfo();
+      const ClothFrameStats& c = info.stats->cloth();
+      const CapeCounts n = capeCounts(c.capes, info.clothSplat);
+      j["cloth"] = {{"file", info.clothFile},
+                    {"gpuMs", stats_.clothMedianMs()},
+                    {"frame", c.frame},
+                    {"usedStates", c.capes.usedStates},
+                    {"demoted", c.capes.demoted},
+                    {"levels", {c.capes.capes[0], c.capes.capes[1], c.capes.capes[2], c.capes.capes[3]}},
+                    {"capes", {{"triangles", n.triangles}, {"coarse", n.coarse}, {"splatted", n.splatted}}},
+                    {"splat", info.clothSplat},
+                    {"lastFrameMs",
+                     {{"total", c.gpu.totalMs()}, {"advance", c.gpu.advanceMs}, {"mark", c.gpu.markMs},
+                      {"decode", c.gpu.decodeMs}, {"splat", c.gpu.splatMs}, {"draw", c.gpu.drawMs}}}};
     }
     j["validationMessages"] = messages;
     j["screenshot"] = screenshotWritten_;

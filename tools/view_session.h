@@ -66,7 +66,6 @@ class ViewSession {
   std::string screenshotWritten_;
   uint64_t speedChanges_ = 0, respawns_ = 0;
   double titleSeconds_ = 0.0;
-  std::vector<double> clothMs_;  // GPU time of the cloth passes per completed frame
 };
 
 }  // namespace throng::tools

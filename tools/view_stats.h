@@ -1,12 +1,30 @@
 #pragma once
-// Live statistics of `throng view`: frames per second over half-second windows and the GPU
-// time of each pass (timestamps of the frame that last completed).
+// Live statistics of `throng view`: frames per second over half-second windows, the GPU
+// time of each pass (timestamps of the frame that last completed) and, with --cloth, what the
+// cloth layer did in the newest completed frame.
 #include <cstdint>
 #include <vector>
 
+#include "secondary/cloth_gpu_layer.h"
 #include "stats.h"
 
 namespace throng::tools {
+
+// One completed frame of the cloth layer: its counters (copied by that frame) and GPU times.
+struct ClothFrameStats {
+  uint64_t frame = 0;  // the layer's frame number (0: none yet)
+  secondary::ClothStats capes;
+  secondary::ClothTimings gpu;
+};
+
+// How the visible capes were drawn: levels 0-1 as full and mid triangle meshes, level 2 (and
+// level 3 when the device cannot splat) as the coarse mesh, level 3 splatted by a compute pass.
+struct CapeCounts {
+  uint32_t triangles = 0, coarse = 0, splatted = 0;
+};
+inline CapeCounts capeCounts(const secondary::ClothStats& s, bool splat) {
+  return {s.capes[0] + s.capes[1], s.capes[2] + (splat ? 0u : s.capes[3]), splat ? s.capes[3] : 0u};
+}
 
 struct PassTimes {
   double synthesisMs = 0.0;
@@ -35,6 +53,17 @@ class ViewStats {
     panel_.push_back(t.panelMs);
   }
 
+  // Frames may complete out of slot order: the newest frame's counters are kept.
+  void clothFrame(const ClothFrameStats& c) {
+    if (c.frame == 0) return;
+    if (c.frame > cloth_.frame) cloth_ = c;
+    clothMs_.push_back(c.gpu.totalMs());
+  }
+  // After a respawn the layer counts frames from 1 again.
+  void resetCloth() { cloth_ = {}; }
+  const ClothFrameStats& cloth() const { return cloth_; }
+  double clothMedianMs() const { return median(clothMs_); }
+
   uint64_t frames() const { return frames_; }
   // Before the first half-second has passed: the average so far.
   double fps() const {
@@ -54,6 +83,8 @@ class ViewStats {
   double fps_ = 0.0, frameMs_ = 0.0;
   PassTimes last_;
   std::vector<double> synthesis_, render_, panel_;
+  ClothFrameStats cloth_;
+  std::vector<double> clothMs_;
 };
 
 }  // namespace throng::tools

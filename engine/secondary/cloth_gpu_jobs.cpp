@@ -198,7 +198,7 @@ void ClothSplatJob::record(VkCommandBuffer cmd, const ClothPrograms&) const {
   synth::throwIfInvalid("ClothSplatJob", validate());
   gpu_types::ClothSplatPush push{crowd->count, 0u, 0u, 0u};
   gpu::Binding bindings[] = {
-      gpu::uniformBinding(0, *view),
+      gpu::storageBinding(0, *view),  // a storage buffer there (cloth_splat.comp says why)
       gpu::storageBinding(1, buffers->characters),
       gpu::storageBinding(2, crowd->placement),
       gpu::storageBinding(3, crowd->motion),

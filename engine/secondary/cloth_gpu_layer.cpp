@@ -1,5 +1,6 @@
 #include "secondary/cloth_gpu_layer.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/error.h"
@@ -12,6 +13,8 @@ namespace {
 // start and end.
 constexpr uint32_t kMarks = 8;
 constexpr uint32_t kNoMark = 0xFFFFFFFFu;
+constexpr VkDeviceSize kCounterBytes = sizeof(gpu_types::ClothCounters);
+constexpr VkDeviceSize kDrawBytes = kClothLevels * 20;  // VkDrawIndexedIndirectCommand per level
 }  // namespace
 
 ClothLayer::ClothLayer(const gpu::Context& context, const ClothDatabase& db,
@@ -23,13 +26,19 @@ ClothLayer::ClothLayer(const gpu::Context& context, const ClothDatabase& db,
       cloth_(uploadCloth(context, db)),
       buffers_(makeClothCrowdBuffers(context, cloth_, crowd.count, options.fineBudgetBytes)) {
   for (uint32_t i = 0; i < render::kFramesInFlight; ++i) {
-    views_.emplace_back(context, sizeof(gpu_types::ClothView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+    // A uniform buffer for the mark and the draw, a storage buffer for the splat (its shader says why).
+    views_.emplace_back(context, sizeof(gpu_types::ClothView),
+                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                         gpu::MemoryUse::HostVisible);
     timestamps_.push_back(std::make_unique<gpu::TimestampPool>(context, kMarks));
+    statsCopies_.emplace_back(context, kCounterBytes + kDrawBytes, gpu::kStorageUsage,
+                              gpu::MemoryUse::HostVisible);
+    std::memset(statsCopies_.back().mapped(), 0, kCounterBytes + kDrawBytes);
   }
   splatMarks_.assign(render::kFramesInFlight, kNoMark);
   drawMarks_.assign(render::kFramesInFlight, kNoMark);
   splatted_.assign(render::kFramesInFlight, false);
+  frameNumbers_.assign(render::kFramesInFlight, 0);
 }
 
 render::FrameHooks ClothLayer::hooks(uint32_t slot) {
@@ -56,6 +65,7 @@ void ClothLayer::recordCompute(VkCommandBuffer cmd, const render::DrawParams& pa
   t.reset();
   splatMarks_[slot] = drawMarks_[slot] = kNoMark;
   splatted_[slot] = false;
+  frameNumbers_[slot] = ++framesRecorded_;
   t.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
   ClothAdvanceJob{&cloth_, crowd_, &buffers_}.record(cmd, programs_);
   t.write(cmd);
@@ -64,6 +74,14 @@ void ClothLayer::recordCompute(VkCommandBuffer cmd, const render::DrawParams& pa
   t.write(cmd);
   ClothDecodeJob{&cloth_, &buffers_}.record(cmd, programs_);
   t.write(cmd);
+  // The frame's statistics, after the decode's mark so they cost the timings nothing; the next
+  // frame's clear of the counters waits for this copy, and the host reads it after the fence.
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  const VkBufferCopy counters{0, 0, kCounterBytes}, draws{0, kCounterBytes, kDrawBytes};
+  vkCmdCopyBuffer(cmd, buffers_.counters.get(), statsCopies_[slot].get(), 1, &counters);
+  vkCmdCopyBuffer(cmd, buffers_.draws.get(), statsCopies_[slot].get(), 1, &draws);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_HOST_BIT);
 }
 
 void ClothLayer::recordSplat(VkCommandBuffer cmd, const gpu::Buffer& visibility, uint32_t slot) {
@@ -83,6 +101,19 @@ void ClothLayer::recordDraw(VkCommandBuffer cmd, uint32_t slot) {
                     splatted_[slot]};
   draw.record(cmd, programs_);
   t.write(cmd);
+}
+
+ClothStats ClothLayer::stats(uint32_t slot) const {
+  THRONG_CHECK(slot < render::kFramesInFlight, "frame slot ", slot, " out of range");
+  const auto* bytes = static_cast<const uint8_t*>(statsCopies_[slot].mapped());
+  gpu_types::ClothCounters c;
+  std::memcpy(&c, bytes, sizeof(c));
+  uint32_t draws[kClothLevels * 5];
+  std::memcpy(draws, bytes + kCounterBytes, sizeof(draws));
+  ClothStats stats{std::min(c.usedStates, buffers_.maxUsedStates), c.demoted,
+                   std::min(c.fineCursor, buffers_.fineBudget), {}};
+  for (uint32_t L = 0; L < kClothLevels; ++L) stats.capes[L] = draws[5 * L + 1];
+  return stats;
 }
 
 ClothTimings ClothLayer::timings(uint32_t slot) const {

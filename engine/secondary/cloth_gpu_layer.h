@@ -35,6 +35,14 @@ class ClothLayer {
   render::FrameHooks hooks(uint32_t frameSlot);
   // After the frame recorded into `frameSlot` completed.
   ClothTimings timings(uint32_t frameSlot) const;
+  // What that frame's mark pass counted (states decoded, capes per level), from a copy the frame
+  // made of its counters: with frames in flight the live counters may already belong to the next
+  // frame.
+  ClothStats stats(uint32_t frameSlot) const;
+  // Frames recorded so far, and which of them `frameSlot` holds (1-based; 0: none yet).
+  uint64_t framesRecorded() const { return framesRecorded_; }
+  uint64_t frameNumber(uint32_t frameSlot) const { return frameNumbers_.at(frameSlot); }
+  // The live counters (right after a frame completed with no other in flight).
   ClothStats stats() const { return readClothStats(buffers_); }
 
   ClothLayerOptions& options() { return options_; }
@@ -53,8 +61,11 @@ class ClothLayer {
   ClothCrowdBuffers buffers_;
   std::vector<gpu::Buffer> views_;
   std::vector<std::unique_ptr<gpu::TimestampPool>> timestamps_;
+  std::vector<gpu::Buffer> statsCopies_;  // per slot: ClothCounters, then the draws
   std::vector<uint32_t> splatMarks_, drawMarks_;  // per slot: first of the two marks, or none
   std::vector<bool> splatted_;                    // per slot: far capes went to the splat
+  std::vector<uint64_t> frameNumbers_;            // per slot: the frame recorded into it
+  uint64_t framesRecorded_ = 0;
 };
 
 }  // namespace throng::secondary

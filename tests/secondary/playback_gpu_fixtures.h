@@ -37,7 +37,9 @@ struct ClothGpuRun {
     crowdBuffers = crowd::uploadCrowd(ctx, crowd);
     buffers =
         secondary::makeClothCrowdBuffers(ctx, cloth, uint32_t(placement.size()), fineBudgetBytes);
-    view = gpu::Buffer(ctx, sizeof(gpu_types::ClothView), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+    // Uniform for the mark and the draw, storage for the splat (cloth_splat.comp).
+    view = gpu::Buffer(ctx, sizeof(gpu_types::ClothView),
+                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                        gpu::MemoryUse::HostVisible);
   }
 

@@ -1,5 +1,6 @@
 // `throng bench` end to end: the quick run writes well-formed JSON with every variant, and the
-// experiments write their CSV files; bad options fail clearly.
+// experiments write their CSV files; with --cloth the caped-crowd row and its cloth passes, without
+// it a line saying why the row is missing; bad options fail clearly.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -29,11 +30,57 @@ TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
   for (const char* v : {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache", "cpu-1-thread"})
     CHECK(variants.count(v) == 1);
   CHECK(doc["jointsPerCharacter"].get<int>() == 25);
+  CHECK(run.output.find("cloth row skipped: no --cloth") != std::string::npos);
+  CHECK(doc["cloth"]["skipped"].get<std::string>().find("--cloth") != std::string::npos);
   CHECK(std::filesystem::exists(dir / "experiments" / "cache_vs_n.csv"));
   CHECK(readTextFile(dir / "experiments" / "time_vs_n.csv").rfind("characters,cpu_ms,gpu_full_ms,gpu_lod_ms", 0) == 0);
   std::string csv = readTextFile(dir / "experiments" / "hit_rate_vs_bucket.csv");
   CHECK(csv.rfind("bucket_width,hit_rate", 0) == 0);
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 7);  // header + 6 widths
+}
+
+TEST_CASE("bench --quick --cloth: a caped frame with its cloth passes and target") {
+  auto dir = test::freshDirectory("bench_cloth");
+  test::CommandResult r = test::runThrong(
+      "cloth explore --garment-config '{\"cape\": {\"columns\": 8, \"rows\": 12}}' "
+      "--budget-expansions 2 --quiet --out " + (dir / "cape.tsg").string());
+  REQUIRE(r.exitCode == 0);
+  r = test::runThrong("cloth compress " + (dir / "cape.tsg").string() + " --out " +
+                      (dir / "cape.tsc").string() + " --quiet");
+  REQUIRE(r.exitCode == 0);
+  test::CommandResult run = test::runThrong("bench --quick --cloth " + (dir / "cape.tsc").string() +
+                                            " --json " + (dir / "bench.json").string());
+  INFO(run.output);
+  REQUIRE(run.exitCode == 0);
+  CHECK(run.output.find("gpu-lod+cache+cloth-320x180") != std::string::npos);
+  CHECK(run.output.find("far-cape splat") != std::string::npos);
+  auto doc = nlohmann::json::parse(readTextFile(dir / "bench.json"));
+  const auto& cloth = doc["cloth"];
+  REQUIRE(cloth.is_object());
+  CHECK(cloth["variant"] == "gpu-lod+cache+cloth-320x180");
+  CHECK(cloth["characters"] == 1000);
+  CHECK(cloth["targetMs"] == 50.0);
+  CHECK(cloth["targetMet"] == (cloth["frameMsMedian"].get<double>() < 50.0));
+  // The frame holds the synthesis and the render, and the render holds the cloth passes.
+  CHECK(cloth["frameMsMedian"].get<double>() > 0.0);
+  CHECK(cloth["frameMsMin"].get<double>() <= cloth["frameMsMedian"].get<double>());
+  CHECK(cloth["frameMsMedian"].get<double>() <= cloth["frameMsMax"].get<double>());
+  const auto& ms = cloth["clothMsMedian"];
+  CHECK(ms["total"].get<double>() > 0.0);
+  CHECK(ms["decode"].get<double>() > 0.0);
+  CHECK(ms["total"].get<double>() < cloth["renderMsMedian"].get<double>());
+  long capes = 0;
+  for (const auto& n : cloth["capesPerLevel"]) capes += n.get<long>();
+  CHECK(capes > 0);
+  CHECK(capes <= 1000);
+  CHECK(cloth["statesDecoded"].get<long>() > 0);
+  bool row = false;
+  for (const auto& r2 : doc["results"]) row = row || r2["variant"] == "gpu-lod+cache+cloth-320x180";
+  CHECK(row);
+
+  test::CommandResult bad = test::runThrong("bench --quick --cloth " + (dir / "missing.tsc").string());
+  CHECK(bad.exitCode != 0);
+  CHECK(bad.output.find("missing.tsc") != std::string::npos);
 }
 
 TEST_CASE("bench: bad options fail clearly") {
