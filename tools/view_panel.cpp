@@ -27,7 +27,8 @@ void statistics(const PanelInfo& info) {
 void sceneControls(PanelControls& c, const PanelInfo& info) {
   ImGui::InputInt("characters", &c.characters, 100, 1000);
   c.characters = std::clamp(c.characters, 1, 4000000);
-  ImGui::Combo("scenario", &c.scenario, kScenarioNames, IM_ARRAYSIZE(kScenarioNames));
+  ImGui::Combo("scenario", &c.scenario, kScenarioNames,
+               c.storyboardAvailable ? IM_ARRAYSIZE(kScenarioNames) : kStoryboardScenario);
   ImGui::InputInt("seed", &c.seed);
   ImGui::SliderFloat("density", &c.density, 0.05f, 4.0f, "%.2f /m2");
   ImGui::DragFloatRange2("speed w", &c.speedMin, &c.speedMax, 0.01f, 0.0f, 1.0f, "%.2f", "%.2f");

@@ -2,7 +2,9 @@
 // The Dear ImGui panel of `throng view`: scene controls (count, scenario, speeds), playback,
 // camera presets, coverage LOD and motion cache, and live statistics. Edits land in
 // PanelControls; the frame loop applies them.
+#include <iterator>
 #include <string>
+#include <string_view>
 
 #include "render/camera.h"
 #include "synth/motion_cache.h"
@@ -17,6 +19,7 @@ constexpr float kPanelX = 8.0f, kPanelY = 8.0f;
 struct PanelControls {
   int characters = 0;
   int scenario = 0;  // index into kScenarioNames
+  bool storyboardAvailable = false;  // --storyboard was given: a respawn may rebuild it
   int seed = 1;
   float speedMin = 0.0f, speedMax = 1.0f;
   float density = 0.5f;
@@ -37,7 +40,16 @@ struct PanelControls {
   std::string message;  // the last error or saved screenshot, shown in the panel
 };
 
-inline constexpr const char* kScenarioNames[] = {"random", "circle"};
+// "storyboard" is offered only when the viewer was given a storyboard (kStoryboardScenario).
+inline constexpr const char* kScenarioNames[] = {"random", "circle", "storyboard"};
+inline constexpr int kStoryboardScenario = 2;
+
+// The index of a scenario name in kScenarioNames, or -1.
+inline int scenarioIndex(std::string_view name) {
+  for (int i = 0; i < int(std::size(kScenarioNames)); ++i)
+    if (name == kScenarioNames[i]) return i;
+  return -1;
+}
 inline constexpr const char* kPresetNames[] = {"wide", "top", "street", "closeup"};
 
 struct PanelInfo {

@@ -58,7 +58,8 @@ ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
                                                 render::kPresenterFrames);
   const crowd::ScenarioOptions& s = o.scene.scenario;
   panel_.characters = static_cast<int>(s.characters);
-  panel_.scenario = s.name == "circle" ? 1 : 0;
+  panel_.scenario = std::max(scenarioIndex(s.name), 0);
+  panel_.storyboardAvailable = !o.scene.story.storyboard.empty();
   panel_.seed = static_cast<int>(s.seed);
   panel_.density = s.density;
   panel_.speedMin = s.minSpeedWeight;
@@ -96,10 +97,11 @@ void ViewSession::applyScript(const std::vector<render::ScriptEvent>& events) {
       case Kind::Respawn:
         panel_.characters = static_cast<int>(e.x);
         if (!e.text.empty()) {
-          auto name = std::find(std::begin(kScenarioNames), std::end(kScenarioNames), e.text);
-          if (name == std::end(kScenarioNames))
-            fail("input script: unknown scenario '", e.text, "'");
-          panel_.scenario = static_cast<int>(name - std::begin(kScenarioNames));
+          int index = scenarioIndex(e.text);
+          if (index < 0 || (index == kStoryboardScenario && !panel_.storyboardAvailable))
+            fail("input script: unknown scenario '", e.text, "'",
+                 index == kStoryboardScenario ? " (the viewer was started without --storyboard)" : "");
+          panel_.scenario = index;
         }
         panel_.respawn = true;
         break;
