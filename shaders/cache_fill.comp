@@ -11,8 +11,7 @@
 #include "cache_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
-layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; };
+#include "motion_texels.glsl"
 layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = 7) readonly buffer SlotBucket { int slotBucket[]; };

@@ -1,6 +1,6 @@
 // The pose of one character computed joint by joint (slerp per joint, hierarchy, draw matrices
 // A = M·O·F), shared by the pose pass and the motion-cache fill. The including shader declares
-// the buffers this reads and writes: slowMotion, fastMotion (motion texels as u64vec2), jointRadius,
+// the buffers this reads and writes: the motion texels (motion_texels.glsl), jointRadius,
 // constantOffsets and the output `joints`. CPU twin: anim::poseCharacterFrames.
 #ifndef THRONG_POSE_SKELETON_GLSL
 #define THRONG_POSE_SKELETON_GLSL
@@ -167,12 +167,6 @@ int parentOf(int j) {
   }
   return -1;
 }
-// Motion texels are read as two 64-bit words: lavapipe gathers a vector one component per lane
-// at a time, so two wide components cost half as much as four floats (the bytes are the same).
-vec4 texelOf(u64vec2 words) {
-  return vec4(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y)));
-}
-
 vec3 globalPosition[64];
 vec4 globalRotation[64];
 
@@ -202,10 +196,10 @@ void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 or
     // the joint when none of them needs it; a lane that does not need it just does not write.
     bool jointNeeded = !kUseMasks || ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
     if (kUseMasks && !subgroupAny(jointNeeded)) continue;
-    vec4 q = slerpFast(texelOf(slowMotion[slowRow + 2 * j]), texelOf(fastMotion[fastRow + 2 * j]), weights);
+    vec4 q = slerpFast(slowTexel(slowRow + 2 * j), fastTexel(fastRow + 2 * j), weights);
     vec3 o = boneFixed(j) ? fixedBoneOffset(j)
              : offsetAnimated(j)
-                 ? texelOf(slowMotion[slowRow + 2 * j + 1]).xyz * (1.0 - w) + texelOf(fastMotion[fastRow + 2 * j + 1]).xyz * w
+                 ? slowTexel(slowRow + 2 * j + 1).xyz * (1.0 - w) + fastTexel(fastRow + 2 * j + 1).xyz * w
                  : constantOffsets[2 * j].xyz * (1.0 - w) + constantOffsets[2 * j + 1].xyz * w;
     int p = parentOf(j);
     float radius = jointRadius[j];

@@ -11,8 +11,7 @@
 #include "motion_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
-layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; };
+#include "motion_texels.glsl"
 layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 // Offsets of joints whose offset never changes: (slow, fast) at (2j, 2j + 1). Read at a
 // constant index, so every lane shares one load instead of gathering per lane.

@@ -155,6 +155,7 @@ Context::Context(const ContextOptions& options)
   info_.type = chosen.properties.deviceType;
   info_.timestampPeriodNs = chosen.properties.limits.timestampPeriod;
   info_.maxStorageBufferRange = chosen.properties.limits.maxStorageBufferRange;
+  info_.maxUniformBufferRange = chosen.properties.limits.maxUniformBufferRange;
   VkPhysicalDeviceMemoryProperties memory{};
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory);
   for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)

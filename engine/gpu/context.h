@@ -27,6 +27,7 @@ struct DeviceInfo {
   VkPhysicalDeviceType type = VK_PHYSICAL_DEVICE_TYPE_OTHER;
   float timestampPeriodNs = 1.0f;
   uint32_t maxStorageBufferRange = 0;
+  uint32_t maxUniformBufferRange = 0;
   bool int64Atomics = false;  // shaderInt64 + shaderBufferInt64Atomics (the joint splat needs them)
   uint64_t deviceLocalBytes = 0;  // the largest device-local heap (lavapipe: system memory)
   bool isCpu() const { return type == VK_PHYSICAL_DEVICE_TYPE_CPU; }

@@ -1,5 +1,7 @@
 #include "synth/motion_gpu.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 
 namespace throng::synth {
@@ -22,6 +24,26 @@ std::vector<bool> fixedBones(const anim::MotionPair& pair) {
   return fixed;
 }
 
+uint32_t uniformTexelCapacity(const gpu::Context& context) {
+  if (!context.info().isCpu()) return 0;
+  return std::min<uint32_t>(context.info().maxUniformBufferRange, 65536u) / sizeof(glm::vec4);
+}
+
+bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity) {
+  return capacity > 0 && pair.slow.texels.size() <= capacity && pair.fast.texels.size() <= capacity;
+}
+
+namespace {
+gpu::Buffer uniformTexels(const gpu::Context& context, const std::vector<glm::vec4>& texels, uint32_t slots) {
+  std::vector<glm::vec4> padded(std::max<size_t>(slots, 1), glm::vec4(0.0f));
+  std::copy(texels.begin(), texels.begin() + std::min(texels.size(), padded.size()), padded.begin());
+  gpu::Buffer buffer(context, padded.size() * sizeof(glm::vec4),
+                     VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
+  gpu::uploadBytes(context, buffer, {reinterpret_cast<const uint8_t*>(padded.data()), padded.size() * sizeof(glm::vec4)});
+  return buffer;
+}
+}  // namespace
+
 GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPair& pair) {
   GpuMotionPair gpuPair;
   gpuPair.slow = uploadMotionTexture(context, pair.slow);
@@ -42,6 +64,11 @@ GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPa
   gpuPair.jointRadius = gpu::makeStorageBuffer<float>(context, pair.jointRadius);
   gpuPair.slowTexels = gpu::makeStorageBuffer<glm::vec4>(context, pair.slow.texels);
   gpuPair.fastTexels = gpu::makeStorageBuffer<glm::vec4>(context, pair.fast.texels);
+  gpuPair.uniformTexelCapacity = uniformTexelCapacity(context);
+  gpuPair.texelsInUniform = texelsFitUniform(pair, gpuPair.uniformTexelCapacity);
+  const uint32_t slots = gpuPair.texelsInUniform ? gpuPair.uniformTexelCapacity : 1u;
+  gpuPair.slowUniformTexels = uniformTexels(context, pair.slow.texels, slots);
+  gpuPair.fastUniformTexels = uniformTexels(context, pair.fast.texels, slots);
   gpuPair.sampler = gpu::makeNearestSampler(context);
   gpuPair.jointCount = static_cast<uint32_t>(pair.jointCount());
   gpuPair.slowFrames = static_cast<uint32_t>(pair.slow.frameCount);

@@ -11,6 +11,13 @@ namespace throng::synth {
 // pose pass gets its offset, length and alignment as specialization constants (synth_jobs.cpp).
 std::vector<bool> fixedBones(const anim::MotionPair& pair);
 
+// On a CPU device (lavapipe) the pose pass reads the motion texels from uniform buffers when
+// both clips fit: lavapipe gathers uniform data with unrolled loads, storage data with a loop
+// per lane and component (12% of the pass at 100,000 characters on one thread). The capacity in
+// texels: min(maxUniformBufferRange, 64 KiB) / 16 on a CPU device, 0 (storage buffers) on a GPU.
+uint32_t uniformTexelCapacity(const gpu::Context& context);
+bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity);
+
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;
@@ -23,6 +30,12 @@ struct GpuMotionPair {
   // several times cheaper than texelFetch (see README, benchmarks).
   gpu::Buffer slowTexels;
   gpu::Buffer fastTexels;
+  // The same again as uniform buffers padded to uniformTexelCapacity texels when
+  // texelsInUniform, else 16-byte placeholders (the shaders declare both).
+  gpu::Buffer slowUniformTexels;
+  gpu::Buffer fastUniformTexels;
+  uint32_t uniformTexelCapacity = 0;
+  bool texelsInUniform = false;
   gpu::Handle<VkSampler> sampler;
   uint32_t jointCount = 0;
   uint32_t slowFrames = 0;

@@ -21,12 +21,16 @@ namespace {
 // Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j,
 // [65], [66] the bit mask of joints whose offsets change over frames, [67] use LOD masks,
 // [68], [69] the bit mask of fixed bones (synth::fixedBones), and from 70 + 8j joint j's fixed
-// bone: offset xyz, length, and the rotation aligning +y with it (xyzw), as float bits.
-std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, bool useMasks = false) {
+// bone: offset xyz, length, and the rotation aligning +y with it (xyzw), as float bits; [582]
+// the texels per uniform block, [583] whether the texels are read from the uniform buffers.
+std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity, bool useMasks = false) {
   const std::vector<int32_t>& parents = pair.parents;
   if (parents.empty() || parents.size() > 64)
     fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
-  std::vector<uint32_t> values(70 + 8 * 64, static_cast<uint32_t>(-1));
+  std::vector<uint32_t> values(70 + 8 * 64 + 2, static_cast<uint32_t>(-1));
+  const bool inUniform = texelsFitUniform(pair, uniformCapacity);
+  values[582] = inUniform ? uniformCapacity : 1u;  // texels per uniform block
+  values[583] = inUniform ? 1u : 0u;
   values[67] = useMasks ? 1u : 0u;
   values[0] = static_cast<uint32_t>(parents.size());
   for (size_t j = 0; j < parents.size(); ++j) values[1 + j] = static_cast<uint32_t>(parents[j]);
@@ -49,17 +53,18 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, bool useM
 
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp", std::vector<uint32_t>{uint32_t(pair.jointCount())}),
-      pose(context, "synth_pose.comp", poseSpecialization(pair)),
-      poseMasked(context, "synth_pose.comp", poseSpecialization(pair, true)),
+      pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
+      poseMasked(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context), true)),
       cacheLookup(context, "cache_lookup.comp"),
       cacheInsert(context, "cache_insert.comp"),
-      cacheFill(context, "cache_fill.comp", poseSpecialization(pair)),
+      cacheFill(context, "cache_fill.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       cacheClassify(context, "cache_classify.comp"),
       cacheArgs(context, "cache_dispatch_args.comp"),
-      poseCached(context, "synth_pose_cached.comp", poseSpecialization(pair)),
+      poseCached(context, "synth_pose_cached.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       coverage(makeCoverageProgram(context)),
       poseParents(pair.parents),
-      poseAnimatedOffsets(pair.animatedOffset) {
+      poseAnimatedOffsets(pair.animatedOffset),
+      poseTexelsInUniform(texelsFitUniform(pair, uniformTexelCapacity(context))) {
   noList = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
 }
 
@@ -91,6 +96,7 @@ void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const 
   if (cache->capacity > 0) {
     // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
     gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels), gpu::storageBinding(1, motion->fastTexels),
+                           gpu::uniformBinding(12, motion->slowUniformTexels), gpu::uniformBinding(13, motion->fastUniformTexels),
                            gpu::storageBinding(2, motion->jointRadius), gpu::uniformBinding(6, motion->constantOffsets),
                            gpu::storageBinding(7, cache->slotBucket), gpu::storageBinding(8, cache->freshSlots),
                            gpu::storageBinding(9, cache->segmentFrames), gpu::storageBinding(10, cache->data)};
@@ -161,7 +167,8 @@ std::vector<std::string> PoseJob::validate() const {
 
 void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("PoseJob", validate());
-  if (programs.poseParents != motion->parentsHost || programs.poseAnimatedOffsets != motion->animatedOffset)
+  if (programs.poseParents != motion->parentsHost || programs.poseAnimatedOffsets != motion->animatedOffset ||
+      programs.poseTexelsInUniform != motion->texelsInUniform)
     fail("PoseJob: the pose program was specialized for another skeleton (", programs.poseParents.size(),
          " joints) than the motion pair's (", motion->parentsHost.size(), " joints)");
   uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
@@ -183,6 +190,8 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, motion->slowTexels),
       gpu::storageBinding(1, motion->fastTexels),
+      gpu::uniformBinding(12, motion->slowUniformTexels),
+      gpu::uniformBinding(13, motion->fastUniformTexels),
       gpu::storageBinding(2, motion->jointRadius),
       gpu::storageBinding(3, crowd->placement),
       gpu::storageBinding(4, crowd->motion),

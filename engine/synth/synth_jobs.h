@@ -29,6 +29,7 @@ struct SynthPrograms {
   gpu::Buffer noList;                  // bindings for a pose pass over a plain range
   std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
+  bool poseTexelsInUniform = false;       // and where it reads the texels (motion_gpu.h)
   SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair);
 };
 

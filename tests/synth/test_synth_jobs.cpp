@@ -129,6 +129,21 @@ TEST_CASE("fixed bones (offsets folded into the pose pass) and blended bones bot
   CHECK(worst.joints <= 1e-4f);
 }
 
+TEST_CASE("motion texels in uniform buffers (small clips on a CPU device) and in storage buffers agree with the twin") {
+  const uint32_t capacity = synth::uniformTexelCapacity(test::gpuContext());
+  for (int frames : {20, 120}) {  // 25 joints × 2 × 120 frames = 6,000 texels: more than 64 KiB
+    CAPTURE(frames);
+    anim::MotionPair pair = test::syntheticPair(25, frames, frames - 4, 3);
+    const bool inUniform = synth::texelsFitUniform(pair, capacity);
+    if (test::gpuContext().info().isCpu()) CHECK(inUniform == (frames == 20));
+    crowd::ScenarioOptions options;
+    options.characters = 300;
+    options.seed = 8;
+    Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 3, 1.0f / 30.0f);
+    CHECK(worst.joints <= 1e-4f);
+  }
+}
+
 TEST_CASE("GPU vs CPU twin: circle scenario steers identically") {
   anim::MotionPair pair = test::syntheticPair(12, 20, 16, 5);
   crowd::ScenarioOptions options;
