@@ -9,26 +9,20 @@
 #include "motion_common.glsl"
 
 layout(local_size_x = 64) in;
-// The motion texels as storage buffers read in 64-bit words (texel (x, f) is element f·2J + x):
-// on lavapipe a texelFetch goes through the whole sampler path and cost as much as the pose
-// pass's hundred buffer loads per character.
+// The motion texels like the pose pass reads them (motion_texels.glsl): on lavapipe a texelFetch
+// goes through the whole sampler path.
 layout(constant_id = 0) const int kJointCount = 1;
-layout(std430, binding = 0) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
-layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; };
+#include "motion_texels.glsl"
 layout(std430, binding = 2) buffer Placement { vec4 placement[]; };
 layout(std430, binding = 3) buffer Motion { vec4 motion[]; };
 layout(push_constant) uniform Push { RootMotionPush push; };
-
-vec3 rootOffset(u64vec2 words) {
-  return vec3(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y).x));
-}
 
 // Root position at an unwrapped frame index k ≥ 0 (k ≥ F continues into the next cycle).
 vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, int k) {
   int cycles = k / int(frames);
   int frame = k - cycles * int(frames);
   int texel = frame * 2 * kJointCount + 1;
-  return rootOffset(fast ? fastMotion[texel] : slowMotion[texel]) + float(cycles) * cycleTravel;
+  return (fast ? fastTexel(texel) : slowTexel(texel)).xyz + float(cycles) * cycleTravel;
 }
 
 void main() {

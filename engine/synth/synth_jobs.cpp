@@ -49,10 +49,17 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t 
   }
   return values;
 }
+// Specialization constants of root_motion.comp: [0] joint count (the texel row width), and
+// [582], [583] as for the pose pass (where the texels are read).
+std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity) {
+  std::vector<uint32_t> values = poseSpecialization(pair, uniformCapacity);
+  values[0] = uint32_t(pair.jointCount());
+  return values;
+}
 }  // namespace
 
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
-    : rootMotion(context, "root_motion.comp", std::vector<uint32_t>{uint32_t(pair.jointCount())}),
+    : rootMotion(context, "root_motion.comp", rootMotionSpecialization(pair, uniformTexelCapacity(context))),
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       poseMasked(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context), true)),
       cacheLookup(context, "cache_lookup.comp"),
@@ -119,9 +126,11 @@ std::vector<std::string> RootMotionJob::validate() const {
 
 void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("RootMotionJob", validate());
-  if (programs.poseParents.size() != motion->jointCount)  // the texel row width is baked in
-    fail("RootMotionJob: the programs were built for ", programs.poseParents.size(), " joints, the motion pair has ",
-         motion->jointCount);
+  if (programs.poseParents.size() != motion->jointCount ||  // the texel row width is baked in
+      programs.poseTexelsInUniform != motion->texelsInUniform)
+    fail("RootMotionJob: the programs were built for another motion pair (", programs.poseParents.size(),
+         " joints, texels in ", programs.poseTexelsInUniform ? "uniform" : "storage", " buffers) than this one (",
+         motion->jointCount, " joints, ", motion->texelsInUniform ? "uniform" : "storage", ")");
   RootMotionPush push{};
   push.characterCount = crowd->count;
   push.slowFrames = static_cast<uint32_t>(clips->slow.frameCount);
@@ -140,6 +149,8 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, motion->slowTexels),
       gpu::storageBinding(1, motion->fastTexels),
+      gpu::uniformBinding(12, motion->slowUniformTexels),
+      gpu::uniformBinding(13, motion->fastUniformTexels),
       gpu::storageBinding(2, crowd->placement),
       gpu::storageBinding(3, crowd->motion),
   };
