@@ -16,8 +16,9 @@ layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 // Offsets of joints whose offset never changes: (slow, fast) at (2j, 2j + 1). Read at a
 // constant index, so every lane shares one load instead of gathering per lane.
 layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
-layout(std430, binding = 3) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = 4) readonly buffer Motion { vec4 motion[]; };
+// Read as 64-bit words too (two per vec4, see motion_texels.glsl).
+layout(std430, binding = 3) readonly buffer Placement { u64vec2 placement[]; };
+layout(std430, binding = 4) readonly buffer Motion { u64vec2 motion[]; };
 // Written as 64-bit words: lavapipe stores a vector one component per lane at a time, so six
 // 64-bit components per joint cost half as much as twelve floats (the bytes are the same).
 layout(std430, binding = 5) writeonly buffer Joints { u64vec2 jointWords[]; };
@@ -32,7 +33,7 @@ void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
 layout(std430, binding = 7) readonly buffer CharacterList { uint characterList[]; };
 layout(std430, binding = 8) readonly buffer ListCounts { uint listCounts[]; };
 // Coverage LOD (the kUseMasks variant): the joints each character needs this frame.
-layout(std430, binding = 11) readonly buffer Masks { uvec4 masks[]; };
+layout(std430, binding = 11) readonly buffer Masks { u64vec2 masks[]; };  // the joint bits in .x
 layout(push_constant) uniform Push { PosePush push; };
 
 #include "pose_skeleton.glsl"
@@ -46,14 +47,14 @@ void main() {
     return;
   }
   uint i = push.firstCharacter + local;
-  vec4 place = placement[i];
-  vec4 m = motion[i];
+  vec4 place = texelOf(placement[i]);
+  vec4 m = texelOf(motion[i]);
   float phase = m.x, w = m.y, scale = m.w;
   int fs = int(frameAt(phase, push.slowFrames));
   int ff = int(frameAt(phase, push.fastFrames));
   uint base = local * uint(kJointCount);
   // Row starts of this frame in the motion textures (texel (x, f) is element f·2J + x).
-  uvec2 activeJoints = kUseMasks ? masks[i].xy : uvec2(0xFFFFFFFFu);
+  uvec2 activeJoints = kUseMasks ? unpackUint2x32(masks[i].x) : uvec2(0xFFFFFFFFu);
   composePose(base, fs * 2 * kJointCount, ff * 2 * kJointCount, w, yawQuat(place.w), place.xyz,
               scale, activeJoints);
 }
