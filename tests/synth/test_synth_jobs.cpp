@@ -107,6 +107,16 @@ TEST_CASE("GPU vs CPU twin: 1000 random characters on a synthetic pair, several 
   CHECK(worst.placement <= 1e-4f);
 }
 
+namespace {
+// GPU vs CPU twin on a random crowd of `characters` over `frames` frames at 30 fps.
+Comparison randomCrowdDifference(const anim::MotionPair& pair, uint32_t characters, uint64_t seed, int frames) {
+  crowd::ScenarioOptions options;
+  options.characters = characters;
+  options.seed = seed;
+  return compareGpuWithCpu(pair, crowd::makeScenario(options), frames, 1.0f / 30.0f);
+}
+}  // namespace
+
 TEST_CASE("fixed bones (offsets folded into the pose pass) and blended bones both match the CPU twin") {
   anim::MotionPair pair = test::syntheticPair(12, 20, 16, 9);
   auto setOffset = [](anim::MotionTexture& clip, int joint, glm::vec3 offset) {
@@ -122,11 +132,7 @@ TEST_CASE("fixed bones (offsets folded into the pose pass) and blended bones bot
   CHECK_FALSE(fixed[3]);
   CHECK(fixed[5]);
   CHECK(fixed[6]);
-  crowd::ScenarioOptions options;
-  options.characters = 500;
-  options.seed = 4;
-  Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 4, 1.0f / 30.0f);
-  CHECK(worst.joints <= 1e-4f);
+  CHECK(randomCrowdDifference(pair, 500, 4, 4).joints <= 1e-4f);
 }
 
 TEST_CASE("motion texels in uniform buffers (small clips on a CPU device) and in storage buffers agree with the twin") {
@@ -136,11 +142,7 @@ TEST_CASE("motion texels in uniform buffers (small clips on a CPU device) and in
     anim::MotionPair pair = test::syntheticPair(25, frames, frames - 4, 3);
     const bool inUniform = synth::texelsFitUniform(pair, capacity);
     if (test::gpuContext().info().isCpu()) CHECK(inUniform == (frames == 20));
-    crowd::ScenarioOptions options;
-    options.characters = 300;
-    options.seed = 8;
-    Comparison worst = compareGpuWithCpu(pair, crowd::makeScenario(options), 3, 1.0f / 30.0f);
-    CHECK(worst.joints <= 1e-4f);
+    CHECK(randomCrowdDifference(pair, 300, 8, 3).joints <= 1e-4f);
   }
 }
 
