@@ -10,6 +10,13 @@
 namespace throng::secondary {
 
 namespace {
+// The inputs of the passes that read the crowd and this frame's ClothView (mark, draw, splat).
+void checkCrowdAndView(std::vector<std::string>& problems, const crowd::CrowdBuffers* crowd,
+                       const gpu::Buffer* view) {
+  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
+  if (!view || !*view) problems.push_back("input 'view' (the frame's ClothView buffer) is missing");
+}
+
 void checkCommon(std::vector<std::string>& problems, const ClothGpuData* cloth,
                  const crowd::CrowdBuffers* crowd, const ClothCrowdBuffers* buffers) {
   if (!cloth) problems.push_back("input 'cloth' (the uploaded database) is missing");
@@ -53,8 +60,7 @@ void ClothAdvanceJob::record(VkCommandBuffer cmd, const ClothPrograms& programs)
 
 std::vector<std::string> ClothMarkJob::validate() const {
   std::vector<std::string> problems;
-  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
-  if (!view || !*view) problems.push_back("input 'view' (ClothView uniform buffer) is missing");
+  checkCrowdAndView(problems, crowd, view);
   checkCommon(problems, cloth, crowd, buffers);
   return problems;
 }
@@ -142,8 +148,7 @@ void ClothDecodeJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) 
 
 std::vector<std::string> ClothDrawJob::validate() const {
   std::vector<std::string> problems;
-  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
-  if (!view || !*view) problems.push_back("input 'view' (ClothView uniform buffer) is missing");
+  checkCrowdAndView(problems, crowd, view);
   checkCommon(problems, cloth, crowd, buffers);
   return problems;
 }
@@ -172,8 +177,7 @@ void ClothDrawJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) co
 
 std::vector<std::string> ClothSplatJob::validate() const {
   std::vector<std::string> problems;
-  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
-  if (!view || !*view) problems.push_back("input 'view' (ClothView uniform buffer) is missing");
+  checkCrowdAndView(problems, crowd, view);
   if (!visibility || !*visibility)
     problems.push_back("input/output 'visibility' buffer is missing");
   checkCommon(problems, cloth, crowd, buffers);
