@@ -14,6 +14,7 @@
 #include "gpu/commands.h"
 #include "gpu/timestamps.h"
 #include "stats.h"
+#include "synthesis_timer.h"
 #include "render/camera.h"
 #include "synth/cpu_synth.h"
 #include "synth/crowd_synth.h"
@@ -37,22 +38,11 @@ CacheRun runWithSpeedChanges(const gpu::Context& context, const synth::SynthProg
     for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache);
   synth::SpeedSchedule schedule{o.speedPeriod, 7, 0.0f, 1.0f, cache.enabled ? cache.bucketWidth : 0.0f};
-  gpu::CommandPool pool(context);
-  VkCommandBuffer cmd = pool.allocate();
-  gpu::Fence fence(context);
-  gpu::TimestampPool timestamps(context, 2);
+  SynthesisTimer timer(context);
   std::vector<double> ms;
   for (int f = 0; f < o.frames; ++f) {
-    timestamps.reset();
-    gpu::beginCommands(cmd);
-    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-    synth::recordSynthesis(cmd, programs, synth, o.dt, context.info().maxStorageBufferRange, schedule.advance(o.dt));
-    timestamps.write(cmd);
-    gpu::endCommands(cmd);
-    gpu::submit(context, cmd, fence.get());
-    fence.wait();
-    fence.reset();
-    if (f >= 2) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
+    double frameMs = timer.frame(programs, synth, o.dt, schedule.advance(o.dt));
+    if (f >= 2) ms.push_back(frameMs);
   }
   return {median(ms), synth::readCacheStats(synth.cache)};
 }
@@ -110,10 +100,7 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
       cpuMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     }
     const float extent = crowd::scenarioExtent(scenario);
-    gpu::CommandPool pool(context);
-    VkCommandBuffer cmd = pool.allocate();
-    gpu::Fence fence(context);
-    gpu::TimestampPool timestamps(context, 2);
+    SynthesisTimer timer(context);
     // Each variant runs the same orbit on its own synthesis, one at a time, so that a million
     // characters need one joint buffer of device memory, not three.
     auto timeVariant = [&](const synth::CrowdSynth& synth, bool lodOn) {
@@ -127,17 +114,8 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
         camera.eye = camera.target + glm::vec3(radius * std::sin(angle), offset.y, -radius * std::cos(angle));
         synth::CoverageCamera lodCamera =
             synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane);
-        timestamps.reset();
-        gpu::beginCommands(cmd);
-        timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-        synth::recordSynthesis(cmd, programs, synth, 1.0f / 30.0f, context.info().maxStorageBufferRange, {},
-                               lodOn ? &lodCamera : nullptr);
-        timestamps.write(cmd);
-        gpu::endCommands(cmd);
-        gpu::submit(context, cmd, fence.get());
-        fence.wait();
-        fence.reset();
-        if (f >= 2) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
+        double frameMs = timer.frame(programs, synth, 1.0f / 30.0f, {}, lodOn ? &lodCamera : nullptr);
+        if (f >= 2) ms.push_back(frameMs);
       }
       return ms;
     };

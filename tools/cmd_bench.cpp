@@ -19,6 +19,7 @@
 #include "render/offscreen_target.h"
 #include "scene_options.h"
 #include "stats.h"
+#include "synthesis_timer.h"
 #include "synth/cpu_synth.h"
 #include "bench_cloth.h"
 #include "bench_experiments.h"
@@ -72,23 +73,11 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   scenario.characters = n;
   render::Camera view = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
   synth::CoverageCamera camera = synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
-  gpu::CommandPool pool(context);
-  VkCommandBuffer cmd = pool.allocate();
-  gpu::Fence fence(context);
-  gpu::TimestampPool timestamps(context, 2);
+  SynthesisTimer timer(context);
   std::vector<double> ms;
   for (int f = 0; f < o.warmup + o.frames; ++f) {
-    timestamps.reset();
-    gpu::beginCommands(cmd);
-    timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-    synth::recordSynthesis(cmd, programs, synth, kDt, context.info().maxStorageBufferRange, {},
-                           variant == Variant::Full ? nullptr : &camera);
-    timestamps.write(cmd);
-    gpu::endCommands(cmd);
-    gpu::submit(context, cmd, fence.get());
-    fence.wait();
-    fence.reset();
-    if (f >= o.warmup) ms.push_back(timestamps.millisecondsBetween(timestamps.fetch(), 0, 1));
+    double frameMs = timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
+    if (f >= o.warmup) ms.push_back(frameMs);
   }
   const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache"};
   if (cache.enabled && synth::readCacheStats(synth.cache).bytesUsed > cache.budgetBytes)

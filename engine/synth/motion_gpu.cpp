@@ -64,9 +64,9 @@ GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPa
   gpuPair.jointRadius = gpu::makeStorageBuffer<float>(context, pair.jointRadius);
   gpuPair.slowTexels = gpu::makeStorageBuffer<glm::vec4>(context, pair.slow.texels);
   gpuPair.fastTexels = gpu::makeStorageBuffer<glm::vec4>(context, pair.fast.texels);
-  gpuPair.uniformTexelCapacity = uniformTexelCapacity(context);
-  gpuPair.texelsInUniform = texelsFitUniform(pair, gpuPair.uniformTexelCapacity);
-  const uint32_t slots = gpuPair.texelsInUniform ? gpuPair.uniformTexelCapacity : 1u;
+  const uint32_t capacity = uniformTexelCapacity(context);
+  gpuPair.texelsInUniform = texelsFitUniform(pair, capacity);
+  const uint32_t slots = gpuPair.texelsInUniform ? capacity : 1u;
   gpuPair.slowUniformTexels = uniformTexels(context, pair.slow.texels, slots);
   gpuPair.fastUniformTexels = uniformTexels(context, pair.fast.texels, slots);
   gpuPair.sampler = gpu::makeNearestSampler(context);

@@ -30,11 +30,10 @@ struct GpuMotionPair {
   // several times cheaper than texelFetch (see README, benchmarks).
   gpu::Buffer slowTexels;
   gpu::Buffer fastTexels;
-  // The same again as uniform buffers padded to uniformTexelCapacity texels when
+  // The same again as uniform buffers padded to uniformTexelCapacity(context) texels when
   // texelsInUniform, else 16-byte placeholders (the shaders declare both).
   gpu::Buffer slowUniformTexels;
   gpu::Buffer fastUniformTexels;
-  uint32_t uniformTexelCapacity = 0;
   bool texelsInUniform = false;
   gpu::Handle<VkSampler> sampler;
   uint32_t jointCount = 0;

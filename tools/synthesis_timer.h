@@ -1,0 +1,27 @@
+#pragma once
+// One synthesis frame recorded, submitted and timed with GPU timestamps: the loop body that the
+// bench rows and the paper's experiments share.
+#include "anim/reference_synth.h"
+#include "gpu/commands.h"
+#include "gpu/timestamps.h"
+#include "synth/crowd_synth.h"
+
+namespace throng::tools {
+
+class SynthesisTimer {
+ public:
+  explicit SynthesisTimer(const gpu::Context& context);
+
+  // Runs recordSynthesis once and waits for it; returns its GPU milliseconds.
+  double frame(const synth::SynthPrograms& programs, const synth::CrowdSynth& synth, float dt,
+               const anim::SpeedRetarget& retarget = {}, const synth::CoverageCamera* lodCamera = nullptr);
+
+ private:
+  const gpu::Context& context_;
+  gpu::CommandPool pool_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  gpu::Fence fence_;
+  gpu::TimestampPool timestamps_;
+};
+
+}  // namespace throng::tools
