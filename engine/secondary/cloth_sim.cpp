@@ -190,10 +190,10 @@ void validateClothSimOptions(const ClothSimOptions& o) {
     fail("cloth: substeps must be in [1, 1000], got ", o.substeps);
   if (o.iterations == 0 || o.iterations > 100)
     fail("cloth: iterations must be in [1, 100], got ", o.iterations);
-  if (o.drag < 0.0f || !(o.areaDensity > 0.0f) || o.stretchCompliance < 0.0f ||
+  if (o.drag < 0.0f || o.internalDamping < 0.0f || !(o.areaDensity > 0.0f) || o.stretchCompliance < 0.0f ||
       o.bendCompliance < 0.0f || o.thickness < 0.0f || o.attachmentSlack < 1.0f)
     fail(
-        "cloth: drag, compliances and thickness must be ≥ 0, density > 0 and attachment slack ≥ 1");
+        "cloth: drag, internal damping, compliances and thickness must be ≥ 0, density > 0 and attachment slack ≥ 1");
 }
 
 std::vector<float> vertexMasses(const ClothMesh& mesh, float areaDensity) {
@@ -276,6 +276,7 @@ ClothState stepCloth(const ClothModel& model, const ClothState& from, uint32_t f
   const float h = graph.frameTime / float(o.substeps);
   const float dragFactor = std::exp(-o.drag * h);
   const float radiusPad = o.thickness;
+  const float internalFraction = 1.0f - std::exp(-o.internalDamping * h);
 
   for (uint32_t sub = 1; sub <= o.substeps; ++sub) {
     const float t = float(sub) / float(o.substeps);
@@ -330,6 +331,15 @@ ClothState stepCloth(const ClothModel& model, const ClothState& from, uint32_t f
     const float inverseStep = 1.0f / h;
     for (uint32_t i = 0; i < n; ++i)
       if (model.invMass[i] != 0.0f) v[i] = (x[i] - previous[i]) * inverseStep;
+    // Internal damping: every constraint's pair of vertices loses that share of its relative
+    // velocity (momentum-conserving, Gauss–Seidel from the pins outwards), so flutter dies out
+    // while the motion of the cape as a whole, and its drag against the air, stay.
+    if (internalFraction > 0.0f)
+      for (const ClothModel::Constraint& con : model.constraints) {
+        const glm::vec3 dv = (v[con.j] - v[con.i]) * (internalFraction / (con.wi + con.wj));
+        v[con.i] += con.wi * dv;
+        v[con.j] -= con.wj * dv;
+      }
   }
   for (uint32_t k = 0; k < pins; ++k)
     v[pinned[k]] = (pins1[k] + shift - pins0[k]) / graph.frameTime;

@@ -3,7 +3,7 @@
 // small substeps ("Small Steps in Physics Simulation", 2019). Stretch constraints on the mesh
 // edges (grid edges and diagonals), bending constraints between the two vertices facing each
 // other across every inner edge, long-range attachments to the pinned vertices, gravity, air
-// drag, capsules on the bones and the ground.
+// drag, internal damping, capsules on the bones and the ground.
 //
 // State: positions in the character space of the state's primary node (root above the origin,
 // facing +z); velocities relative to the ground (still air), in the same axes. One frame along
@@ -28,6 +28,10 @@ struct ClothSimOptions {
   uint32_t iterations = 1;  // constraint sweeps per substep
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};
   float drag = 1.0f;               // 1/s: velocity against still air decays as exp(−drag · t)
+  // 1/s, the cloth's own friction (0: none): each substep h, every constraint takes
+  // 1 − exp(−internalDamping · h) of its two vertices' relative velocity away. Flutter dies out,
+  // so explored states stay close enough to compress well (on the cape: max error 35 → 6 mm).
+  float internalDamping = 0.0f;
   float areaDensity = 0.25f;       // kg/m² (lumped to vertices by triangle area)
   float stretchCompliance = 0.0f;  // m/N, mesh edges
   float bendCompliance = 0.05f;    // m/N, vertex pairs across inner edges

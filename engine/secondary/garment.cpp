@@ -46,6 +46,8 @@ ClothSimOptions capeSimOptions(const json& c) {
   ClothSimOptions o;
   o.substeps = field<uint32_t>(k, "substeps", "cape");
   o.iterations = field<uint32_t>(k, "iterations", "cape");
+  o.internalDamping = field<float>(k, "internal_damping", "cape");
+  requireRange(o.internalDamping, 0, 10000, "cape.internal_damping");
   validateClothSimOptions(o);
   return o;
 }
@@ -93,7 +95,8 @@ json defaultGarmentConfig(const std::string& name) {
     c["toy"] = {{"links", 6}, {"link_length", 0.08}, {"substeps", 4}, {"drag", 10.0}};
   } else if (name == "cape") {
     c["cape"] = {{"columns", 32},  {"rows", 48},      {"bucket_width", 0.05},
-                 {"substeps", 10}, {"iterations", 1}, {"settle_frames", 60}};
+                 {"substeps", 10}, {"iterations", 1}, {"settle_frames", 60},
+                 {"internal_damping", 150.0}};
   } else {
     fail("garment '", name, "': expected cape or toy");
   }
@@ -141,7 +144,12 @@ Garment buildGarment(const json& config) {
 }
 
 Garment restoreGarment(const json& config, PrimaryGraph primary, ClothMesh mesh) {
-  return finish(completeGarmentConfig(config),
+  json stored = config;
+  // Graphs explored before the cape had internal damping resume without it.
+  if (stored.is_object() && stored.contains("cape") && stored["cape"].is_object() &&
+      !stored["cape"].contains("internal_damping"))
+    stored["cape"]["internal_damping"] = 0.0;
+  return finish(completeGarmentConfig(stored),
                 std::make_shared<const PrimaryGraph>(std::move(primary)),
                 std::make_shared<const ClothMesh>(std::move(mesh)));
 }

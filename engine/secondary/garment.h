@@ -7,7 +7,7 @@
 //   {"name": "cape", "seed": 1, "initial_node": 0, "velocity_jitter": 0.01, "shoulder_weight":
 //   0.05,
 //    "cape": {"columns": 32, "rows": 48, "bucket_width": 0.05, "substeps": 10, "iterations": 1,
-//             "settle_frames": 60},
+//             "settle_frames": 60, "internal_damping": 150},
 //    "toy": {"links": 6, "link_length": 0.08, "substeps": 4, "drag": 10}}
 #include <memory>
 #include <string>

@@ -101,6 +101,50 @@ TEST_CASE("a square cloth pinned along one edge swings down and settles hanging 
     CHECK(std::abs(state.positions[i].z) < 0.02f * size);
 }
 
+TEST_CASE("internal damping stills the swing of a cloth but not its motion as a whole") {
+  const auto graph = test::standingGraph();
+  const auto square = std::make_shared<const ClothMesh>(makeSquareCloth(16, 0.6f));
+  const std::vector<float> mass = vertexMasses(*square, 0.25f);
+  auto swingAfter = [&](float damping, uint32_t frames) {
+    ClothSimOptions options;
+    options.ground = false;
+    options.internalDamping = damping;
+    const StepFunction step = makeClothStepFunction(graph, square, options);
+    ClothState state = restState(*square, *graph, 0);
+    walk(step, *graph, state, 0, frames, [](const ClothState&, uint32_t) {});
+    return energies(state, mass).kinetic;
+  };
+  // Half a second into the fall from horizontal, the damped cloth swings slower, and after two
+  // seconds it is far closer to rest.
+  const double free05 = swingAfter(0.0f, 15), damped05 = swingAfter(150.0f, 15);
+  const double free2 = swingAfter(0.0f, 60), damped2 = swingAfter(150.0f, 60);
+  MESSAGE("kinetic energy at 0.5 s: ", free05, " J undamped, ", damped05, " J damped; at 2 s: ",
+          free2, " J, ", damped2, " J");
+  CHECK(damped05 < 0.9 * free05);
+  CHECK(damped2 < 0.2 * free2);
+
+  // A free cloth moving as one body keeps its velocity exactly: damping acts on relative
+  // velocity only.
+  ClothMesh loose = *square;
+  loose.pinnedVertices.clear();
+  loose.pinJoints.clear();
+  loose.pinOffsets.clear();
+  ClothSimOptions options;
+  options.ground = false;
+  options.gravity = glm::vec3(0.0f);
+  options.drag = 0.0f;
+  options.longRangeAttachments = false;
+  options.internalDamping = 1000.0f;
+  const StepFunction step = makeClothStepFunction(graph, std::make_shared<const ClothMesh>(loose), options);
+  ClothState state = restState(loose, *graph, 0);
+  for (glm::vec3& p : state.positions) p += glm::vec3(0.0f, 3.0f, 0.0f);  // clear of the body
+  for (glm::vec3& v : state.velocities) v = glm::vec3(0.3f, 0.1f, -0.2f);
+  walk(step, *graph, state, 0, 10, [](const ClothState&, uint32_t) {});
+  for (const glm::vec3& v : state.velocities) CHECK(glm::length(v - glm::vec3(0.3f, 0.1f, -0.2f)) < 1e-4f);
+
+  CHECK_THROWS_AS(makeClothStepFunction(graph, square, ClothSimOptions{.internalDamping = -1.0f}), Error);
+}
+
 TEST_CASE("no cloth vertex ends a step inside a body capsule while running and changing speed") {
   const auto graph = test::defaultRunGraph();
   const auto cape = defaultCape();
