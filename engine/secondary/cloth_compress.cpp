@@ -231,6 +231,8 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   auto keepBases = [&](uint32_t count) {
     db.bases.assign(quantized.begin(), quantized.begin() + count);
     db.coefficientSteps.assign(steps.begin(), steps.begin() + count);
+    // The file also holds the report's singular values: counted in the ratio from the start.
+    db.report.singularValues.assign(svd.singularValues.data(), svd.singularValues.data() + count);
     db.coefficients.resize(size_t(S) * count);
     for (uint32_t s = 0; s < S; ++s)
       for (uint32_t i = 0; i < count; ++i)
