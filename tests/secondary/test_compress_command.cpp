@@ -60,7 +60,7 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
                       " --min-ratio 0 --json --quiet");
   REQUIRE(r.exitCode == 0);
   CHECK(nlohmann::json::parse(r.output)["bases"].get<int>() > report["bases"].get<int>());
-  CHECK(report["coefficient_quantum_m"].get<double>() == doctest::Approx(0.001));
+  CHECK(report["coefficient_quantum_m"].get<double>() == doctest::Approx(0.0003));
 }
 
 TEST_CASE("cloth compress: bad input and options fail clearly and write nothing") {
