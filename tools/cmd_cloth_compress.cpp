@@ -37,6 +37,8 @@ struct CompressArgs {
   // 5.9 mm with coefficient steps of 1 / 0.5 / 0.3 / 0.2 mm (825 / 715 / 590 / 456 bases).
   float coefficientQuantum = 0.0003f;
   double minRatio = 100.0;  // the goal: the error target picks fewer bases when it can
+  uint32_t reweightPasses = 1;  // a second pass over-corrects (measured on the damped cape)
+  uint32_t refineSteps = 4096;  // per state; the damped cape needs ≈ 2–3 on average
   uint32_t powerIterations = 1;
   uint64_t seed = 1;
   unsigned threads = 0;
@@ -64,6 +66,10 @@ json reportJson(const sec::ClothDatabase& db, const std::string& in, const std::
   j["input"] = in;
   j["output"] = out;
   j["seconds"] = seconds;
+  const sec::CompressionReport& r = db.report;
+  j["refine"] = {{"states_above_target", r.statesAboveTarget},
+                 {"states_refined", r.statesRefined},
+                 {"steps", r.refineSteps}};
   return j;
 }
 
@@ -76,6 +82,7 @@ void runCompress(const CompressArgs& a) {
     fail("--coefficient-quantum ", a.coefficientQuantum, ": expected metres in [0, 1)");
   if (!(a.minRatio >= 0.0)) fail("--min-ratio ", a.minRatio, ": expected ≥ 0 (0: no size cap)");
   if (a.maxBases < 1 || a.maxBases > 4096) fail("--max-bases ", a.maxBases, ": expected 1..4096");
+  if (a.reweightPasses > 8) fail("--reweight-passes ", a.reweightPasses, ": expected 0..8");
   if (a.bases > 4096) fail("--bases ", a.bases, ": expected 0 (by error) or 1..4096");
   if (a.bucketWidth && !(*a.bucketWidth > 0.0f && *a.bucketWidth <= 1.0f))
     fail("--bucket-width ", *a.bucketWidth, ": expected (0, 1]");
@@ -105,6 +112,8 @@ void runCompress(const CompressArgs& a) {
   options.quantum = a.quantum;
   options.coefficientQuantum = a.coefficientQuantum;
   options.minRatio = a.minRatio;
+  options.reweightPasses = a.reweightPasses;
+  options.refineSteps = a.targetError > 0.0f ? a.refineSteps : 0;
   options.powerIterations = a.powerIterations;
   options.seed = a.seed;
   options.threads = a.threads;
@@ -134,6 +143,10 @@ void runCompress(const CompressArgs& a) {
       "%.0f µm), mean %.3f mm; %.1f s\n",
       1000.0 * r.maxError, 1000.0 * r.maxErrorBeforeQuantization, 1e6 * r.quantum,
       1e6 * r.coefficientQuantum, 1000.0 * r.meanError, seconds);
+  if (r.statesAboveTarget)
+    std::printf("  %u states above %.3f mm after quantization: %u refined by %llu coefficient steps\n",
+                r.statesAboveTarget, 1000.0 * r.targetError, r.statesRefined,
+                static_cast<unsigned long long>(r.refineSteps));
 }
 
 CLI::App* clothCommand(CLI::App& app) {
@@ -155,7 +168,14 @@ void addClothCompressCommand(CLI::App& app, int& /*exitCode*/) {
   cmd->add_option("--bases", a->bases,
                   "Number of bases (default: the fewest meeting --target-error)");
   cmd->add_option("--target-error", a->targetError,
-                  "Largest vertex error (m) before quantization that picks the basis count")
+                  "Largest vertex error (m): picks the basis count, and the reweighting and the "
+                  "coefficient refinement aim at it")
+      ->capture_default_str();
+  cmd->add_option("--reweight-passes", a->reweightPasses,
+                  "SVD passes reweighted towards the worst states when the bases miss the target")
+      ->capture_default_str();
+  cmd->add_option("--refine-steps", a->refineSteps,
+                  "Coefficient steps per state chosen for its largest error (0: none)")
       ->capture_default_str();
   cmd->add_option("--max-bases", a->maxBases, "Cap on the basis count chosen by error")
       ->capture_default_str();

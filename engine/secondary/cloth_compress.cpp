@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "secondary/cloth_decoder.h"
+#include "secondary/cloth_refine.h"
 #include "secondary/cloth_svd.h"
 
 namespace throng::secondary {
@@ -72,6 +73,39 @@ float maxErrorWithBases(const ColumnSource& centered, const TruncatedSvd& svd, u
   return largest;
 }
 
+// One pass of iteratively reweighted least squares towards the largest error: each state's
+// column is weighted by its largest vertex error under `svd` over the mean of those errors
+// (clamped to [1/4, 16]), the weighted frames get a new SVD of the same rank, and the unweighted
+// frames are projected on its bases. The bases then spend more of their rank on the states
+// worst served, so the largest error falls (on the damped cape: 4.6 → 2.0 mm at 589 bases) while
+// the mean barely moves. A second pass over-corrects (measured), so one is the default.
+TruncatedSvd reweightedSvd(const ColumnSource& centered, const TruncatedSvd& svd,
+                           const SvdOptions& options) {
+  const Eigen::Index rank = std::min<Eigen::Index>(options.rank, svd.bases.cols());
+  std::vector<float> error(centered.cols, 0.0f);
+  forEachColumnBlock(centered, options.threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
+    const Eigen::MatrixXf residual =
+        block - svd.bases.leftCols(rank) * svd.coefficients.block(0, first, rank, block.cols());
+    for (Eigen::Index j = 0; j < residual.cols(); ++j)
+      error[first + uint32_t(j)] = maxVertexNorm(residual.col(j));
+  });
+  double mean = 0.0;
+  for (float e : error) mean += e;
+  mean = mean > 0.0 ? mean / double(error.size()) : 1.0;
+  std::vector<float> weight(error.size());
+  for (size_t j = 0; j < error.size(); ++j) weight[j] = std::clamp(float(error[j] / mean), 0.25f, 16.0f);
+  ColumnSource weighted = centered;
+  weighted.read = [&centered, &weight](uint32_t first, Eigen::MatrixXf& block) {
+    centered.read(first, block);
+    for (Eigen::Index j = 0; j < block.cols(); ++j) block.col(j) *= weight[first + uint32_t(j)];
+  };
+  TruncatedSvd next = randomizedSvd(weighted, options);
+  forEachColumnBlock(centered, options.threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
+    next.coefficients.middleCols(first, block.cols()) = next.bases.transpose() * block;
+  });
+  return next;
+}
+
 void validateOptions(const CompressOptions& o) {
   if (!(o.quantum > 0.0f && o.quantum < 1.0f)) fail("quantum ", o.quantum, " m: expected (0, 1)");
   if (!(o.coefficientQuantum >= 0.0f && o.coefficientQuantum < 1.0f))
@@ -81,6 +115,9 @@ void validateOptions(const CompressOptions& o) {
     fail("target error ", o.targetError, " m: expected > 0");
   if (o.maxBases == 0 || o.maxBases > 4096) fail("max bases ", o.maxBases, ": expected 1..4096");
   if (o.bases > 4096) fail("bases ", o.bases, ": expected 1..4096");
+  if (o.reweightPasses > 8) fail("reweight passes ", o.reweightPasses, ": expected 0..8");
+  if (o.refineSteps > 0 && !(o.targetError > 0.0f))
+    fail("refining coefficients needs a target error > 0, got ", o.targetError, " m");
 }
 }  // namespace
 
@@ -215,13 +252,18 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   std::vector<QuantizedBasis> quantized;
   std::vector<uint16_t> steps;
   std::vector<float> scales;
-  for (uint32_t i = 0; i < available; ++i) {
-    float m = svd.coefficients.row(i).cwiseAbs().maxCoeff();
-    scales.push_back(m > 0.0f ? m : 1.0f);  // an all-zero row keeps its unit basis
-    std::span<const float> unit(svd.bases.col(i).data(), size_t(svd.bases.rows()));
-    quantized.push_back(quantizeBasis(unit, scales[i], options.quantum));
-    steps.push_back(coefficientStepFor(quantized.back(), options.coefficientQuantum));
-  }
+  auto quantizeAll = [&] {
+    quantized.clear();
+    steps.clear();
+    scales.clear();
+    for (uint32_t i = 0; i < uint32_t(svd.bases.cols()); ++i) {
+      float m = svd.coefficients.row(i).cwiseAbs().maxCoeff();
+      scales.push_back(m > 0.0f ? m : 1.0f);  // an all-zero row keeps its unit basis
+      std::span<const float> unit(svd.bases.col(i).data(), size_t(svd.bases.rows()));
+      quantized.push_back(quantizeBasis(unit, scales[i], options.quantum));
+      steps.push_back(coefficientStepFor(quantized.back(), options.coefficientQuantum));
+    }
+  };
   ClothDatabase db;
   db.vertexCount = frames.vertexCount;
   db.triangles = std::move(triangles);
@@ -244,20 +286,43 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
     keepBases(count);
     return double(rawBytes) / double(encodeClothDatabase(db).size());
   };
-  if (options.bases == 0 && options.minRatio > 0.0 && ratioWith(b) < options.minRatio) {
-    // Stored bytes grow with b: bisect for the most bases keeping the ratio (at least one).
+  // Stored bytes grow with b: bisect for the most bases keeping the ratio (at least one).
+  auto fitRatio = [&] {
+    // Refining moves a few coefficients off their rounding and costs ≈ 0.1% more bytes: fit
+    // with a margin for it.
+    const double wanted = options.minRatio * (options.refineSteps > 0 ? 1.003 : 1.0);
+    if (options.bases != 0 || !(options.minRatio > 0.0) || ratioWith(b) >= wanted) return;
     uint32_t lo = 1, hi = b - 1;
     while (lo < hi) {
       uint32_t mid = (lo + hi + 1) / 2;
-      if (ratioWith(mid) >= options.minRatio)
+      if (ratioWith(mid) >= wanted)
         lo = mid;
       else
         hi = mid - 1;
     }
     b = lo;
     errorBefore = maxErrorWithBases(centered, svd, b, threads);
+  };
+  quantizeAll();
+  fitRatio();
+  if (options.reweightPasses > 0 && errorBefore > options.targetError) {
+    stage("reweight");
+    svdOptions.rank = b;
+    for (uint32_t pass = 0; pass < options.reweightPasses; ++pass)
+      svd = reweightedSvd(centered, svd, svdOptions);
+    errorBefore = maxErrorWithBases(centered, svd, b, threads);
+    quantizeAll();
+    fitRatio();  // the reweighted coefficients may take more bytes
   }
   keepBases(b);
+  if (options.refineSteps > 0) {
+    stage("refine");
+    const RefineReport refined =
+        refineCoefficients(frames, db, options.targetError, options.refineSteps, threads);
+    db.report.statesAboveTarget = refined.statesAboveTarget;
+    db.report.statesRefined = refined.statesRefined;
+    db.report.refineSteps = refined.steps;
+  }
   validateDatabase(db, "compressed cloth");
 
   stage("error");

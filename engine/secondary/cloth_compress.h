@@ -38,6 +38,12 @@ struct CompressOptions {
   // > 0 and bases == 0: at most the bases that keep raw / stored bytes at least this (the file's
   // bytes, as reported); the error target still picks fewer when it can.
   double minRatio = 0.0;
+  // When the bases miss targetError: passes of reweighting towards the worst states
+  // (reweightedSvd in cloth_compress.cpp; `cloth compress` passes 1).
+  uint32_t reweightPasses = 0;
+  // > 0: states still above targetError after quantization get up to this many coefficient steps
+  // chosen for their largest error (cloth_refine.h; `cloth compress` passes 4096).
+  uint32_t refineSteps = 0;
   uint32_t oversampling = 10;
   uint32_t powerIterations = 1;
   uint64_t seed = 1;

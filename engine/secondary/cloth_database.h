@@ -69,6 +69,10 @@ struct CompressionReport {
   float maxError = 0.0f;                    // metres, after quantization
   float meanError = 0.0f;                   // metres, mean per-vertex distance after quantization
   std::vector<float> singularValues;        // of the first bases (decreasing)
+  // Coefficient refinement (compression only, not stored): states above the target after
+  // quantization, states changed, steps taken.
+  uint32_t statesAboveTarget = 0, statesRefined = 0;
+  uint64_t refineSteps = 0;
   double ratio() const { return storedBytes ? double(rawBytes) / double(storedBytes) : 0.0; }
 };
 
