@@ -36,7 +36,7 @@ struct CompressArgs {
   // 0.3 mm: measured at 100:1 on the 22,968-frame damped cape, the max error is 8.9 / 6.6 / 5.6 /
   // 5.9 mm with coefficient steps of 1 / 0.5 / 0.3 / 0.2 mm (825 / 715 / 590 / 456 bases).
   float coefficientQuantum = 0.0003f;
-  double minRatio = 100.0;  // the goal: the error target picks fewer bases when it can
+  double minRatio = 100.0;      // the goal: the error target picks fewer bases when it can
   uint32_t reweightPasses = 1;  // a second pass over-corrects (measured on the damped cape)
   uint32_t refineSteps = 4096;  // per state; the damped cape needs ≈ 2–3 on average
   uint32_t powerIterations = 1;
@@ -144,9 +144,10 @@ void runCompress(const CompressArgs& a) {
       1000.0 * r.maxError, 1000.0 * r.maxErrorBeforeQuantization, 1e6 * r.quantum,
       1e6 * r.coefficientQuantum, 1000.0 * r.meanError, seconds);
   if (r.statesAboveTarget)
-    std::printf("  %u states above %.3f mm after quantization: %u refined by %llu coefficient steps\n",
-                r.statesAboveTarget, 1000.0 * r.targetError, r.statesRefined,
-                static_cast<unsigned long long>(r.refineSteps));
+    std::printf(
+        "  %u states above %.3f mm after quantization: %u refined by %llu coefficient steps\n",
+        r.statesAboveTarget, 1000.0 * r.targetError, r.statesRefined,
+        static_cast<unsigned long long>(r.refineSteps));
 }
 
 CLI::App* clothCommand(CLI::App& app) {

@@ -93,7 +93,8 @@ TruncatedSvd reweightedSvd(const ColumnSource& centered, const TruncatedSvd& svd
   for (float e : error) mean += e;
   mean = mean > 0.0 ? mean / double(error.size()) : 1.0;
   std::vector<float> weight(error.size());
-  for (size_t j = 0; j < error.size(); ++j) weight[j] = std::clamp(float(error[j] / mean), 0.25f, 16.0f);
+  for (size_t j = 0; j < error.size(); ++j)
+    weight[j] = std::clamp(float(error[j] / mean), 0.25f, 16.0f);
   ColumnSource weighted = centered;
   weighted.read = [&centered, &weight](uint32_t first, Eigen::MatrixXf& block) {
     centered.read(first, block);
@@ -147,8 +148,8 @@ uint16_t coefficientStepFor(const QuantizedBasis& basis, float coefficientQuantu
   if (!(coefficientQuantum > 0.0f)) return 1;
   float largest = 0.0f;
   for (size_t r = 0; r + 2 < basis.values.size(); r += 3)
-    largest = std::max(largest, glm::length(glm::vec3(basis.value(r), basis.value(r + 1),
-                                                      basis.value(r + 2))));
+    largest = std::max(
+        largest, glm::length(glm::vec3(basis.value(r), basis.value(r + 1), basis.value(r + 2))));
   if (!(largest > 0.0f)) return 1;
   const double step = std::floor(double(coefficientQuantum) * kCoefficientScale / largest);
   return uint16_t(std::clamp(step, 1.0, double(kCoefficientScale)));

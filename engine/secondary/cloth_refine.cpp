@@ -11,8 +11,6 @@
 namespace throng::secondary {
 namespace {
 
-constexpr uint32_t kCandidates = 4096; // bases tried per step, best first
-
 struct Candidate {
   uint32_t basis;
   int sign;
@@ -58,11 +56,12 @@ uint64_t refineState(const DecodedBases& d, ClothDatabase& db, uint32_t state,
       const float toward = glm::dot(residual[worst], move);
       candidates[i] = {i, toward >= 0.0f ? 1 : -1, std::abs(toward) - 0.5f * glm::dot(move, move)};
     }
-    std::partial_sort(candidates.begin(), candidates.begin() + std::min<uint32_t>(kCandidates, b),
-                      candidates.end(),
-                      [](const Candidate& x, const Candidate& y) { return x.gain > y.gain; });
+    // Every basis is a candidate, best first: on the damped cape trying only the best 8 or 64
+    // left 2.81 or 2.11 mm where all of them reach 1.96 mm.
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& x, const Candidate& y) { return x.gain > y.gain; });
     bool stepped = false;
-    for (uint32_t k = 0; k < std::min<uint32_t>(kCandidates, b) && candidates[k].gain > 0.0f; ++k) {
+    for (uint32_t k = 0; k < b && candidates[k].gain > 0.0f; ++k) {
       const Candidate& c = candidates[k];
       int16_t& q = db.coefficients[size_t(state) * b + c.basis];
       const int32_t step = db.coefficientSteps[c.basis];

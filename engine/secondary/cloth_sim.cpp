@@ -125,7 +125,8 @@ void buildConstraints(ClothModel& model) {
   }
   auto add = [&](uint32_t i, uint32_t j, float compliance) {
     if (model.invMass[i] + model.invMass[j] == 0.0f) return;  // both pinned: nothing to solve
-    model.constraints.push_back({i, j, glm::length(rest[i] - rest[j]), compliance, 0.0f, 0.0f, 0.0f, 0.0f});
+    model.constraints.push_back(
+        {i, j, glm::length(rest[i] - rest[j]), compliance, 0.0f, 0.0f, 0.0f, 0.0f});
   };
   for (const auto& [edge, opposite] : edges)
     add(edge.first, edge.second, model.options.stretchCompliance);
@@ -154,8 +155,8 @@ struct Box {
 
 // One Gauss–Seidel sweep of XPBD distance constraints (Macklin et al. 2016, eq. 18).
 template <bool kAccumulated>
-void solveDistances(const std::vector<ClothModel::Constraint>& constraints, std::vector<glm::vec3>& x,
-                    std::vector<float>& lambda) {
+void solveDistances(const std::vector<ClothModel::Constraint>& constraints,
+                    std::vector<glm::vec3>& x, std::vector<float>& lambda) {
   for (size_t c = 0; c < constraints.size(); ++c) {
     const ClothModel::Constraint& con = constraints[c];
     const glm::vec3 d = x[con.i] - x[con.j];
@@ -190,10 +191,12 @@ void validateClothSimOptions(const ClothSimOptions& o) {
     fail("cloth: substeps must be in [1, 1000], got ", o.substeps);
   if (o.iterations == 0 || o.iterations > 100)
     fail("cloth: iterations must be in [1, 100], got ", o.iterations);
-  if (o.drag < 0.0f || o.internalDamping < 0.0f || !(o.areaDensity > 0.0f) || o.stretchCompliance < 0.0f ||
-      o.bendCompliance < 0.0f || o.thickness < 0.0f || o.attachmentSlack < 1.0f)
+  if (o.drag < 0.0f || o.internalDamping < 0.0f || !(o.areaDensity > 0.0f) ||
+      o.stretchCompliance < 0.0f || o.bendCompliance < 0.0f || o.thickness < 0.0f ||
+      o.attachmentSlack < 1.0f)
     fail(
-        "cloth: drag, internal damping, compliances and thickness must be ≥ 0, density > 0 and attachment slack ≥ 1");
+        "cloth: drag, internal damping, compliances and thickness must be ≥ 0, density > 0 and "
+        "attachment slack ≥ 1");
 }
 
 std::vector<float> vertexMasses(const ClothMesh& mesh, float areaDensity) {

@@ -94,9 +94,9 @@ json defaultGarmentConfig(const std::string& name) {
   if (name == "toy") {
     c["toy"] = {{"links", 6}, {"link_length", 0.08}, {"substeps", 4}, {"drag", 10.0}};
   } else if (name == "cape") {
-    c["cape"] = {{"columns", 32},  {"rows", 48},      {"bucket_width", 0.05},
-                 {"substeps", 10}, {"iterations", 1}, {"settle_frames", 60},
-                 {"internal_damping", 150.0}};
+    c["cape"] = {
+        {"columns", 32},   {"rows", 48},          {"bucket_width", 0.05},     {"substeps", 10},
+        {"iterations", 1}, {"settle_frames", 60}, {"internal_damping", 150.0}};
   } else {
     fail("garment '", name, "': expected cape or toy");
   }

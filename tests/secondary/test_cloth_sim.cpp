@@ -118,8 +118,8 @@ TEST_CASE("internal damping stills the swing of a cloth but not its motion as a 
   // seconds it is far closer to rest.
   const double free05 = swingAfter(0.0f, 15), damped05 = swingAfter(150.0f, 15);
   const double free2 = swingAfter(0.0f, 60), damped2 = swingAfter(150.0f, 60);
-  MESSAGE("kinetic energy at 0.5 s: ", free05, " J undamped, ", damped05, " J damped; at 2 s: ",
-          free2, " J, ", damped2, " J");
+  MESSAGE("kinetic energy at 0.5 s: ", free05, " J undamped, ", damped05,
+          " J damped; at 2 s: ", free2, " J, ", damped2, " J");
   CHECK(damped05 < 0.9 * free05);
   CHECK(damped2 < 0.2 * free2);
 
@@ -135,14 +135,17 @@ TEST_CASE("internal damping stills the swing of a cloth but not its motion as a 
   options.drag = 0.0f;
   options.longRangeAttachments = false;
   options.internalDamping = 1000.0f;
-  const StepFunction step = makeClothStepFunction(graph, std::make_shared<const ClothMesh>(loose), options);
+  const StepFunction step =
+      makeClothStepFunction(graph, std::make_shared<const ClothMesh>(loose), options);
   ClothState state = restState(loose, *graph, 0);
   for (glm::vec3& p : state.positions) p += glm::vec3(0.0f, 3.0f, 0.0f);  // clear of the body
   for (glm::vec3& v : state.velocities) v = glm::vec3(0.3f, 0.1f, -0.2f);
   walk(step, *graph, state, 0, 10, [](const ClothState&, uint32_t) {});
-  for (const glm::vec3& v : state.velocities) CHECK(glm::length(v - glm::vec3(0.3f, 0.1f, -0.2f)) < 1e-4f);
+  for (const glm::vec3& v : state.velocities)
+    CHECK(glm::length(v - glm::vec3(0.3f, 0.1f, -0.2f)) < 1e-4f);
 
-  CHECK_THROWS_AS(makeClothStepFunction(graph, square, ClothSimOptions{.internalDamping = -1.0f}), Error);
+  CHECK_THROWS_AS(makeClothStepFunction(graph, square, ClothSimOptions{.internalDamping = -1.0f}),
+                  Error);
 }
 
 TEST_CASE("no cloth vertex ends a step inside a body capsule while running and changing speed") {

@@ -21,7 +21,8 @@ std::vector<float> stateErrors(const ClothFrames& frames, const ClothDatabase& d
     frames.positions(s, truth);
     decodeState(d, s, decoded);
     float e = 0.0f;
-    for (uint32_t v = 0; v < frames.vertexCount; ++v) e = std::max(e, glm::length(truth[v] - decoded[v]));
+    for (uint32_t v = 0; v < frames.vertexCount; ++v)
+      e = std::max(e, glm::length(truth[v] - decoded[v]));
     errors.push_back(e);
   }
   return errors;
@@ -34,7 +35,8 @@ TEST_CASE("reweighting: a rare state the plain SVD leaves out gets a basis") {
   // two bases the plain SVD keeps modes 0 and 1 (most energy) and misses state 0 entirely; one
   // reweighted pass weights state 0 by its error and takes mode 2 instead of mode 1.
   const test::LowRankFrames shapes{test::gridMesh(8, 6), {1.0f, 1.0f, 1.0f}};
-  const std::vector<glm::vec3> mode0 = shapes.mode(0), mode1 = shapes.mode(1), mode2 = shapes.mode(2);
+  const std::vector<glm::vec3> mode0 = shapes.mode(0), mode1 = shapes.mode(1),
+                               mode2 = shapes.mode(2);
   PlaybackPrimary primary = test::syntheticPrimary(0.5f, {8, 6, 5});
   PlaybackGraph graph = test::syntheticGraph(primary, 20);
   ClothFrames frames;
@@ -50,13 +52,15 @@ TEST_CASE("reweighting: a rare state the plain SVD leaves out gets a basis") {
   options.threads = 2;
   const ClothDatabase plain = compressCloth(frames, shapes.mesh.triangles, primary, graph, options);
   options.reweightPasses = 1;
-  const ClothDatabase reweighted = compressCloth(frames, shapes.mesh.triangles, primary, graph, options);
+  const ClothDatabase reweighted =
+      compressCloth(frames, shapes.mesh.triangles, primary, graph, options);
   const std::vector<float> plainErrors = stateErrors(frames, plain);
   const std::vector<float> reweightedErrors = stateErrors(frames, reweighted);
   MESSAGE("largest error before quantization: plain ", plain.report.maxErrorBeforeQuantization,
-          " m, reweighted ", reweighted.report.maxErrorBeforeQuantization, " m; state 0: ",
-          plainErrors[0], " → ", reweightedErrors[0], " m");
-  CHECK(reweighted.report.maxErrorBeforeQuantization < 0.7f * plain.report.maxErrorBeforeQuantization);
+          " m, reweighted ", reweighted.report.maxErrorBeforeQuantization,
+          " m; state 0: ", plainErrors[0], " → ", reweightedErrors[0], " m");
+  CHECK(reweighted.report.maxErrorBeforeQuantization <
+        0.7f * plain.report.maxErrorBeforeQuantization);
   CHECK(reweightedErrors[0] < 0.2f * plainErrors[0]);
   CHECK(reweighted.basisCount() == 2);
 
@@ -76,19 +80,21 @@ TEST_CASE("refinement: coefficient steps lower the largest error, never raise a 
   options.coefficientQuantum = 0.003f;
   options.targetError = 0.0025f;
   options.threads = 2;
-  const ClothDatabase rounded = compressCloth(frames, source.mesh.triangles, primary, graph, options);
+  const ClothDatabase rounded =
+      compressCloth(frames, source.mesh.triangles, primary, graph, options);
   ClothDatabase refined = rounded;
   const RefineReport report = refineCoefficients(frames, refined, options.targetError, 4096, 2);
-  const std::vector<float> before = stateErrors(frames, rounded), after = stateErrors(frames, refined);
+  const std::vector<float> before = stateErrors(frames, rounded),
+                           after = stateErrors(frames, refined);
   const float largestBefore = *std::max_element(before.begin(), before.end());
   const float largestAfter = *std::max_element(after.begin(), after.end());
   MESSAGE("largest error ", largestBefore, " → ", largestAfter, " m; ", report.statesAboveTarget,
           " states above target, ", report.statesRefined, " refined, ", report.steps, " steps");
   REQUIRE(largestBefore > options.targetError);
   CHECK(largestAfter < largestBefore);
-  CHECK(report.statesAboveTarget == uint32_t(std::count_if(
-                                        before.begin(), before.end(),
-                                        [&](float e) { return e > options.targetError; })));
+  CHECK(report.statesAboveTarget ==
+        uint32_t(std::count_if(before.begin(), before.end(),
+                               [&](float e) { return e > options.targetError; })));
   CHECK(report.statesRefined > 0);
   CHECK(report.steps >= report.statesRefined);
   const uint32_t b = refined.basisCount();
@@ -104,7 +110,8 @@ TEST_CASE("refinement: coefficient steps lower the largest error, never raise a 
   }
   // compressCloth refines when asked, and reports it.
   options.refineSteps = 4096;
-  const ClothDatabase direct = compressCloth(frames, source.mesh.triangles, primary, graph, options);
+  const ClothDatabase direct =
+      compressCloth(frames, source.mesh.triangles, primary, graph, options);
   CHECK(direct.report.statesRefined == report.statesRefined);
   CHECK(direct.report.maxError == doctest::Approx(largestAfter));
   options.targetError = 0.0f;
