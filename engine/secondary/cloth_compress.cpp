@@ -58,19 +58,23 @@ float maxVertexNorm(const Eigen::MatrixXf& residual) {
   return std::sqrt(largest);
 }
 
-// Largest vertex error of D ≈ U_b C_b (the first b bases), before quantization.
+// Each state's largest vertex error of D ≈ U_b C_b (the first b bases), before quantization.
+std::vector<float> stateErrorsWithBases(const ColumnSource& centered, const TruncatedSvd& svd,
+                                        uint32_t b, unsigned threads) {
+  std::vector<float> errors(centered.cols, 0.0f);
+  forEachColumnBlock(centered, threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
+    const Eigen::MatrixXf residual =
+        block - svd.bases.leftCols(b) * svd.coefficients.block(0, first, b, block.cols());
+    for (Eigen::Index j = 0; j < residual.cols(); ++j)
+      errors[first + uint32_t(j)] = maxVertexNorm(residual.col(j));
+  });
+  return errors;
+}
+
 float maxErrorWithBases(const ColumnSource& centered, const TruncatedSvd& svd, uint32_t b,
                         unsigned threads) {
-  std::mutex mutex;
-  float largest = 0.0f;
-  forEachColumnBlock(centered, threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
-    Eigen::MatrixXf residual =
-        block - svd.bases.leftCols(b) * svd.coefficients.block(0, first, b, block.cols());
-    float e = maxVertexNorm(residual);
-    std::lock_guard<std::mutex> lock(mutex);
-    largest = std::max(largest, e);
-  });
-  return largest;
+  const std::vector<float> errors = stateErrorsWithBases(centered, svd, b, threads);
+  return errors.empty() ? 0.0f : *std::max_element(errors.begin(), errors.end());
 }
 
 // One pass of iteratively reweighted least squares towards the largest error: each state's
@@ -81,14 +85,8 @@ float maxErrorWithBases(const ColumnSource& centered, const TruncatedSvd& svd, u
 // the mean barely moves. A second pass over-corrects (measured), so one is the default.
 TruncatedSvd reweightedSvd(const ColumnSource& centered, const TruncatedSvd& svd,
                            const SvdOptions& options) {
-  const Eigen::Index rank = std::min<Eigen::Index>(options.rank, svd.bases.cols());
-  std::vector<float> error(centered.cols, 0.0f);
-  forEachColumnBlock(centered, options.threads, [&](uint32_t first, const Eigen::MatrixXf& block) {
-    const Eigen::MatrixXf residual =
-        block - svd.bases.leftCols(rank) * svd.coefficients.block(0, first, rank, block.cols());
-    for (Eigen::Index j = 0; j < residual.cols(); ++j)
-      error[first + uint32_t(j)] = maxVertexNorm(residual.col(j));
-  });
+  const uint32_t rank = std::min(options.rank, uint32_t(svd.bases.cols()));
+  const std::vector<float> error = stateErrorsWithBases(centered, svd, rank, options.threads);
   double mean = 0.0;
   for (float e : error) mean += e;
   mean = mean > 0.0 ? mean / double(error.size()) : 1.0;
@@ -316,10 +314,10 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
     fitRatio();  // the reweighted coefficients may take more bytes
   }
   keepBases(b);
+  RefineReport refined;
   if (options.refineSteps > 0) {
     stage("refine");
-    const RefineReport refined =
-        refineCoefficients(frames, db, options.targetError, options.refineSteps, threads);
+    refined = refineCoefficients(frames, db, options.targetError, options.refineSteps, threads);
     db.report.statesAboveTarget = refined.statesAboveTarget;
     db.report.statesRefined = refined.statesRefined;
     db.report.refineSteps = refined.steps;
@@ -327,7 +325,9 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   validateDatabase(db, "compressed cloth");
 
   stage("error");
-  ReconstructionError after = reconstructionError(frames, db, threads);
+  // Refining decodes every state already: its measure after the last step is the same one.
+  const ReconstructionError after =
+      options.refineSteps > 0 ? refined.after : reconstructionError(frames, db, threads);
   CompressionReport& r = db.report;
   r.targetError = options.bases ? 0.0f : options.targetError;
   r.quantum = options.quantum;
@@ -335,7 +335,6 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
   r.maxErrorBeforeQuantization = errorBefore;
   r.maxError = after.max;
   r.meanError = after.mean;
-  r.singularValues.assign(svd.singularValues.data(), svd.singularValues.data() + b);
   r.states = S;
   r.vertices = frames.vertexCount;
   r.bases = b;

@@ -17,6 +17,7 @@ struct RefineReport {
   uint32_t statesAboveTarget = 0;  // before refining
   uint32_t statesRefined = 0;      // changed by at least one step
   uint64_t steps = 0;              // coefficient steps taken, all states
+  ReconstructionError after;       // every state, after refining (as reconstructionError)
 };
 
 RefineReport refineCoefficients(const ClothFrames& frames, ClothDatabase& db, float target,

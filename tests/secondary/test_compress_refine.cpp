@@ -97,6 +97,10 @@ TEST_CASE("refinement: coefficient steps lower the largest error, never raise a 
                                [&](float e) { return e > options.targetError; })));
   CHECK(report.statesRefined > 0);
   CHECK(report.steps >= report.statesRefined);
+  // The measure after refining is reconstructionError's.
+  const ReconstructionError measured = reconstructionError(frames, refined, 2);
+  CHECK(report.after.max == doctest::Approx(measured.max));
+  CHECK(report.after.mean == doctest::Approx(measured.mean));
   const uint32_t b = refined.basisCount();
   for (uint32_t s = 0; s < frames.stateCount; ++s) {
     CHECK(after[s] <= before[s]);
