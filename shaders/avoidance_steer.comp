@@ -4,6 +4,8 @@
 #extension GL_KHR_shader_subgroup_vote : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_shuffle : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Steering, one invocation per agent in grid order: the velocity that heads for the path-vector
 // waypoint (goal), changed by the avoidance policy, written as heading (placement.w), velocity
 // and speed (steer) and speed weight (motion.z = wTarget). Neighbours come from the grid's
@@ -14,8 +16,10 @@
 // lane: the lanes share one candidate list. Lanes in one grid row (consecutive slots nearly
 // always are) take the union of their neighbourhoods, which is one or two runs of slots per
 // row; each round every lane loads one candidate (one gather for kChunk candidates) and
-// subgroupBroadcast hands each candidate to all lanes in turn. Candidates outside a lane's
-// own neighbourhood lie beyond the sensing distance and drop out in the distance test.
+// subgroupShuffle with a constant lane hands each candidate to all lanes in turn (lavapipe 22.3
+// turns subgroupBroadcast into a search for the first active lane per component: a TTC step
+// took 2.7 times as long with it). Candidates outside a lane's own neighbourhood lie beyond the
+// sensing distance and drop out in the distance test.
 #include "crowd_types.h"
 #include "avoidance_common.glsl"
 
@@ -25,14 +29,24 @@ layout(constant_id = 1) const int kRange = 1;     // cells scanned each side: ce
 layout(constant_id = 2) const uint kChunk = 8u;   // candidates per round: min(subgroup size, 32)
 const int kRows = 2 * kRange + 1;
 const int kRuns = 2 * kRows;                      // a row's columns may wrap around the table
+const uint kStartValues = 4u * uint(kRows);       // grid table entries a round reads
+const uint kStartLoads = (kStartValues + kChunk - 1u) / kChunk;
 
 layout(std430, binding = 0) buffer Placement { vec4 placement[]; };
 layout(std430, binding = 1) writeonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 2) readonly buffer Goals { vec4 goals[]; };
+layout(std430, binding = 2) readonly buffer Goals { u64vec2 goals[]; };
 layout(std430, binding = 3) buffer Steer { vec4 steer[]; };
+layout(std430, binding = 3) writeonly buffer SteerWords { u64vec2 steerWords[]; };  // the same, stored in words
 layout(std430, binding = 4) readonly buffer Starts { uint starts[]; };
 layout(std430, binding = 5) readonly buffer SortedIndex { uint sortedIndex[]; };
-layout(std430, binding = 6) readonly buffer Sorted { vec4 sorted[]; };
+layout(std430, binding = 6) readonly buffer Sorted { u64vec2 sorted[]; };
+// vec4s are read as two 64-bit words: lavapipe loads a vector one component per lane at a time.
+vec4 fromWords(u64vec2 words) {
+  return vec4(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y)));
+}
+u64vec2 toWords(vec4 v) {
+  return u64vec2(packUint2x32(floatBitsToUint(v.xy)), packUint2x32(floatBitsToUint(v.zw)));
+}
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it considers.
@@ -86,12 +100,12 @@ void consider(vec4 other, uint otherSlot) {
 }
 
 // One round: the candidates [base, base + kChunk) of the list, each lane holding one, handed
-// to every lane in turn (constant-index broadcasts: one extract each on lavapipe). Every lane
+// to every lane in turn (constant-lane shuffles). Every lane
 // considers all of them: on lavapipe skipping work needs a loop, and a loop over just the
 // candidates near some lane measured twice as slow as this straight-line code.
 void considerChunk(vec4 candidate, uint slot) {
 #define THRONG_CONSIDER(n) \
-  if (kChunk > n) consider(subgroupBroadcast(candidate, n), subgroupBroadcast(slot, n));
+  if (kChunk > n) consider(subgroupShuffle(candidate, n), subgroupShuffle(slot, n));
   THRONG_CONSIDER(0u) THRONG_CONSIDER(1u) THRONG_CONSIDER(2u) THRONG_CONSIDER(3u)
   THRONG_CONSIDER(4u) THRONG_CONSIDER(5u) THRONG_CONSIDER(6u) THRONG_CONSIDER(7u)
   THRONG_CONSIDER(8u) THRONG_CONSIDER(9u) THRONG_CONSIDER(10u) THRONG_CONSIDER(11u)
@@ -101,6 +115,73 @@ void considerChunk(vec4 candidate, uint slot) {
   THRONG_CONSIDER(24u) THRONG_CONSIDER(25u) THRONG_CONSIDER(26u) THRONG_CONSIDER(27u)
   THRONG_CONSIDER(28u) THRONG_CONSIDER(29u) THRONG_CONSIDER(30u) THRONG_CONSIDER(31u)
 #undef THRONG_CONSIDER
+}
+
+// The slot of candidate t of the round's union (its runs concatenated), or 0xFFFFFFFF past the end.
+uint slotOf(uint t, uint runBegin[kRuns], uint runLength[kRuns]) {
+  uint slot = 0xFFFFFFFFu;
+  uint before = 0u;
+  for (int s = 0; s < kRuns; ++s) {
+    if (t >= before && t - before < runLength[s]) slot = runBegin[s] + (t - before);
+    before += runLength[s];
+  }
+  return slot;
+}
+
+// Whether a candidate's TTC force on this lane can be non-zero: within sensing distance and
+// either overlapping or on a collision course (ttcForce's own conditions; at x = 0, itself
+// included, the force is zero). A few operations against ttcForce's exp, sqrt and divisions.
+bool ttcRelevant(vec4 other) {
+  vec2 x = gPos - other.xy;
+  vec2 v = gVCur - other.zw;
+  float dist2 = dot(x, x);
+  float c = dist2 - gDiameter2;
+  float a = dot(v, v);
+  float b = dot(x, v);
+  bool course = c < 0.0 || (b < 0.0 && a >= 1e-6 && b * b - a * c > 0.0);
+  return gMine && dist2 > 1e-8 && dist2 < gSensing2 && course;
+}
+
+// The TTC policy in two phases per block of kBlock union candidates: every lane screens every
+// candidate (ttcRelevant, one bit each), then each lane evaluates ttcForce on its own set
+// bits only, in a loop that runs as often as the lane with the most. Only a few of the ≈ 60
+// candidates of a union are on a collision course with a given lane, so the expensive force
+// runs a few times per block instead of once per candidate.
+const uint kBlock = 32u;
+void scanRoundTtc(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
+  uint lane = gl_SubgroupInvocationID;
+  uint base = 0u;
+  do {
+    uint bits = 0u;
+    uint offset = 0u;
+    do {
+      uint t = lane < kChunk ? base + offset + lane : 0xFFFFFFFFu;
+      uint slot = slotOf(t, runBegin, runLength);
+      vec4 candidate = fromWords(sorted[min(slot, push.agentCount - 1u)]);
+      candidate = slot != 0xFFFFFFFFu ? candidate : vec4(1e18, 1e18, 0.0, 0.0);
+#define THRONG_SCREEN(n) \
+  if (kChunk > n) bits |= ttcRelevant(subgroupShuffle(candidate, n)) ? 1u << (offset + n) : 0u;
+      THRONG_SCREEN(0u) THRONG_SCREEN(1u) THRONG_SCREEN(2u) THRONG_SCREEN(3u)
+      THRONG_SCREEN(4u) THRONG_SCREEN(5u) THRONG_SCREEN(6u) THRONG_SCREEN(7u)
+      THRONG_SCREEN(8u) THRONG_SCREEN(9u) THRONG_SCREEN(10u) THRONG_SCREEN(11u)
+      THRONG_SCREEN(12u) THRONG_SCREEN(13u) THRONG_SCREEN(14u) THRONG_SCREEN(15u)
+      THRONG_SCREEN(16u) THRONG_SCREEN(17u) THRONG_SCREEN(18u) THRONG_SCREEN(19u)
+      THRONG_SCREEN(20u) THRONG_SCREEN(21u) THRONG_SCREEN(22u) THRONG_SCREEN(23u)
+      THRONG_SCREEN(24u) THRONG_SCREEN(25u) THRONG_SCREEN(26u) THRONG_SCREEN(27u)
+      THRONG_SCREEN(28u) THRONG_SCREEN(29u) THRONG_SCREEN(30u) THRONG_SCREEN(31u)
+#undef THRONG_SCREEN
+      offset += kChunk;
+    } while (offset < kBlock && base + offset < total);
+    while (subgroupAny(bits != 0u)) {
+      bool has = bits != 0u;
+      uint slot = slotOf(base + uint(findLSB(bits)), runBegin, runLength);
+      bits &= bits - 1u;
+      vec4 other = fromWords(sorted[min(slot, push.agentCount - 1u)]);
+      vec2 x = gPos - other.xy;
+      gForce += toFixed(has ? ttcForce(x, gVCur - other.zw, dot(x, x)) : vec2(0.0));
+    }
+    base += kBlock;
+  } while (base < total);
 }
 
 // Every pending lane's neighbourhood, one grid row of lanes per round of the outer loop
@@ -121,30 +202,40 @@ void scanNeighbours(bool pending, ivec2 cell) {
     bool whole = uint(xhi - xlo) + 1u >= width;
     uint lo = uint(xlo) & (width - 1u), hi = uint(xhi) & (width - 1u);
     bool wraps = !whole && lo > hi;
+    // The 4 table entries per row are fetched one per lane and handed round by shuffles: on
+    // lavapipe every load is a loop over the lanes, and these are the same for all of them.
+    uint fetched[kStartLoads];
+    for (uint k = 0u; k < kStartLoads; ++k) {
+      uint j = k * kChunk + lane;
+      uint rowBase = (uint(row + int(j / 4u) - kRange) & push.rowMask) << push.widthShift;
+      uint kind = j % 4u;
+      uint column = kind == 0u ? (whole ? 0u : lo) : kind == 1u ? (whole || wraps ? width : hi + 1u) : kind == 2u ? 0u : (wraps ? hi + 1u : 0u);
+      fetched[k] = j < kStartValues && lane < kChunk ? starts[rowBase + column] : 0u;
+    }
     for (int r = 0; r < kRows; ++r) {
-      uint rowBase = (uint(row + r - kRange) & push.rowMask) << push.widthShift;
-      uint a = starts[rowBase + (whole ? 0u : lo)];
-      uint b = starts[rowBase + (whole || wraps ? width : hi + 1u)];
-      uint c = starts[rowBase];
-      uint d = starts[rowBase + (wraps ? hi + 1u : 0u)];
+#define THRONG_FETCHED(kind) subgroupShuffle(fetched[(4u * uint(r) + kind) / kChunk], (4u * uint(r) + kind) % kChunk)
+      uint a = THRONG_FETCHED(0u);
+      uint b = THRONG_FETCHED(1u);
+      uint c = THRONG_FETCHED(2u);
+      uint d = THRONG_FETCHED(3u);
+#undef THRONG_FETCHED
       runBegin[2 * r] = a;
       runLength[2 * r] = b - a;
       runBegin[2 * r + 1] = c;
       runLength[2 * r + 1] = d - c;
       total += (b - a) + (d - c);
     }
+    if (kPolicy == kSteerPolicyTtc) {
+      scanRoundTtc(total, runBegin, runLength);
+      continue;
+    }
     // A do-while: lavapipe tests a loop's exit at its end, so a for loop would pay one more
     // (masked) round. Every lane of the round is in its own cell, so total >= 1.
     uint base = 0u;
     do {
       uint t = lane < kChunk ? base + lane : 0xFFFFFFFFu;
-      uint slot = 0xFFFFFFFFu;
-      uint before = 0u;
-      for (int s = 0; s < kRuns; ++s) {
-        if (t >= before && t - before < runLength[s]) slot = runBegin[s] + (t - before);
-        before += runLength[s];
-      }
-      vec4 candidate = sorted[min(slot, push.agentCount - 1u)];
+      uint slot = slotOf(t, runBegin, runLength);
+      vec4 candidate = fromWords(sorted[min(slot, push.agentCount - 1u)]);
       considerChunk(slot != 0xFFFFFFFFu ? candidate : vec4(1e18, 1e18, 0.0, 0.0), slot);
       base += kChunk;
     } while (base < total);
@@ -157,18 +248,21 @@ void main() {
   bool valid = slot < push.agentCount;
   gSlot = slot;
   uint i = sortedIndex[min(slot, push.agentCount - 1u)];
-  vec4 goal = goals[i];
-  vec4 place = placement[i];
-  vec4 state = steer[i];
+  vec4 goal = fromWords(goals[i]);
+  // Position and velocity from the grid's copy (read in slot order, so nearly contiguous);
+  // heading and wait counter only where the rule needs them (each load costs on lavapipe).
+  vec4 own = fromWords(sorted[min(slot, push.agentCount - 1u)]);
+  vec4 place = kPolicy == kSteerPolicyRule ? placement[i] : vec4(0.0);
+  vec4 state = kPolicy == kSteerPolicyRule ? steer[i] : vec4(0.0);
   bool isActive = valid && goal.w != 0.0;
-  gPos = place.xz;
+  gPos = own.xy;
   gVPref = (goal.xy - gPos) * push.invSecondsLeft;
   float prefSpeed = length(gVPref);
   if (prefSpeed > goal.z) {
     gVPref *= goal.z / prefSpeed;
     prefSpeed = goal.z;
   }
-  gVCur = state.xy;
+  gVCur = own.zw;
   gSensing2 = push.sensing * push.sensing;
   gDiameter2 = 4.0 * push.radius * push.radius;
   gInvDiameter = 0.5 / push.radius;
@@ -190,7 +284,7 @@ void main() {
   }
   if (kPolicy != kSteerPolicyNone) scanNeighbours(isActive, cellCoord(gPos, push.invCellSize));
   if (!isActive) {
-    if (valid) steer[i] = vec4(0.0);
+    if (valid) steerWords[i] = u64vec2(0ul);
     return;
   }
 
@@ -226,11 +320,10 @@ void main() {
   }
 
   float speed = length(v);
-  if (speed > 1e-3) place.w = atan(v.x, v.y);
-  placement[i] = place;
+  if (speed > 1e-3) placement[i].w = atan(v.x, v.y);
   // steer.w: the flags, or while waiting minus the steps waited so far.
   float stateOut = flags == kSteerFlagWaiting ? min(state.w, 0.0) - 1.0 : float(flags);
-  steer[i] = vec4(v, speed, stateOut);
+  steerWords[i] = toWords(vec4(v, speed, stateOut));
   // The clip pair of the agent's range maps its speed to the speed weight.
   float slow = i < push.setEnd.x ? push.setSlow.x : i < push.setEnd.y ? push.setSlow.y : i < push.setEnd.z ? push.setSlow.z : push.setSlow.w;
   float fast = i < push.setEnd.x ? push.setFast.x : i < push.setEnd.y ? push.setFast.y : i < push.setEnd.z ? push.setFast.z : push.setFast.w;
