@@ -128,18 +128,18 @@ uint slotOf(uint t, uint runBegin[kRuns], uint runLength[kRuns]) {
   return slot;
 }
 
-// Whether a candidate's TTC force on this lane can be non-zero: within sensing distance and
-// either overlapping or on a collision course (ttcForce's own conditions; at x = 0, itself
-// included, the force is zero). A few operations against ttcForce's exp, sqrt and divisions.
+// Whether a candidate's TTC force on this lane may be non-zero: within sensing distance and
+// either overlapping or on a collision course (ttcForce's own conditions but a ≥ 1e-6, which
+// ttcForce tests itself; at x = 0, itself included, the force is zero). A few operations
+// against ttcForce's exp, sqrt and divisions.
 bool ttcRelevant(vec4 other) {
   vec2 x = gPos - other.xy;
   vec2 v = gVCur - other.zw;
   float dist2 = dot(x, x);
   float c = dist2 - gDiameter2;
-  float a = dot(v, v);
   float b = dot(x, v);
-  bool course = c < 0.0 || (b < 0.0 && a >= 1e-6 && b * b - a * c > 0.0);
-  return gMine && dist2 > 1e-8 && dist2 < gSensing2 && course;
+  bool course = c < 0.0 || (b < 0.0 && b * b > dot(v, v) * c);
+  return dist2 > 1e-8 && dist2 < gSensing2 && course;
 }
 
 // The TTC policy in two phases per block of kBlock union candidates: every lane screens every
@@ -172,6 +172,7 @@ void scanRoundTtc(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
 #undef THRONG_SCREEN
       offset += kChunk;
     } while (offset < kBlock && base + offset < total);
+    bits = gMine ? bits : 0u;
     while (subgroupAny(bits != 0u)) {
       bool has = bits != 0u;
       uint slot = slotOf(base + uint(findLSB(bits)), runBegin, runLength);
