@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_KHR_shader_subgroup_basic : require
-#extension GL_KHR_shader_subgroup_ballot : require
+#extension GL_KHR_shader_subgroup_shuffle : require
 // Cloth playback: decode B'·c' + mean for the used states only, at the level they were classified
 // at (the coarse-first vertex prefix and the first bases of that level), into the vertex pool;
 // characters in the same state share it. One dispatch per level, one invocation per state: every
@@ -24,7 +24,7 @@ layout(push_constant) uniform Push { ClothDecodePush push; };
 
 void main() {
   // Surplus lanes of a partly used subgroup redo the last state (identical writes), so every lane
-  // runs the same loops and the broadcasts below see every lane; wholly surplus subgroups leave.
+  // runs the same loops and the shuffles below see every lane; wholly surplus subgroups leave.
   uint count = counters.levelStates[push.level];
   if (gl_GlobalInvocationID.x - gl_SubgroupInvocationID >= count) return;
   uint k = min(gl_GlobalInvocationID.x, count - 1u);
@@ -35,16 +35,17 @@ void main() {
   uint c0 = state * push.basisCount;
   uint lane = gl_SubgroupInvocationID % kLanes;
   // A block of kLanes rows: each lane loads one row of a basis (one gather brings kLanes useful
-  // rows; lavapipe gathers lane by lane), every lane takes all of them by broadcast (constant
-  // lane: one extract each) and adds them with its own state's coefficient.
+  // rows; lavapipe gathers lane by lane), every lane takes all of them by shuffles from constant
+  // lanes (lavapipe 22.3 makes subgroupBroadcast a search for the first active lane) and adds
+  // them with its own state's coefficient.
   for (uint j0 = 0u; j0 < rows; j0 += kLanes) {
     vec4 acc[8];
     vec4 m = mean[j0 + lane];
-    [[unroll]] for (uint r = 0u; r < 8u; ++r) if (r < kLanes) acc[r] = subgroupBroadcast(m, r);
+    [[unroll]] for (uint r = 0u; r < 8u; ++r) if (r < kLanes) acc[r] = subgroupShuffle(m, r);
     for (uint i = 0u; i < level.bases; ++i) {
       float ci = coefficients[c0 + i];
       vec4 row = bases[i * push.rowVectors + j0 + lane];
-      [[unroll]] for (uint r = 0u; r < 8u; ++r) if (r < kLanes) acc[r] += subgroupBroadcast(row, r) * ci;
+      [[unroll]] for (uint r = 0u; r < 8u; ++r) if (r < kLanes) acc[r] += subgroupShuffle(row, r) * ci;
     }
     [[unroll]] for (uint r = 0u; r < 8u; ++r)
       if (r < kLanes && j0 + r < rows) pool[out0 + j0 + r] = acc[r];

@@ -70,10 +70,10 @@ uint32_t subgroupChunk(const gpu::Context& context) {
   vkGetPhysicalDeviceProperties2(context.physicalDevice(), &properties);
   const VkSubgroupFeatureFlags needed =
       VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT |
-      VK_SUBGROUP_FEATURE_BALLOT_BIT;
+      VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
   if ((subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0 ||
       (subgroup.supportedOperations & needed) != needed || subgroup.subgroupSize < 4)
-    fail("the steering pass needs compute subgroups of at least 4 lanes with vote, arithmetic and ballot; ",
+    fail("the steering pass needs compute subgroups of at least 4 lanes with vote, arithmetic and shuffle; ",
          context.info().name, " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
          subgroup.supportedOperations);
   return std::min(subgroup.subgroupSize, 32u);
