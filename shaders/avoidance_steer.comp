@@ -49,7 +49,6 @@ u64vec2 toWords(vec4 v) {
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it considers.
-uint gSlot;
 bool gMine;  // the lane takes part in the current round
 vec2 gPos, gVCur, gVPref, gKeep;
 vec2 gDraws[kRuleDraws];
@@ -82,40 +81,6 @@ vec2 ttcForce(vec2 x, vec2 v, float dist2) {
 
 ivec2 toFixed(vec2 f) { return ivec2(floor(clamp(f, -kForceTermCap, kForceTermCap) * kForceScale + 0.5)); }
 
-void consider(vec4 other, uint otherSlot) {
-  vec2 x = gPos - other.xy;
-  float dist2 = dot(x, x);
-  bool near = gMine && otherSlot != gSlot && dist2 < gSensing2;
-  if (kPolicy == kSteerPolicyRule) {
-    vec2 theirs = other.zw;
-    gBlocked = gBlocked || (near && collides(x, gVPref - theirs, push.lookahead, gDiameter2));
-    gKeepBlocked = gKeepBlocked || (near && collides(x, gKeep - theirs, push.lookahead, gDiameter2));
-    for (uint d = 0u; d < kRuleDraws; ++d)
-      if (near && collides(x, gDraws[d] - theirs, push.lookahead, gDiameter2)) gDrawBlocked |= 1u << d;
-  } else if (kPolicy == kSteerPolicyTtc) {
-    vec2 f = ttcForce(x, gVCur - other.zw, dist2);
-    gForce += toFixed(near ? f : vec2(0.0));
-  }
-}
-
-// One round: the candidates [base, base + kChunk) of the list, each lane holding one, handed
-// to every lane in turn (constant-lane shuffles). Every lane
-// considers all of them: on lavapipe skipping work needs a loop, and a loop over just the
-// candidates near some lane measured twice as slow as this straight-line code.
-void considerChunk(vec4 candidate, uint slot) {
-#define THRONG_CONSIDER(n) \
-  if (kChunk > n) consider(subgroupShuffle(candidate, n), subgroupShuffle(slot, n));
-  THRONG_CONSIDER(0u) THRONG_CONSIDER(1u) THRONG_CONSIDER(2u) THRONG_CONSIDER(3u)
-  THRONG_CONSIDER(4u) THRONG_CONSIDER(5u) THRONG_CONSIDER(6u) THRONG_CONSIDER(7u)
-  THRONG_CONSIDER(8u) THRONG_CONSIDER(9u) THRONG_CONSIDER(10u) THRONG_CONSIDER(11u)
-  THRONG_CONSIDER(12u) THRONG_CONSIDER(13u) THRONG_CONSIDER(14u) THRONG_CONSIDER(15u)
-  THRONG_CONSIDER(16u) THRONG_CONSIDER(17u) THRONG_CONSIDER(18u) THRONG_CONSIDER(19u)
-  THRONG_CONSIDER(20u) THRONG_CONSIDER(21u) THRONG_CONSIDER(22u) THRONG_CONSIDER(23u)
-  THRONG_CONSIDER(24u) THRONG_CONSIDER(25u) THRONG_CONSIDER(26u) THRONG_CONSIDER(27u)
-  THRONG_CONSIDER(28u) THRONG_CONSIDER(29u) THRONG_CONSIDER(30u) THRONG_CONSIDER(31u)
-#undef THRONG_CONSIDER
-}
-
 // The slot of candidate t of the round's union (its runs concatenated), or 0xFFFFFFFF past the end.
 uint slotOf(uint t, uint runBegin[kRuns], uint runLength[kRuns]) {
   uint slot = 0xFFFFFFFFu;
@@ -127,28 +92,48 @@ uint slotOf(uint t, uint runBegin[kRuns], uint runLength[kRuns]) {
   return slot;
 }
 
-// Whether a candidate's TTC force on this lane may be non-zero: within sensing distance and
+// Whether a candidate can change this lane's steering: within sensing distance, and for TTC
 // either overlapping or on a collision course (ttcForce's own conditions but a ≥ 1e-6, which
-// ttcForce tests itself; at x = 0, itself included, the force is zero). A few operations
-// against ttcForce's exp, sqrt and divisions.
-bool ttcRelevant(vec4 other) {
+// ttcForce tests itself). Candidates at x = 0, the lane itself included, change nothing (no
+// TTC force there, and the rule's courses only collide while approaching). A few operations,
+// against ttcForce's exp, sqrt and divisions or the rule's 2 + kRuleDraws course tests.
+bool screened(vec4 other) {
   vec2 x = gPos - other.xy;
-  vec2 v = gVCur - other.zw;
   float dist2 = dot(x, x);
+  bool near = dist2 < gSensing2;
+  if (kPolicy == kSteerPolicyRule) return near && dist2 > 0.0;
+  vec2 v = gVCur - other.zw;
   float c = dist2 - gDiameter2;
   float b = dot(x, v);
   bool course = c < 0.0 || (b < 0.0 && b * b > dot(v, v) * c);
-  return dist2 > 1e-8 && dist2 < gSensing2 && course;
+  return near && dist2 > 1e-8 && course;
 }
 
-// The TTC policy in two phases per block of kBlock union candidates: every lane screens every
-// candidate (ttcRelevant, one bit each), then each lane evaluates ttcForce on its own set
-// bits only, in a loop that runs as often as the lane with the most. Only a few of the ≈ 60
-// candidates of a union are on a collision course with a given lane, so the expensive force
-// runs a few times per block instead of once per candidate.
+// A screened candidate's effect on this lane (none where `has` is false).
+void evaluate(vec4 other, bool has) {
+  vec2 x = gPos - other.xy;
+  if (kPolicy == kSteerPolicyRule) {
+    vec2 theirs = other.zw;
+    gBlocked = gBlocked || (has && collides(x, gVPref - theirs, push.lookahead, gDiameter2));
+    gKeepBlocked = gKeepBlocked || (has && collides(x, gKeep - theirs, push.lookahead, gDiameter2));
+    for (uint d = 0u; d < kRuleDraws; ++d)
+      if (has && collides(x, gDraws[d] - theirs, push.lookahead, gDiameter2)) gDrawBlocked |= 1u << d;
+  } else if (kPolicy == kSteerPolicyTtc) {
+    gForce += toFixed(has ? ttcForce(x, gVCur - other.zw, dot(x, x)) : vec2(0.0));
+  }
+}
+
+// One round in two phases per block of kBlock union candidates: every lane screens every
+// candidate (one bit each), then each lane evaluates its own marked ones only, in a loop that
+// runs as often as the lane with the most. Of the ≈ 60 candidates of a union about 14 lie
+// within a lane's sensing distance and only a few on a collision course with it, so the
+// expensive part runs a few times per block instead of once per candidate (lavapipe skips
+// work only in loops: every lane pays for both sides of a branch).
 const uint kBlock = 32u;
-void scanRoundTtc(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
+void scanRound(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
   uint lane = gl_SubgroupInvocationID;
+  // Do-whiles: lavapipe tests a loop's exit at its end, so a for loop would pay one more
+  // (masked) round. Every lane of the round is in its own cell, so total >= 1.
   uint base = 0u;
   do {
     uint bits = 0u;
@@ -159,7 +144,7 @@ void scanRoundTtc(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
       vec4 candidate = fromWords(sorted[min(slot, push.agentCount - 1u)]);
       candidate = slot != 0xFFFFFFFFu ? candidate : vec4(1e18, 1e18, 0.0, 0.0);
 #define THRONG_SCREEN(n) \
-  if (kChunk > n) bits |= ttcRelevant(subgroupShuffle(candidate, n)) ? 1u << (offset + n) : 0u;
+  if (kChunk > n) bits |= screened(subgroupShuffle(candidate, n)) ? 1u << (offset + n) : 0u;
       THRONG_SCREEN(0u) THRONG_SCREEN(1u) THRONG_SCREEN(2u) THRONG_SCREEN(3u)
       THRONG_SCREEN(4u) THRONG_SCREEN(5u) THRONG_SCREEN(6u) THRONG_SCREEN(7u)
       THRONG_SCREEN(8u) THRONG_SCREEN(9u) THRONG_SCREEN(10u) THRONG_SCREEN(11u)
@@ -176,9 +161,7 @@ void scanRoundTtc(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
       bool has = bits != 0u;
       uint slot = slotOf(base + uint(findLSB(bits)), runBegin, runLength);
       bits &= bits - 1u;
-      vec4 other = fromWords(sorted[min(slot, push.agentCount - 1u)]);
-      vec2 x = gPos - other.xy;
-      gForce += toFixed(has ? ttcForce(x, gVCur - other.zw, dot(x, x)) : vec2(0.0));
+      evaluate(fromWords(sorted[min(slot, push.agentCount - 1u)]), has);
     }
     base += kBlock;
   } while (base < total);
@@ -225,20 +208,7 @@ void scanNeighbours(bool pending, ivec2 cell) {
       runLength[2 * r + 1] = d - c;
       total += (b - a) + (d - c);
     }
-    if (kPolicy == kSteerPolicyTtc) {
-      scanRoundTtc(total, runBegin, runLength);
-      continue;
-    }
-    // A do-while: lavapipe tests a loop's exit at its end, so a for loop would pay one more
-    // (masked) round. Every lane of the round is in its own cell, so total >= 1.
-    uint base = 0u;
-    do {
-      uint t = lane < kChunk ? base + lane : 0xFFFFFFFFu;
-      uint slot = slotOf(t, runBegin, runLength);
-      vec4 candidate = fromWords(sorted[min(slot, push.agentCount - 1u)]);
-      considerChunk(slot != 0xFFFFFFFFu ? candidate : vec4(1e18, 1e18, 0.0, 0.0), slot);
-      base += kChunk;
-    } while (base < total);
+    scanRound(total, runBegin, runLength);
   } while (subgroupAny(pending));
   gMine = false;
 }
@@ -246,7 +216,6 @@ void scanNeighbours(bool pending, ivec2 cell) {
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   bool valid = slot < push.agentCount;
-  gSlot = slot;
   uint i = sortedIndex[min(slot, push.agentCount - 1u)];
   vec4 goal = fromWords(goals[i]);
   // Position and velocity from the grid's copy (read in slot order, so nearly contiguous);
