@@ -1,6 +1,7 @@
 #include "crowd/avoidance_bench.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -17,6 +18,32 @@ double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
+}
+
+SteerFrame benchFrame(int s) {
+  SteerFrame frame;
+  frame.dt = 0.05f;
+  frame.secondsLeft = 1.0f - 0.05f * float(s % 20);
+  frame.step = uint32_t(s);
+  return frame;
+}
+
+// The CPU twin (one thread) over the same steps from the same start: grid + steering, median ms.
+double cpuTwinStepMs(std::vector<glm::vec4> placement, std::vector<glm::vec4> steer,
+                     const std::vector<glm::vec4>& goals, const GridTable& table, const AvoidanceParams& params,
+                     int steps, int warmup) {
+  std::vector<glm::vec4> motion(placement.size(), glm::vec4(0.0f));
+  std::vector<double> ms;
+  for (int s = 0; s < warmup + steps; ++s) {
+    SteerFrame frame = benchFrame(s);
+    auto begin = std::chrono::steady_clock::now();
+    Grid grid = buildGridCpu(placement, steer, params.cellSize, table);
+    steerCpu(grid, params, frame, placement, motion, goals, steer);
+    auto end = std::chrono::steady_clock::now();
+    if (s >= warmup) ms.push_back(std::chrono::duration<double, std::milli>(end - begin).count());
+    advanceCpu(placement, steer, goals, frame.dt);
+  }
+  return median(ms);
 }
 }  // namespace
 
@@ -36,6 +63,7 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     goals[i] = glm::vec4(p + 1.3f * dir, 2.0f, 1.0f);
     steer[i] = glm::vec4(1.3f * dir, 1.3f, 0.0f);
   }
+  const std::vector<glm::vec4> startPlacement = crowd.placement, startSteer = steer;
   AvoidancePrograms programs(context);
   CrowdBuffers buffers = uploadCrowd(context, crowd);
   SteerBuffers agentBuffers = uploadSteer(context, goals, steer);
@@ -47,10 +75,7 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
   std::vector<double> countMs, scanMs, scatterMs, gridMs, steerMs, totalMs;
   const int warmup = 2;
   for (int s = 0; s < warmup + steps; ++s) {
-    SteerFrame frame;
-    frame.dt = 0.05f;
-    frame.secondsLeft = 1.0f - 0.05f * float(s % 20);
-    frame.step = uint32_t(s);
+    SteerFrame frame = benchFrame(s);
     GridJob gridJob{&buffers, &agentBuffers, &grid, &timestamps};
     AvoidanceJob avoid{&buffers, &agentBuffers, &grid, params, frame};
     AdvanceJob advance{&buffers, &agentBuffers, frame.dt};
@@ -77,6 +102,7 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     totalMs.push_back(timestamps.millisecondsBetween(ticks, 0, 4));
   }
   AvoidanceTiming t;
+  t.cpuMs = cpuTwinStepMs(startPlacement, startSteer, goals, grid.table, params, steps, warmup);
   t.agents = agents;
   t.gridMs = median(gridMs);
   t.countMs = median(countMs);
