@@ -109,17 +109,17 @@ bool screened(vec4 other) {
   return near && dist2 > 1e-8 && course;
 }
 
-// A screened candidate's effect on this lane (none where `has` is false).
-void evaluate(vec4 other, bool has) {
+// A screened candidate's effect on this lane.
+void evaluate(vec4 other) {
   vec2 x = gPos - other.xy;
   if (kPolicy == kSteerPolicyRule) {
     vec2 theirs = other.zw;
-    gBlocked = gBlocked || (has && collides(x, gVPref - theirs, push.lookahead, gDiameter2));
-    gKeepBlocked = gKeepBlocked || (has && collides(x, gKeep - theirs, push.lookahead, gDiameter2));
+    gBlocked = gBlocked || collides(x, gVPref - theirs, push.lookahead, gDiameter2);
+    gKeepBlocked = gKeepBlocked || collides(x, gKeep - theirs, push.lookahead, gDiameter2);
     for (uint d = 0u; d < kRuleDraws; ++d)
-      if (has && collides(x, gDraws[d] - theirs, push.lookahead, gDiameter2)) gDrawBlocked |= 1u << d;
+      if (collides(x, gDraws[d] - theirs, push.lookahead, gDiameter2)) gDrawBlocked |= 1u << d;
   } else if (kPolicy == kSteerPolicyTtc) {
-    gForce += toFixed(has ? ttcForce(x, gVCur - other.zw, dot(x, x)) : vec2(0.0));
+    gForce += toFixed(ttcForce(x, gVCur - other.zw, dot(x, x)));
   }
 }
 
@@ -157,11 +157,12 @@ void scanRound(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
       offset += kChunk;
     } while (offset < kBlock && base + offset < total);
     bits = gMine ? bits : 0u;
-    while (subgroupAny(bits != 0u)) {
-      bool has = bits != 0u;
+    // A divergent loop: lavapipe leaves it when no lane has marks left (one vector test, where
+    // subgroupAny is a loop over the lanes).
+    while (bits != 0u) {
       uint slot = slotOf(base + uint(findLSB(bits)), runBegin, runLength);
       bits &= bits - 1u;
-      evaluate(fromWords(sorted[min(slot, push.agentCount - 1u)]), has);
+      evaluate(fromWords(sorted[min(slot, push.agentCount - 1u)]));
     }
     base += kBlock;
   } while (base < total);
