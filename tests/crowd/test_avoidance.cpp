@@ -58,13 +58,13 @@ struct TwinDifference {
 // Steps the GPU jobs and the CPU twin side by side. With `resync`, the GPU starts every step
 // from the CPU's state, so each step compares the passes on the same input; without, both
 // evolve on their own (rounding differences then grow as the dynamics amplify them).
-TwinDifference compareTwin(crowd::SteerPolicy policy, uint32_t n, int steps, bool resync,
-                           const std::vector<crowd::ClipSpeeds>& sets = {}) {
+TwinDifference compareTwinOn(crowd::SteerPolicy policy, Agents cpu, int steps, bool resync,
+                             const std::vector<crowd::ClipSpeeds>& sets = {}) {
   gpu::Context& ctx = test::gpuContext();
   crowd::AvoidancePrograms programs(ctx);
   crowd::AvoidanceParams params;
   params.policy = policy;
-  Agents cpu = denseAgents(n, 17);
+  const auto n = uint32_t(cpu.crowd.size());
   crowd::CrowdBuffers buffers = crowd::uploadCrowd(ctx, cpu.crowd);
   crowd::SteerBuffers agents = crowd::uploadSteer(ctx, cpu.goals, cpu.steer);
   crowd::GridBuffers grid = crowd::makeGridBuffers(ctx, n, params.cellSize);
@@ -106,6 +106,11 @@ TwinDifference compareTwin(crowd::SteerPolicy policy, uint32_t n, int steps, boo
   }
   CHECK(ctx.validationMessageCount() == 0);
   return worst;
+}
+
+TwinDifference compareTwin(crowd::SteerPolicy policy, uint32_t n, int steps, bool resync,
+                           const std::vector<crowd::ClipSpeeds>& sets = {}) {
+  return compareTwinOn(policy, denseAgents(n, 17), steps, resync, sets);
 }
 
 // Two square blocks of agents `spacing` apart crossing at right angles through the origin.
@@ -194,6 +199,31 @@ TEST_CASE("avoidance: GPU vs CPU twin over several steps on 2000 agents, each po
   TwinDifference free = compareTwin(crowd::SteerPolicy::Ttc, 2000, 3, false);
   MESSAGE("ttc, independent runs over 3 steps: max heading difference ", free.heading);
   CHECK(free.heading <= 1e-4f);
+}
+
+TEST_CASE("avoidance: agents on top of each other or at the sensing distance steer alike on GPU and CPU") {
+  // The GPU pass screens candidates before evaluating them: it drops those at x = 0 (TTC: also
+  // within 0.1 mm) and beyond the sensing distance, where the twin's policies add nothing. Pairs
+  // placed exactly there check that nothing the twin counts is dropped.
+  Agents a = denseAgents(400, 5);
+  const float offsets[] = {0.0f, 5e-5f, 0.6f, 2.999f, 3.0f};
+  const size_t base = a.crowd.size();
+  for (size_t k = 0; k < base; ++k) {
+    glm::vec4 p = a.crowd.placement[k];
+    p.x += offsets[k % 5];
+    a.crowd.placement.push_back(p);
+    a.crowd.motion.push_back(a.crowd.motion[k]);
+    a.crowd.clipSet.push_back(0);
+    a.goals.push_back(a.goals[k]);
+    a.steer.push_back(glm::vec4(-glm::vec2(a.steer[k]), a.steer[k].z, 0.0f));  // heading back at it
+  }
+  for (crowd::SteerPolicy policy : {crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc}) {
+    CAPTURE(crowd::steerPolicyName(policy));
+    TwinDifference d = compareTwinOn(policy, a, 1, false);
+    CHECK(d.heading <= 1e-4f);
+    CHECK(d.velocity <= 1e-4f);
+    CHECK(d.wTarget <= 1e-4f);
+  }
 }
 
 TEST_CASE("avoidance: each clip pair's range maps speed to w through its own root speeds (GPU = twin)") {
