@@ -1,7 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-#extension GL_KHR_shader_subgroup_vote : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Motion cache, step 3 (an indirect dispatch, one invocation per fresh slot × segment): synthesize
 // the character-space pose of every entry inserted this frame at its bucket's speed, once for

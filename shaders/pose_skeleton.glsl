@@ -192,10 +192,12 @@ void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 or
   // The hierarchy is composed directly in world space (root = M · root pose), which saves a
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
-    // A subgroup-uniform skip: lavapipe runs 8 characters per SIMD group and can only jump over
-    // the joint when none of them needs it; a lane that does not need it just does not write.
+    // A per-lane skip: a GPU jumps over the joint when no lane of the group needs it; lavapipe
+    // runs the joint with those lanes masked, so their loads and stores do not happen. (Testing
+    // subgroupAny first, to jump when no lane needs it, cost lavapipe more than it saved: its
+    // subgroupAny is a loop over the lanes, and 100k characters with LOD took 6% longer.)
     bool jointNeeded = !kUseMasks || ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
-    if (kUseMasks && !subgroupAny(jointNeeded)) continue;
+    if (!jointNeeded) continue;
     vec4 q = slerpFast(slowTexel(slowRow + 2 * j), fastTexel(fastRow + 2 * j), weights);
     vec3 o = boneFixed(j) ? fixedBoneOffset(j)
              : offsetAnimated(j)
@@ -230,7 +232,7 @@ void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 or
       orientation = quatMul(parentRotation, align);
       if (len <= 1e-6) radius = 0.0;  // zero-length bones are not drawn
     }
-    if (!kUseMasks || jointNeeded) writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
+    writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
   }
 }
 

@@ -1,7 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-#extension GL_KHR_shader_subgroup_vote : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Pose pass, one invocation per character: per joint slerp of the slow and fast motion textures
 // by w (shortest arc), hierarchy composition down the parent array, and the joint draw matrices
