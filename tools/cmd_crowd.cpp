@@ -39,8 +39,11 @@ struct RunOptions {
     cmd->add_option("--policy", policies, policyHelp);
     cmd->add_option("--dt", dt, "Simulation step in seconds, 1/n of a second (default 0.05)");
     cmd->add_option("--radius", radius, "Safe radius of each agent in metres (default 0.3)");
-    cmd->add_option("--step-time", stepTime, "Seconds per annotation step of the trajectories (default: 0.667 for biwi_eth, else 0.4)");
-    cmd->add_option("--seed", seed, "Random seed (placement jitter, source choice, the rule's turns)");
+    cmd->add_option(
+        "--step-time", stepTime,
+        "Seconds per annotation step of the trajectories (default: 0.667 for biwi_eth, else 0.4)");
+    cmd->add_option("--seed", seed,
+                    "Random seed (placement jitter, source choice, the rule's turns)");
     cmd->add_flag("--cpu", cpu, "Run the CPU twin instead of the GPU passes");
     cmd->add_option("--device", device, "Vulkan device by index or name");
     cmd->add_flag("--json", json, "Print the results as JSON");
@@ -50,7 +53,8 @@ struct RunOptions {
     std::vector<crowd::SteerPolicy> out;
     for (const std::string& name : policies) {
       if (name == "all") {
-        out.insert(out.end(), {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc});
+        out.insert(out.end(),
+                   {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc});
         continue;
       }
       std::optional<crowd::SteerPolicy> p = crowd::parseSteerPolicy(name);
@@ -61,7 +65,8 @@ struct RunOptions {
   }
 
   crowd::SimulationOptions simulation(crowd::SteerPolicy policy) const {
-    if (!(seconds >= 1.0f && seconds <= 100000.0f)) fail("--seconds ", seconds, ": expected 1..100000");
+    if (!(seconds >= 1.0f && seconds <= 100000.0f))
+      fail("--seconds ", seconds, ": expected 1..100000");
     crowd::SimulationOptions o;
     o.avoidance.policy = policy;
     o.avoidance.radius = radius;
@@ -95,7 +100,9 @@ nlohmann::json runJson(crowd::SteerPolicy policy, const crowd::SimulationResult&
 }
 
 void printRun(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
-  std::printf("%s", crowd::formatMetrics(concat("policy ", crowd::steerPolicyName(policy)), r.metrics).c_str());
+  std::printf(
+      "%s",
+      crowd::formatMetrics(concat("policy ", crowd::steerPolicyName(policy)), r.metrics).c_str());
   std::printf("  %u steps in %.2f s wall\n", r.steps, r.wallSeconds);
 }
 
@@ -109,7 +116,8 @@ void runSimulate(const SimulateArgs& a) {
   const sb::Legend legend = a.legend.empty() ? sb::Legend{} : sb::loadLegend(a.legend);
   const sb::Storyboard board = sb::readStoryboard(a.storyboard, legend, false);
   if (board.glyphs.empty()) fail(a.storyboard, ": no valid glyph, so no agent to simulate");
-  const crowd::Trajectories tracks = crowd::loadTrajectories(a.trajectories, a.run.trajectoryOptions());
+  const crowd::Trajectories tracks =
+      crowd::loadTrajectories(a.trajectories, a.run.trajectoryOptions());
   const std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(tracks);
 
   const anim::ClipPair clips = anim::defaultRunPair();
@@ -124,9 +132,11 @@ void runSimulate(const SimulateArgs& a) {
 
   crowd::SimulationSetup setup;
   setup.crowd = placed.crowd;
-  const std::vector<uint32_t> assigned = crowd::assignSources(sources, placed.speedRange, a.run.seed);
+  const std::vector<uint32_t> assigned =
+      crowd::assignSources(sources, placed.speedRange, a.run.seed);
   std::vector<float> maxSpeed;
-  for (const crowd::SpeedRange& r : placed.speedRange) maxSpeed.push_back(std::max(1.0f, 1.25f * r.max));
+  for (const crowd::SpeedRange& r : placed.speedRange)
+    maxSpeed.push_back(std::max(1.0f, 1.25f * r.max));
   setup.paths = crowd::followSources(setup.crowd, sources, assigned, maxSpeed);
 
   std::unique_ptr<gpu::Context> context = makeContext(a.run);
@@ -138,25 +148,31 @@ void runSimulate(const SimulateArgs& a) {
   doc["sources"] = sources.size();
   doc["device"] = context ? context->info().name : std::string("cpu twin");
   if (!a.run.json)
-    std::printf("%s: %zu agents (%zu invalid glyphs skipped) following %zu tracked people of %s, on %s\n",
-                a.storyboard.c_str(), board.glyphs.size(), board.invalid.size(), sources.size(), a.trajectories.c_str(),
-                doc["device"].get<std::string>().c_str());
+    std::printf(
+        "%s: %zu agents (%zu invalid glyphs skipped) following %zu tracked people of %s, on %s\n",
+        a.storyboard.c_str(), board.glyphs.size(), board.invalid.size(), sources.size(),
+        a.trajectories.c_str(), doc["device"].get<std::string>().c_str());
   for (crowd::SteerPolicy policy : a.run.parsedPolicies()) {
     crowd::SimulationOptions options = a.run.simulation(policy);
     options.slowSpeed = placeOptions.slowSpeed;
     options.fastSpeed = placeOptions.fastSpeed;
     crowd::SimulationResult result = crowd::simulateCrowd(context.get(), setup, options);
-    if (a.run.json) doc["runs"].push_back(runJson(policy, result));
-    else printRun(policy, result);
+    if (a.run.json)
+      doc["runs"].push_back(runJson(policy, result));
+    else
+      printRun(policy, result);
   }
   if (a.run.json) std::printf("%s\n", doc.dump(2).c_str());
 }
 
 void addSimulate(CLI::App& parent) {
-  auto* cmd = parent.add_subcommand("simulate", "Run a storyboard crowd along path vectors from tracked people");
+  auto* cmd = parent.add_subcommand(
+      "simulate", "Run a storyboard crowd along path vectors from tracked people");
   auto args = std::make_shared<SimulateArgs>();
   cmd->add_option("--storyboard", args->storyboard, "Storyboard PNG (glyphs)")->required();
-  cmd->add_option("--trajectories", args->trajectories, "Tracked people: 'frame ped x y' text or ETH obsmat.txt")->required();
+  cmd->add_option("--trajectories", args->trajectories,
+                  "Tracked people: 'frame ped x y' text or ETH obsmat.txt")
+      ->required();
   cmd->add_option("--legend", args->legend, "Colour legend JSON (default: DESIGN.md's colours)");
   cmd->add_option("--seconds", args->run.seconds, "Seconds simulated (default 20)");
   cmd->add_option("--cell", args->cell, "Metres per storyboard pixel (default 0.5)");
@@ -189,17 +205,19 @@ void runMetrics(MetricsArgs a) {
     entry["seconds_per_step"] = tracks.secondsPerStep;
     entry["real"] = nlohmann::json::parse(crowd::metricsJson(real));
     if (!a.run.json) {
-      std::printf("%s: %zu people (%zu span 2+ s), frame step %d = %.3f s, replay of %u s on %s\n", file.c_str(),
-                  tracks.tracks.size(), sources.size(), tracks.frameStep, tracks.secondsPerStep, span,
-                  doc["device"].get<std::string>().c_str());
+      std::printf("%s: %zu people (%zu span 2+ s), frame step %d = %.3f s, replay of %u s on %s\n",
+                  file.c_str(), tracks.tracks.size(), sources.size(), tracks.frameStep,
+                  tracks.secondsPerStep, span, doc["device"].get<std::string>().c_str());
       std::printf("%s", crowd::formatMetrics("real people", real).c_str());
     }
     for (crowd::SteerPolicy policy : a.run.parsedPolicies()) {
       crowd::SimulationOptions options = a.run.simulation(policy);
       options.seconds = a.run.seconds > 0.0f ? std::min(float(span), a.run.seconds) : float(span);
       crowd::SimulationResult result = crowd::simulateCrowd(context.get(), setup, options);
-      if (a.run.json) entry["runs"].push_back(runJson(policy, result));
-      else printRun(policy, result);
+      if (a.run.json)
+        entry["runs"].push_back(runJson(policy, result));
+      else
+        printRun(policy, result);
     }
     doc["files"].push_back(entry);
   }
@@ -207,12 +225,15 @@ void runMetrics(MetricsArgs a) {
 }
 
 void addMetrics(CLI::App& parent) {
-  auto* cmd = parent.add_subcommand(
-      "metrics", "Replay tracked people as agents with each avoidance policy and compare with the real people");
+  auto* cmd = parent.add_subcommand("metrics",
+                                    "Replay tracked people as agents with each avoidance policy "
+                                    "and compare with the real people");
   auto args = std::make_shared<MetricsArgs>();
   args->run.policies = {"all"};
   args->run.seconds = 0.0f;
-  cmd->add_option("--trajectories", args->trajectories, "Tracked people files ('frame ped x y' or obsmat.txt)")->required();
+  cmd->add_option("--trajectories", args->trajectories,
+                  "Tracked people files ('frame ped x y' or obsmat.txt)")
+      ->required();
   cmd->add_option("--seconds", args->run.seconds, "Seconds replayed (default: the whole file)");
   args->run.add(cmd, "Avoidance policies: none, rule, ttc or all (default all)");
   cmd->callback([args] {
@@ -230,7 +251,9 @@ struct BenchArgs {
 };
 
 void addBench(CLI::App& parent) {
-  auto* cmd = parent.add_subcommand("bench", "GPU time of one steering step (grid + avoidance), against the CPU twin on one thread");
+  auto* cmd = parent.add_subcommand(
+      "bench",
+      "GPU time of one steering step (grid + avoidance), against the CPU twin on one thread");
   auto args = std::make_shared<BenchArgs>();
   cmd->add_option("--agents", args->agents, "Crowd sizes (default 10000 100000)");
   cmd->add_option("--policy", args->policies, "Policies (default rule ttc)");
@@ -246,24 +269,28 @@ void addBench(CLI::App& parent) {
     gpu::ContextOptions options;
     options.device = args->device;
     gpu::Context context(options);
-    std::printf("device: %s (%s)\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n", context.info().name.c_str(),
-                context.info().driver.c_str(), "policy", "agents", "count ms", "scan ms", "scatter ms", "grid ms",
-                "steer ms", "total ms", "cpu ms", "cpu/gpu");
+    std::printf("device: %s (%s)\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n",
+                context.info().name.c_str(), context.info().driver.c_str(), "policy", "agents",
+                "count ms", "scan ms", "scatter ms", "grid ms", "steer ms", "total ms", "cpu ms",
+                "cpu/gpu");
     for (crowd::SteerPolicy policy : policies)
       for (uint32_t n : args->agents) {
         crowd::AvoidanceParams params;
         params.policy = policy;
-        crowd::AvoidanceTiming t = crowd::benchmarkAvoidance(context, n, params, args->steps, args->density);
+        crowd::AvoidanceTiming t =
+            crowd::benchmarkAvoidance(context, n, params, args->steps, args->density);
         std::printf("%-8s %9u %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %8.2f\n",
-                    std::string(crowd::steerPolicyName(policy)).c_str(), n, t.countMs, t.scanMs, t.scatterMs,
-                    t.gridMs, t.steerMs, t.totalMs, t.cpuMs, t.cpuMs / std::max(t.totalMs, 1e-6));
+                    std::string(crowd::steerPolicyName(policy)).c_str(), n, t.countMs, t.scanMs,
+                    t.scatterMs, t.gridMs, t.steerMs, t.totalMs, t.cpuMs,
+                    t.cpuMs / std::max(t.totalMs, 1e-6));
         std::fflush(stdout);
       }
   });
 }
 
 void addCrowdCommands(CLI::App& app, int& /*exitCode*/) {
-  auto* crowd = app.add_subcommand("crowd", "Storyboard crowds on path vectors with collision avoidance");
+  auto* crowd =
+      app.add_subcommand("crowd", "Storyboard crowds on path vectors with collision avoidance");
   crowd->require_subcommand(1);
   addSimulate(*crowd);
   addMetrics(*crowd);

@@ -30,8 +30,8 @@ SteerFrame benchFrame(int s) {
 
 // The CPU twin (one thread) over the same steps from the same start: grid + steering, median ms.
 double cpuTwinStepMs(std::vector<glm::vec4> placement, std::vector<glm::vec4> steer,
-                     const std::vector<glm::vec4>& goals, const GridTable& table, const AvoidanceParams& params,
-                     int steps, int warmup) {
+                     const std::vector<glm::vec4>& goals, const GridTable& table,
+                     const AvoidanceParams& params, int steps, int warmup) {
   std::vector<glm::vec4> motion(placement.size(), glm::vec4(0.0f));
   std::vector<double> ms;
   for (int s = 0; s < warmup + steps; ++s) {
@@ -47,9 +47,10 @@ double cpuTwinStepMs(std::vector<glm::vec4> placement, std::vector<glm::vec4> st
 }
 }  // namespace
 
-AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents, const AvoidanceParams& params,
-                                   int steps, float density) {
-  if (agents == 0 || steps < 1 || !(density > 0.0f)) fail("benchmark needs agents, steps and a positive density");
+AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
+                                   const AvoidanceParams& params, int steps, float density) {
+  if (agents == 0 || steps < 1 || !(density > 0.0f))
+    fail("benchmark needs agents, steps and a positive density");
   Crowd crowd;
   crowd.resize(agents);
   std::vector<glm::vec4> goals(agents), steer(agents);
@@ -82,7 +83,7 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     timestamps.reset();
     gpu::beginCommands(cmd);
     timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);  // 0
-    gridJob.record(cmd, programs);                              // 1, 2, 3
+    gridJob.record(cmd, programs);                             // 1, 2, 3
     gpu::computeToComputeBarrier(cmd);
     avoid.record(cmd, programs);
     timestamps.write(cmd);  // 4

@@ -16,14 +16,15 @@ struct AvoidanceTiming {
   double scatterMs = 0.0;  // scatter
   double steerMs = 0.0;    // the policy pass
   double totalMs = 0.0;    // both, plus the barriers between them
-  double cpuMs = 0.0;      // the CPU twin's grid + steering on one thread, same steps from the same start
+  double cpuMs =
+      0.0;  // the CPU twin's grid + steering on one thread, same steps from the same start
   int steps = 0;
 };
 
 // Agents uniform in a square at `density` per m², each heading for a waypoint 1.3 m away in a
 // random direction; `steps` measured after 2 warm-up steps (positions advance between steps),
 // then the same steps again by the CPU twin.
-AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents, const AvoidanceParams& params,
-                                   int steps, float density = 0.5f);
+AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
+                                   const AvoidanceParams& params, int steps, float density = 0.5f);
 
 }  // namespace throng::crowd

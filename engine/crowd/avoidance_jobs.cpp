@@ -19,12 +19,15 @@ void throwIfInvalid(const std::string& job, const std::vector<std::string>& prob
 
 void requireBuffer(std::vector<std::string>& problems, const gpu::Buffer& buffer, VkDeviceSize need,
                    const char* name) {
-  if (!buffer) problems.push_back(concat("buffer '", name, "' is not allocated"));
+  if (!buffer)
+    problems.push_back(concat("buffer '", name, "' is not allocated"));
   else if (buffer.size() < need)
-    problems.push_back(concat("buffer '", name, "' holds ", buffer.size(), " bytes, ", need, " needed"));
+    problems.push_back(
+        concat("buffer '", name, "' holds ", buffer.size(), " bytes, ", need, " needed"));
 }
 
-void checkCrowdAndAgents(std::vector<std::string>& problems, const CrowdBuffers* crowd, const SteerBuffers* agents) {
+void checkCrowdAndAgents(std::vector<std::string>& problems, const CrowdBuffers* crowd,
+                         const SteerBuffers* agents) {
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
   if (!agents) problems.push_back("input 'agents' (goal and steer buffers) are missing");
   if (!crowd || !agents) return;
@@ -32,24 +35,30 @@ void checkCrowdAndAgents(std::vector<std::string>& problems, const CrowdBuffers*
   requireBuffer(problems, crowd->placement, bytes, "placement");
   requireBuffer(problems, crowd->motion, bytes, "motion");
   if (agents->count != crowd->count)
-    problems.push_back(concat("the crowd has ", crowd->count, " agents but the steering buffers ", agents->count));
+    problems.push_back(
+        concat("the crowd has ", crowd->count, " agents but the steering buffers ", agents->count));
   requireBuffer(problems, agents->goals, bytes, "goals");
   requireBuffer(problems, agents->steer, bytes, "steer");
 }
 
-void checkGrid(std::vector<std::string>& problems, const GridBuffers* grid, const CrowdBuffers* crowd) {
+void checkGrid(std::vector<std::string>& problems, const GridBuffers* grid,
+               const CrowdBuffers* crowd) {
   if (!grid) {
     problems.push_back("grid buffers are missing");
     return;
   }
   if (crowd && crowd->count > grid->agentCapacity)
-    problems.push_back(concat("the grid holds ", grid->agentCapacity, " agents, the crowd has ", crowd->count));
+    problems.push_back(
+        concat("the grid holds ", grid->agentCapacity, " agents, the crowd has ", crowd->count));
   const GridTable& t = grid->table;
-  if (t.cellCount == 0 || t.cellCount > kMaxGridCells || t.cellCount != (t.rowMask + 1u) << t.widthShift ||
-      ((t.rowMask + 1u) & t.rowMask) != 0 || t.rowMask < 31u || t.widthShift < 5u)
-    problems.push_back(concat("grid table of ", t.cellCount, " cells (", 1u << t.widthShift, " x ", t.rowMask + 1u,
-                              ") is not powers of two of at least 32 x 32 up to ", kMaxGridCells, " cells"));
-  if (!(grid->cellSize > 0.0f)) problems.push_back(concat("grid cell size must be positive, got ", grid->cellSize));
+  if (t.cellCount == 0 || t.cellCount > kMaxGridCells ||
+      t.cellCount != (t.rowMask + 1u) << t.widthShift || ((t.rowMask + 1u) & t.rowMask) != 0 ||
+      t.rowMask < 31u || t.widthShift < 5u)
+    problems.push_back(concat("grid table of ", t.cellCount, " cells (", 1u << t.widthShift, " x ",
+                              t.rowMask + 1u, ") is not powers of two of at least 32 x 32 up to ",
+                              kMaxGridCells, " cells"));
+  if (!(grid->cellSize > 0.0f))
+    problems.push_back(concat("grid cell size must be positive, got ", grid->cellSize));
 }
 
 GridPush gridPush(const GridBuffers& grid, uint32_t agents) {
@@ -65,17 +74,20 @@ GridPush gridPush(const GridBuffers& grid, uint32_t agents) {
 // Subgroup lanes the steering pass shares candidates among; throws when the device's subgroups
 // lack what the pass uses.
 uint32_t subgroupChunk(const gpu::Context& context) {
-  VkPhysicalDeviceSubgroupProperties subgroup{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceSubgroupProperties subgroup{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
   vkGetPhysicalDeviceProperties2(context.physicalDevice(), &properties);
   const VkSubgroupFeatureFlags needed =
-      VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT |
-      VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
+      VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT |
+      VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
   if ((subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0 ||
       (subgroup.supportedOperations & needed) != needed || subgroup.subgroupSize < 4)
-    fail("the steering pass needs compute subgroups of at least 4 lanes with vote, arithmetic and shuffle; ",
-         context.info().name, " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
-         subgroup.supportedOperations);
+    fail(
+        "the steering pass needs compute subgroups of at least 4 lanes with vote, arithmetic and "
+        "shuffle; ",
+        context.info().name, " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
+        subgroup.supportedOperations);
   return std::min(subgroup.subgroupSize, 32u);
 }
 
@@ -94,7 +106,8 @@ const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, int rang
   std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range}];
   if (!program) {
     const uint32_t specialization[] = {uint32_t(policy), uint32_t(range), chunk_};
-    program = std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
+    program =
+        std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
   }
   return *program;
 }
@@ -106,7 +119,8 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
   g.table = gridTable(agentCapacity);
   g.cellSize = cellSize;
   auto make = [&](VkDeviceSize bytes) {
-    return gpu::Buffer(context, std::max<VkDeviceSize>(bytes, 16), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    return gpu::Buffer(context, std::max<VkDeviceSize>(bytes, 16), gpu::kStorageUsage,
+                       gpu::MemoryUse::DeviceLocal);
   };
   g.cellRank = make(VkDeviceSize(g.agentCapacity) * 8);
   g.counts = make(VkDeviceSize(g.table.cellCount) * 4);
@@ -118,7 +132,8 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
 
 SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4> goals,
                          std::span<const glm::vec4> steer) {
-  if (goals.size() != steer.size()) fail("uploadSteer: ", goals.size(), " goals but ", steer.size(), " steer entries");
+  if (goals.size() != steer.size())
+    fail("uploadSteer: ", goals.size(), " goals but ", steer.size(), " steer entries");
   SteerBuffers b;
   b.count = uint32_t(goals.size());
   b.goals = gpu::makeStorageBuffer<glm::vec4>(context, goals);
@@ -140,18 +155,21 @@ void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   vkCmdFillBuffer(cmd, grid->counts.get(), 0, VkDeviceSize(grid->table.cellCount) * 4, 0);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  const gpu::Binding count[] = {gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, grid->cellRank),
+  const gpu::Binding count[] = {gpu::storageBinding(0, crowd->placement),
+                                gpu::storageBinding(1, grid->cellRank),
                                 gpu::storageBinding(2, grid->counts)};
   gpu::dispatch(cmd, programs.count, count, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scan[] = {gpu::storageBinding(0, grid->counts), gpu::storageBinding(1, grid->starts)};
+  const gpu::Binding scan[] = {gpu::storageBinding(0, grid->counts),
+                               gpu::storageBinding(1, grid->starts)};
   gpu::dispatch(cmd, programs.scan, scan, push, gpu_types::kScanThreads);
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scatter[] = {gpu::storageBinding(0, crowd->placement),  gpu::storageBinding(1, agents->steer),
-                                  gpu::storageBinding(2, grid->cellRank),     gpu::storageBinding(3, grid->starts),
-                                  gpu::storageBinding(4, grid->sortedIndex),  gpu::storageBinding(5, grid->sorted)};
+  const gpu::Binding scatter[] = {
+      gpu::storageBinding(0, crowd->placement),  gpu::storageBinding(1, agents->steer),
+      gpu::storageBinding(2, grid->cellRank),    gpu::storageBinding(3, grid->starts),
+      gpu::storageBinding(4, grid->sortedIndex), gpu::storageBinding(5, grid->sorted)};
   gpu::dispatch(cmd, programs.scatter, scatter, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
 }
@@ -167,10 +185,11 @@ std::vector<std::string> AvoidanceJob::validate() const {
     problems.push_back(e.what());
   }
   if (grid && grid->cellSize != params.cellSize)
-    problems.push_back(concat("the grid was built with ", grid->cellSize, " m cells, the parameters say ",
-                              params.cellSize, " m"));
+    problems.push_back(concat("the grid was built with ", grid->cellSize,
+                              " m cells, the parameters say ", params.cellSize, " m"));
   if (!(frame.dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", frame.dt));
-  if (!(frame.secondsLeft > 0.0f)) problems.push_back(concat("secondsLeft must be > 0, got ", frame.secondsLeft));
+  if (!(frame.secondsLeft > 0.0f))
+    problems.push_back(concat("secondsLeft must be > 0, got ", frame.secondsLeft));
   return problems;
 }
 
@@ -202,11 +221,12 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
     push.setFast[k] = sets[size_t(k)].fast;
   }
   const gpu::Binding bindings[] = {
-      gpu::storageBinding(0, crowd->placement),   gpu::storageBinding(1, crowd->motion),
-      gpu::storageBinding(2, agents->goals),      gpu::storageBinding(3, agents->steer),
-      gpu::storageBinding(4, grid->starts),       gpu::storageBinding(5, grid->sortedIndex),
+      gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, crowd->motion),
+      gpu::storageBinding(2, agents->goals),    gpu::storageBinding(3, agents->steer),
+      gpu::storageBinding(4, grid->starts),     gpu::storageBinding(5, grid->sortedIndex),
       gpu::storageBinding(6, grid->sorted)};
-  gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push, crowd->count);
+  gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
+                crowd->count);
 }
 
 std::vector<std::string> AdvanceJob::validate() const {
@@ -221,7 +241,8 @@ void AdvanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) 
   AdvancePush push{};
   push.agentCount = crowd->count;
   push.dt = dt;
-  const gpu::Binding bindings[] = {gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, agents->steer),
+  const gpu::Binding bindings[] = {gpu::storageBinding(0, crowd->placement),
+                                   gpu::storageBinding(1, agents->steer),
                                    gpu::storageBinding(2, agents->goals)};
   gpu::dispatch(cmd, programs.advance, bindings, push, crowd->count);
 }

@@ -166,8 +166,8 @@ std::vector<uint32_t> decodeSpecialization(const gpu::Context& context) {
       VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
   if ((subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0 ||
       (subgroup.supportedOperations & needed) != needed || subgroup.subgroupSize < 1)
-    fail("the cloth decode pass needs compute subgroups with shuffle; ",
-         context.info().name, " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
+    fail("the cloth decode pass needs compute subgroups with shuffle; ", context.info().name,
+         " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
          subgroup.supportedOperations);
   return {std::min(subgroup.subgroupSize, gpu_types::kClothDecodeRows)};
 }

@@ -71,9 +71,12 @@ TwinDifference compareTwinOn(crowd::SteerPolicy policy, Agents cpu, int steps, b
   TwinDifference worst;
   for (int s = 0; s < steps; ++s) {
     if (resync && s > 0) {
-      gpu::uploadBytes(ctx, buffers.placement, {reinterpret_cast<const uint8_t*>(cpu.crowd.placement.data()), n * 16});
-      gpu::uploadBytes(ctx, buffers.motion, {reinterpret_cast<const uint8_t*>(cpu.crowd.motion.data()), n * 16});
-      gpu::uploadBytes(ctx, agents.steer, {reinterpret_cast<const uint8_t*>(cpu.steer.data()), n * 16});
+      gpu::uploadBytes(ctx, buffers.placement,
+                       {reinterpret_cast<const uint8_t*>(cpu.crowd.placement.data()), n * 16});
+      gpu::uploadBytes(ctx, buffers.motion,
+                       {reinterpret_cast<const uint8_t*>(cpu.crowd.motion.data()), n * 16});
+      gpu::uploadBytes(ctx, agents.steer,
+                       {reinterpret_cast<const uint8_t*>(cpu.steer.data()), n * 16});
     }
     crowd::SteerFrame frame{0.05f, 1.0f - 0.05f * float(s), uint32_t(s), 1.0f, 3.0f, sets};
     crowd::GridJob gridJob{&buffers, &agents, &grid};
@@ -86,7 +89,8 @@ TwinDifference compareTwinOn(crowd::SteerPolicy policy, Agents cpu, int steps, b
       gpu::computeToComputeBarrier(cmd);
       advance.record(cmd, programs);
     });
-    crowd::Grid g = crowd::buildGridCpu(cpu.crowd.placement, cpu.steer, params.cellSize, crowd::gridTable(n));
+    crowd::Grid g =
+        crowd::buildGridCpu(cpu.crowd.placement, cpu.steer, params.cellSize, crowd::gridTable(n));
     crowd::steerCpu(g, params, frame, cpu.crowd.placement, cpu.crowd.motion, cpu.goals, cpu.steer);
     crowd::advanceCpu(cpu.crowd.placement, cpu.steer, cpu.goals, frame.dt);
     auto placement = gpu::readback<glm::vec4>(ctx, buffers.placement, n);
@@ -97,9 +101,12 @@ TwinDifference compareTwinOn(crowd::SteerPolicy policy, Agents cpu, int steps, b
       // The heading of a nearly stopped agent is the direction of a tiny velocity: rounding
       // turns it freely, so it is compared where the agent moves (the velocity always is).
       if (cpu.steer[i].z > 0.2f)
-        worst.heading = std::max(worst.heading, headingDifference(placement[i].w, cpu.crowd.placement[i].w));
-      worst.velocity = std::max(worst.velocity, glm::length(glm::vec2(steer[i]) - glm::vec2(cpu.steer[i])));
-      worst.position = std::max(worst.position, glm::length(glm::vec3(placement[i]) - glm::vec3(cpu.crowd.placement[i])));
+        worst.heading =
+            std::max(worst.heading, headingDifference(placement[i].w, cpu.crowd.placement[i].w));
+      worst.velocity =
+          std::max(worst.velocity, glm::length(glm::vec2(steer[i]) - glm::vec2(cpu.steer[i])));
+      worst.position = std::max(
+          worst.position, glm::length(glm::vec3(placement[i]) - glm::vec3(cpu.crowd.placement[i])));
       worst.wTarget = std::max(worst.wTarget, std::abs(motion[i].z - cpu.crowd.motion[i].z));
       worst.turned += cpu.steer[i].w == 1.0f;
     }
@@ -123,9 +130,11 @@ crowd::SimulationSetup crossing(int side, float spacing) {
   for (int block = 0; block < 2; ++block)
     for (int a = 0; a < side; ++a)
       for (int b = 0; b < side; ++b, ++i) {
-        float along = -10.0f - spacing * float(a), across = spacing * (float(b) - 0.5f * float(side - 1));
-        setup.crowd.placement[i] = block == 0 ? glm::vec4(along, 0.0f, across, 0.5f * kPi)  // walks +x
-                                              : glm::vec4(across + 0.3f, 0.0f, along, 0.0f);  // walks +z
+        float along = -10.0f - spacing * float(a),
+              across = spacing * (float(b) - 0.5f * float(side - 1));
+        setup.crowd.placement[i] = block == 0
+                                       ? glm::vec4(along, 0.0f, across, 0.5f * kPi)    // walks +x
+                                       : glm::vec4(across + 0.3f, 0.0f, along, 0.0f);  // walks +z
       }
   std::vector<uint32_t> source(setup.crowd.size(), 0);
   std::vector<float> maxSpeed(setup.crowd.size(), 2.0f);
@@ -143,11 +152,13 @@ TEST_CASE("avoidance jobs: validity") {
   CHECK(problems[1].find("'agents'") != std::string::npos);
   CHECK(problems[2].find("grid buffers are missing") != std::string::npos);
   crowd::AvoidancePrograms programs(test::gpuContext());
-  CHECK_THROWS_WITH_AS(grid.record(VK_NULL_HANDLE, programs), doctest::Contains("GridJob is invalid"), Error);
+  CHECK_THROWS_WITH_AS(grid.record(VK_NULL_HANDLE, programs),
+                       doctest::Contains("GridJob is invalid"), Error);
   crowd::AdvanceJob advance;
   advance.dt = -1.0f;
   CHECK(contains(advance.validate(), "dt must be >= 0"));
-  CHECK_THROWS_WITH_AS(advance.record(VK_NULL_HANDLE, programs), doctest::Contains("AdvanceJob is invalid"), Error);
+  CHECK_THROWS_WITH_AS(advance.record(VK_NULL_HANDLE, programs),
+                       doctest::Contains("AdvanceJob is invalid"), Error);
 }
 
 TEST_CASE("avoidance jobs: mismatched buffers, parameters and frames are reported") {
@@ -181,27 +192,33 @@ TEST_CASE("avoidance jobs: mismatched buffers, parameters and frames are reporte
 }
 
 TEST_CASE("avoidance: GPU vs CPU twin over several steps on 2000 agents, each policy") {
-  for (crowd::SteerPolicy policy : {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc}) {
+  for (crowd::SteerPolicy policy :
+       {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc}) {
     CAPTURE(crowd::steerPolicyName(policy));
     // TTC's near-contact forces amplify rounding by about 4x per step in this dense crowd, so
     // its independent runs part after a few steps; every step is compared on the same input.
     const bool resync = policy == crowd::SteerPolicy::Ttc;
     TwinDifference d = compareTwin(policy, 2000, 10, resync);
-    MESSAGE(crowd::steerPolicyName(policy), std::string(resync ? " (resynced each step)" : " (independent runs)"),
-            ": max |GPU - CPU| heading ", d.heading, " rad, velocity ", d.velocity, " m/s, position ", d.position,
-            " m, wTarget ", d.wTarget, "; rule turns in the last step: ", d.turned);
+    MESSAGE(crowd::steerPolicyName(policy),
+            std::string(resync ? " (resynced each step)" : " (independent runs)"),
+            ": max |GPU - CPU| heading ", d.heading, " rad, velocity ", d.velocity,
+            " m/s, position ", d.position, " m, wTarget ", d.wTarget,
+            "; rule turns in the last step: ", d.turned);
     CHECK(d.heading <= 1e-4f);
     CHECK(d.velocity <= 1e-4f);
     CHECK(d.position <= 1e-4f);
     CHECK(d.wTarget <= 1e-4f);
-    if (policy == crowd::SteerPolicy::Rule) CHECK(d.turned > 20);  // the test exercises the random turn
+    if (policy == crowd::SteerPolicy::Rule)
+      CHECK(d.turned > 20);  // the test exercises the random turn
   }
   TwinDifference free = compareTwin(crowd::SteerPolicy::Ttc, 2000, 3, false);
   MESSAGE("ttc, independent runs over 3 steps: max heading difference ", free.heading);
   CHECK(free.heading <= 1e-4f);
 }
 
-TEST_CASE("avoidance: agents on top of each other or at the sensing distance steer alike on GPU and CPU") {
+TEST_CASE(
+    "avoidance: agents on top of each other or at the sensing distance steer alike on GPU and "
+    "CPU") {
   // The GPU pass screens candidates before evaluating them: it drops those at x = 0 (TTC: also
   // within 0.1 mm) and beyond the sensing distance, where the twin's policies add nothing. Pairs
   // placed exactly there check that nothing the twin counts is dropped.
@@ -226,9 +243,11 @@ TEST_CASE("avoidance: agents on top of each other or at the sensing distance ste
   }
 }
 
-TEST_CASE("avoidance: each clip pair's range maps speed to w through its own root speeds (GPU = twin)") {
+TEST_CASE(
+    "avoidance: each clip pair's range maps speed to w through its own root speeds (GPU = twin)") {
   // Four ranges as a storyboard crowd ordered by clip set has them; the third stands (no travel).
-  const std::vector<crowd::ClipSpeeds> sets = {{1.0f, 1.6f, 500}, {2.5f, 4.5f, 900}, {0.0f, 0.0f, 1400}, {0.8f, 1.6f, 2000}};
+  const std::vector<crowd::ClipSpeeds> sets = {
+      {1.0f, 1.6f, 500}, {2.5f, 4.5f, 900}, {0.0f, 0.0f, 1400}, {0.8f, 1.6f, 2000}};
   TwinDifference d = compareTwin(crowd::SteerPolicy::Ttc, 2000, 2, true, sets);
   CHECK(d.wTarget <= 1e-4f);
   CHECK(d.velocity <= 1e-4f);
@@ -238,7 +257,8 @@ TEST_CASE("avoidance: each clip pair's range maps speed to w through its own roo
   CHECK(table[1].slow == 2.5f);
   CHECK(table[3].end == 2000u);
   frame.sets = {{1.0f, 2.0f, 10}, {1.0f, 2.0f, 5}};
-  CHECK_THROWS_WITH_AS(crowd::clipSpeedTable(frame), doctest::Contains("clip set 1 ends at agent 5"), Error);
+  CHECK_THROWS_WITH_AS(crowd::clipSpeedTable(frame),
+                       doctest::Contains("clip set 1 ends at agent 5"), Error);
   frame.sets.assign(5, {1.0f, 2.0f, 10});
   CHECK_THROWS_WITH_AS(crowd::clipSpeedTable(frame), doctest::Contains("at most 4"), Error);
 }
@@ -269,16 +289,20 @@ TEST_CASE("avoidance: crossing flows collide less with the rule and far less wit
   crowd::SimulationOptions options;
   options.seconds = 24.0f;
   double rate[3];
-  for (crowd::SteerPolicy policy : {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc}) {
+  for (crowd::SteerPolicy policy :
+       {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc}) {
     options.avoidance.policy = policy;
     crowd::SimulationResult r = crowd::simulateCrowd(&test::gpuContext(), setup, options);
     rate[uint32_t(policy)] = r.metrics.collisionsPerAgentSecond;
     float least = 1e9f;
     for (size_t i = 0; i < r.crowd.size(); ++i)
-      least = std::min(least, glm::length(glm::vec2(r.crowd.placement[i].x, r.crowd.placement[i].z) - setup.paths.start[i]));
+      least =
+          std::min(least, glm::length(glm::vec2(r.crowd.placement[i].x, r.crowd.placement[i].z) -
+                                      setup.paths.start[i]));
     MESSAGE("crossing, ", setup.crowd.size(), " agents, ", crowd::steerPolicyName(policy), ": ",
-            r.metrics.collisionsPerAgentSecond, " collisions per agent-second, mean path error ", r.metrics.meanPathError,
-            " m, speed KS ", r.metrics.speedKs, ", least progress ", least, " m");
+            r.metrics.collisionsPerAgentSecond, " collisions per agent-second, mean path error ",
+            r.metrics.meanPathError, " m, speed KS ", r.metrics.speedKs, ", least progress ", least,
+            " m");
     CHECK(least > 5.0f);  // nobody is stuck at the crossing
   }
   CHECK(rate[0] > 0.1);
@@ -292,16 +316,19 @@ TEST_CASE("avoidance: a dense crossing of 1152 agents runs without deadlock unde
   crowd::SimulationOptions options;
   options.seconds = 30.0f;
   options.avoidance.policy = crowd::SteerPolicy::None;
-  const double unavoided = crowd::simulateCrowd(&test::gpuContext(), setup, options).metrics.collisionsPerAgentSecond;
+  const double unavoided =
+      crowd::simulateCrowd(&test::gpuContext(), setup, options).metrics.collisionsPerAgentSecond;
   for (crowd::SteerPolicy policy : {crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc}) {
     options.avoidance.policy = policy;
     crowd::SimulationResult r = crowd::simulateCrowd(&test::gpuContext(), setup, options);
     float least = 1e9f;
     for (size_t i = 0; i < r.crowd.size(); ++i)
-      least = std::min(least, glm::length(glm::vec2(r.crowd.placement[i].x, r.crowd.placement[i].z) - setup.paths.start[i]));
-    MESSAGE("dense crossing, ", crowd::steerPolicyName(policy), ": ", r.metrics.collisionsPerAgentSecond,
-            " collisions per agent-second (none: ", unavoided, "), least progress ", least, " m, mean speed ",
-            r.metrics.meanSpeed, " m/s");
+      least =
+          std::min(least, glm::length(glm::vec2(r.crowd.placement[i].x, r.crowd.placement[i].z) -
+                                      setup.paths.start[i]));
+    MESSAGE("dense crossing, ", crowd::steerPolicyName(policy), ": ",
+            r.metrics.collisionsPerAgentSecond, " collisions per agent-second (none: ", unavoided,
+            "), least progress ", least, " m, mean speed ", r.metrics.meanSpeed, " m/s");
     CHECK(least > 1.0f);
     CHECK(r.metrics.collisionsPerAgentSecond < 0.7 * unavoided);
   }
