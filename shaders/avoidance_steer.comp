@@ -14,11 +14,12 @@
 // SIMD loop where a divergent branch costs both sides and a loop runs as often as its longest
 // lane: the lanes share one candidate list. Lanes in one grid row (consecutive slots nearly
 // always are) take the union of their neighbourhoods, which is one or two runs of slots per
-// row; each round every lane loads one candidate (one gather for kChunk candidates) and
+// row; every lane loads one candidate at a time (one gather for kChunk candidates) and
 // subgroupShuffle with a constant lane hands each candidate to all lanes in turn (lavapipe 22.3
 // turns subgroupBroadcast into a search for the first active lane per component: a TTC step
-// took 2.7 times as long with it). Candidates outside a lane's own neighbourhood lie beyond the
-// sensing distance and drop out in the distance test.
+// took 2.7 times as long with it). Every lane screens every candidate cheaply and marks those
+// that can change its steering (scanRound); candidates outside a lane's own neighbourhood lie
+// beyond the sensing distance and are never marked. Only marked ones are evaluated.
 #include "crowd_types.h"
 #include "avoidance_common.glsl"
 
@@ -48,7 +49,7 @@ u64vec2 toWords(vec4 v) {
 }
 layout(push_constant) uniform Push { SteerPush push; };
 
-// This invocation's state, updated by every candidate it considers.
+// This invocation's state, updated by every candidate it evaluates.
 bool gMine;  // the lane takes part in the current round
 vec2 gPos, gVCur, gVPref, gKeep;
 vec2 gDraws[kRuleDraws];
