@@ -16,8 +16,8 @@ struct AvoidanceTiming {
   double scatterMs = 0.0;  // scatter
   double steerMs = 0.0;    // the policy pass
   double totalMs = 0.0;    // both, plus the barriers between them
-  double cpuMs =
-      0.0;  // the CPU twin's grid + steering on one thread, same steps from the same start
+  // The CPU twin's grid + steering on one thread, the same steps from the same start.
+  double cpuMs = 0.0;
   int steps = 0;
 };
 
