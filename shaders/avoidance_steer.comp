@@ -22,6 +22,7 @@
 // beyond the sensing distance and are never marked. Only marked ones are evaluated.
 #include "crowd_types.h"
 #include "avoidance_common.glsl"
+#include "words64.glsl"
 
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kPolicy = kSteerPolicyTtc;
@@ -40,13 +41,6 @@ layout(std430, binding = 3) writeonly buffer SteerWords { u64vec2 steerWords[]; 
 layout(std430, binding = 4) readonly buffer Starts { uint starts[]; };
 layout(std430, binding = 5) readonly buffer SortedIndex { uint sortedIndex[]; };
 layout(std430, binding = 6) readonly buffer Sorted { u64vec2 sorted[]; };
-// vec4s are read as two 64-bit words: lavapipe loads a vector one component per lane at a time.
-vec4 fromWords(u64vec2 words) {
-  return vec4(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y)));
-}
-u64vec2 toWords(vec4 v) {
-  return u64vec2(packUint2x32(floatBitsToUint(v.xy)), packUint2x32(floatBitsToUint(v.zw)));
-}
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it evaluates.

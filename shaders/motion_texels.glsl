@@ -1,10 +1,11 @@
 // The motion texels the pose pass and the cache fill read (texel (x, f) is element f·2J + x),
-// from storage buffers as two 64-bit words each (lavapipe gathers a vector one component per lane
-// at a time, so two wide components cost half as much as four floats), or, when the host put
+// from storage buffers as two 64-bit words each (words64.glsl), or, when the host put
 // them in uniform buffers (kTexelsInUniform: a CPU device and both clips within
 // kUniformTexels), from there: lavapipe gathers uniform data with unrolled loads, no loop.
 #ifndef THRONG_MOTION_TEXELS_GLSL
 #define THRONG_MOTION_TEXELS_GLSL
+
+#include "words64.glsl"
 
 layout(constant_id = 582) const int kUniformTexels = 1;
 layout(constant_id = 583) const bool kTexelsInUniform = false;
@@ -13,18 +14,14 @@ layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; }
 layout(std140, binding = 12) uniform SlowUniform { vec4 slowUniform[kUniformTexels]; };
 layout(std140, binding = 13) uniform FastUniform { vec4 fastUniform[kUniformTexels]; };
 
-vec4 texelOf(u64vec2 words) {
-  return vec4(uintBitsToFloat(unpackUint2x32(words.x)), uintBitsToFloat(unpackUint2x32(words.y)));
-}
-
 vec4 slowTexel(int i) {
   if (kTexelsInUniform) return slowUniform[i];
-  return texelOf(slowMotion[i]);
+  return fromWords(slowMotion[i]);
 }
 
 vec4 fastTexel(int i) {
   if (kTexelsInUniform) return fastUniform[i];
-  return texelOf(fastMotion[i]);
+  return fromWords(fastMotion[i]);
 }
 
 #endif

@@ -18,14 +18,13 @@ layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128];
 // Read as 64-bit words too (two per vec4, see motion_texels.glsl).
 layout(std430, binding = 3) readonly buffer Placement { u64vec2 placement[]; };
 layout(std430, binding = 4) readonly buffer Motion { u64vec2 motion[]; };
-// Written as 64-bit words: lavapipe stores a vector one component per lane at a time, so six
-// 64-bit components per joint cost half as much as twelve floats (the bytes are the same).
+// Written as 64-bit words (words64.glsl): six 64-bit components per joint instead of twelve floats.
 layout(std430, binding = 5) writeonly buffer Joints { u64vec2 jointWords[]; };
 void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
   uint at = 3u * index;
-  jointWords[at] = u64vec2(packUint2x32(floatBitsToUint(row0.xy)), packUint2x32(floatBitsToUint(row0.zw)));
-  jointWords[at + 1u] = u64vec2(packUint2x32(floatBitsToUint(row1.xy)), packUint2x32(floatBitsToUint(row1.zw)));
-  jointWords[at + 2u] = u64vec2(packUint2x32(floatBitsToUint(row2.xy)), packUint2x32(floatBitsToUint(row2.zw)));
+  jointWords[at] = toWords(row0);
+  jointWords[at + 1u] = toWords(row1);
+  jointWords[at + 2u] = toWords(row2);
 }
 // With the motion cache on, only the characters whose bucket is not resident are posed here,
 // listed by cache_classify.comp.
@@ -46,8 +45,8 @@ void main() {
     return;
   }
   uint i = push.firstCharacter + local;
-  vec4 place = texelOf(placement[i]);
-  vec4 m = texelOf(motion[i]);
+  vec4 place = fromWords(placement[i]);
+  vec4 m = fromWords(motion[i]);
   float phase = m.x, w = m.y, scale = m.w;
   int fs = int(frameAt(phase, push.slowFrames));
   int ff = int(frameAt(phase, push.fastFrames));
