@@ -116,6 +116,11 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
   if (!(cellSize > 0.0f)) fail("grid cell size must be positive, got ", cellSize);
   GridBuffers g;
   g.agentCapacity = std::max(agentCapacity, 1u);
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+  if (g.agentCapacity > properties.limits.maxTexelBufferElements)
+    fail("the steering pass reads agents as texels: ", g.agentCapacity, " agents exceed ",
+         context.info().name, "'s limit of ", properties.limits.maxTexelBufferElements);
   g.table = gridTable(agentCapacity);
   g.cellSize = cellSize;
   auto make = [&](VkDeviceSize bytes) {
@@ -126,7 +131,10 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
   g.counts = make(VkDeviceSize(g.table.cellCount) * 4);
   g.starts = make(VkDeviceSize(g.table.cellCount + 1) * 4);
   g.sortedIndex = make(VkDeviceSize(g.agentCapacity) * 4);
-  g.sorted = make(VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4));
+  g.sorted = gpu::Buffer(context, VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4),
+                         gpu::kStorageUsage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                         gpu::MemoryUse::DeviceLocal);
+  g.sortedTexels = gpu::makeBufferView(context, g.sorted, VK_FORMAT_R32G32B32A32_SFLOAT);
   return g;
 }
 
@@ -224,7 +232,7 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
       gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, crowd->motion),
       gpu::storageBinding(2, agents->goals),    gpu::storageBinding(3, agents->steer),
       gpu::storageBinding(4, grid->starts),     gpu::storageBinding(5, grid->sortedIndex),
-      gpu::storageBinding(6, grid->sorted)};
+      gpu::uniformTexelBinding(7, grid->sortedTexels)};
   gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
                 crowd->count);
 }

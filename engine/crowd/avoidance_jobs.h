@@ -36,6 +36,7 @@ class AvoidancePrograms {
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
 struct GridBuffers {
   gpu::Buffer cellRank, counts, starts, sortedIndex, sorted;
+  gpu::Handle<VkBufferView> sortedTexels;  // `sorted` as RGBA32F texels
   uint32_t agentCapacity = 0;
   GridTable table;
   float cellSize = 0.0f;

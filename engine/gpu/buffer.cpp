@@ -28,6 +28,18 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
   if (use == MemoryUse::HostVisible) VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
+Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer, VkFormat format) {
+  VkDevice device = context.device();
+  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer.get();
+  info.format = format;
+  info.offset = 0;
+  info.range = VK_WHOLE_SIZE;
+  VkBufferView view = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateBufferView(device, &info, nullptr, &view));
+  return Handle<VkBufferView>(view, [device](VkBufferView v) { vkDestroyBufferView(device, v, nullptr); });
+}
+
 void uploadBytes(const Context& context, const Buffer& dst, std::span<const uint8_t> bytes,
                  VkDeviceSize dstOffset) {
   THRONG_CHECK(dstOffset + bytes.size() <= dst.size(), "upload of ", bytes.size(), " bytes at ",

@@ -40,6 +40,9 @@ constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT 
                                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
+// A view of a whole buffer as texels of `format` (the buffer needs a texel-buffer usage bit).
+Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer, VkFormat format);
+
 // Copies bytes into a buffer (directly when mapped, else through a staging buffer).
 void uploadBytes(const Context& context, const Buffer& dst, std::span<const uint8_t> bytes,
                  VkDeviceSize dstOffset = 0);

@@ -30,6 +30,14 @@ Binding sampledImageBinding(uint32_t slot, VkImageView view, VkSampler sampler) 
   return b;
 }
 
+Binding uniformTexelBinding(uint32_t slot, VkBufferView view) {
+  Binding b;
+  b.slot = slot;
+  b.type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  b.texelView = view;
+  return b;
+}
+
 Handle<VkShaderModule> makeShaderModule(const Context& context, std::span<const uint32_t> words) {
   VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   info.codeSize = words.size_bytes();
@@ -98,6 +106,10 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
     if (declared.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER || declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
       if (given->buffer.buffer == VK_NULL_HANDLE) fail(name, ": binding ", declared.binding, " has a null buffer");
       write.pBufferInfo = &given->buffer;
+    } else if (declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER ||
+               declared.type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER) {
+      if (given->texelView == VK_NULL_HANDLE) fail(name, ": binding ", declared.binding, " has a null buffer view");
+      write.pTexelBufferView = &given->texelView;
     } else {
       write.pImageInfo = &given->image;
     }

@@ -18,6 +18,7 @@ struct Binding {
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   VkDescriptorBufferInfo buffer{};
   VkDescriptorImageInfo image{};
+  VkBufferView texelView = VK_NULL_HANDLE;
 };
 
 Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset = 0,
@@ -25,6 +26,7 @@ Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset 
 Binding uniformBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset = 0,
                        VkDeviceSize range = VK_WHOLE_SIZE);
 Binding sampledImageBinding(uint32_t slot, VkImageView view, VkSampler sampler);
+Binding uniformTexelBinding(uint32_t slot, VkBufferView view);
 
 // Descriptor set layout (push descriptors) + pipeline layout for a set of stages.
 struct PipelineLayout {

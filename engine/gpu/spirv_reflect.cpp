@@ -21,6 +21,7 @@ enum Decoration : uint32_t {
 };
 enum StorageClass : uint32_t { UniformConstant = 0, Uniform = 2, PushConstant = 9, StorageBuffer = 12 };
 constexpr uint32_t kExecutionModeLocalSize = 17;
+constexpr uint32_t kDimBuffer = 5;
 
 struct Id {
   uint32_t opcode = 0;
@@ -28,6 +29,7 @@ struct Id {
   uint32_t storageClass = 0;
   uint32_t width = 0;          // scalars: bits; vectors/matrices: component/column count
   uint32_t sampled = 0;        // images: 1 sampled, 2 storage
+  uint32_t dim = 0;            // images: SPIR-V Dim (kDimBuffer for texel buffers)
   uint32_t constant = 0;       // OpConstant value
   uint32_t lengthId = 0;       // arrays
   uint32_t binding = UINT32_MAX, set = UINT32_MAX;
@@ -77,9 +79,13 @@ VkDescriptorType descriptorType(const std::unordered_map<uint32_t, Id>& ids, con
   const Id* t = &pointee;
   if (t->opcode == OpTypeArray || t->opcode == OpTypeRuntimeArray) t = &ids.at(t->typeId);
   switch (t->opcode) {
-    case OpTypeSampledImage: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    case OpTypeSampledImage:
+      return ids.at(t->typeId).dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                                 : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     case OpTypeSampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
     case OpTypeImage:
+      if (t->dim == kDimBuffer)
+        return t->sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
       return t->sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
     default: return VK_DESCRIPTOR_TYPE_MAX_ENUM;
   }
@@ -137,7 +143,11 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string
       case OpTypeFloat: ids[w[1]].opcode = opcode; ids[w[1]].width = w[2]; break;
       case OpTypeVector:
       case OpTypeMatrix: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; ids[w[1]].width = w[3]; break;
-      case OpTypeImage: ids[w[1]].opcode = opcode; ids[w[1]].sampled = w[7]; break;
+      case OpTypeImage:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].dim = w[3];
+        ids[w[1]].sampled = w[7];
+        break;
       case OpTypeSampler: ids[w[1]].opcode = opcode; break;
       case OpTypeSampledImage: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; break;
       case OpTypeArray: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; ids[w[1]].lengthId = w[3]; break;

@@ -69,6 +69,42 @@ TEST_CASE("program: reflection and a checked dispatch") {
   CHECK(ctx.validationMessageCount() == 0);
 }
 
+TEST_CASE("program: a uniform texel buffer is reflected, bound and read") {
+  gpu::Context& ctx = test::gpuContext();
+  gpu::ComputeProgram program(ctx, "test_texels.comp");
+  REQUIRE(program.reflection().bindings.size() == 2);
+  CHECK(program.reflection().bindings[0].type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
+  CHECK(program.reflection().bindings[1].type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+
+  const uint32_t n = 300;
+  std::vector<float> texels(4 * n);
+  for (uint32_t i = 0; i < 4 * n; ++i) texels[i] = float(i % 7) + 0.25f * float(i / 4);
+  gpu::Buffer source = gpu::makeStorageBuffer<float>(ctx, texels, gpu::MemoryUse::DeviceLocal,
+                                                     VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  gpu::Handle<VkBufferView> view = gpu::makeBufferView(ctx, source, VK_FORMAT_R32G32B32A32_SFLOAT);
+  gpu::Buffer out(ctx, n * sizeof(float), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  const uint32_t count = n;
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    gpu::Binding bindings[] = {gpu::uniformTexelBinding(0, view), gpu::storageBinding(1, out)};
+    gpu::dispatch(cmd, program, bindings, count, n);
+  });
+  std::vector<float> result = gpu::readback<float>(ctx, out, n);
+  for (uint32_t i = 0; i < n; ++i) {
+    const float* t = &texels[4 * i];
+    REQUIRE(result[i] == doctest::Approx(t[0] + 10.0f * t[1] + 100.0f * t[2] + 1000.0f * t[3]));
+  }
+  // A storage binding where the shader declares texels, and a null view, are reported.
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    gpu::Binding wrongType[] = {gpu::storageBinding(0, source), gpu::storageBinding(1, out)};
+    CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, wrongType, count, n),
+                         doctest::Contains("expects descriptor type"), Error);
+    gpu::Binding nullView[] = {gpu::uniformTexelBinding(0, VK_NULL_HANDLE), gpu::storageBinding(1, out)};
+    CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, nullView, count, n),
+                         doctest::Contains("null buffer view"), Error);
+  });
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
 TEST_CASE("program: missing binding and wrong push size are reported") {
   gpu::Context& ctx = test::gpuContext();
   gpu::ComputeProgram program(ctx, "test_scale.comp");
