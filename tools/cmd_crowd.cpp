@@ -247,6 +247,7 @@ struct BenchArgs {
   std::vector<std::string> policies{"rule", "ttc"};
   int steps = 10;
   float density = 0.5f;
+  std::string numbering = "grid";
   std::string device;
 };
 
@@ -259,8 +260,15 @@ void addBench(CLI::App& parent) {
   cmd->add_option("--policy", args->policies, "Policies (default rule ttc)");
   cmd->add_option("--steps", args->steps, "Measured steps per row (median, default 10)");
   cmd->add_option("--density", args->density, "Agents per square metre (default 0.5)");
+  cmd->add_option("--numbering", args->numbering,
+                  "Agent numbering: grid (spawned in grid order, as storyboards number them) or "
+                  "random (default grid)");
   cmd->add_option("--device", args->device, "Vulkan device by index or name");
   cmd->callback([args] {
+    if (args->numbering != "grid" && args->numbering != "random")
+      fail("--numbering: expected grid or random, got '", args->numbering, "'");
+    const crowd::BenchNumbering numbering =
+        args->numbering == "grid" ? crowd::BenchNumbering::Grid : crowd::BenchNumbering::Random;
     RunOptions parse;
     parse.policies = args->policies;
     std::vector<crowd::SteerPolicy> policies = parse.parsedPolicies();
@@ -269,8 +277,9 @@ void addBench(CLI::App& parent) {
     gpu::ContextOptions options;
     options.device = args->device;
     gpu::Context context(options);
-    std::printf("device: %s (%s)\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n",
-                context.info().name.c_str(), context.info().driver.c_str(), "policy", "agents",
+    std::printf("device: %s (%s), agents numbered %s\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n",
+                context.info().name.c_str(), context.info().driver.c_str(),
+                numbering == crowd::BenchNumbering::Grid ? "in grid order" : "at random", "policy", "agents",
                 "count ms", "scan ms", "scatter ms", "grid ms", "steer ms", "total ms", "cpu ms",
                 "cpu/gpu");
     for (crowd::SteerPolicy policy : policies)
@@ -278,7 +287,7 @@ void addBench(CLI::App& parent) {
         crowd::AvoidanceParams params;
         params.policy = policy;
         crowd::AvoidanceTiming t =
-            crowd::benchmarkAvoidance(context, n, params, args->steps, args->density);
+            crowd::benchmarkAvoidance(context, n, params, args->steps, args->density, numbering);
         std::printf("%-8s %9u %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %8.2f\n",
                     std::string(crowd::steerPolicyName(policy)).c_str(), n, t.countMs, t.scanMs,
                     t.scatterMs, t.gridMs, t.steerMs, t.totalMs, t.cpuMs,

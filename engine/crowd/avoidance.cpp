@@ -98,6 +98,17 @@ float steerRandom(uint32_t agent, uint32_t step, uint32_t seed) {
   return float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
+std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, float cellSize, GridTable table) {
+  THRONG_CHECK(cellSize > 0.0f, "grid cell size must be positive");
+  std::vector<uint32_t> cell(placement.size()), order(placement.size());
+  for (size_t i = 0; i < placement.size(); ++i) {
+    cell[i] = cellIndex(cellCoord({placement[i].x, placement[i].z}, 1.0f / cellSize), table);
+    order[i] = uint32_t(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return cell[a] < cell[b]; });
+  return order;
+}
+
 Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, float cellSize,
                   GridTable table) {
   THRONG_CHECK(table.cellCount == (table.rowMask + 1u) << table.widthShift, "inconsistent grid table");

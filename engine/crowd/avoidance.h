@@ -99,6 +99,11 @@ struct Grid {
   std::vector<glm::vec4> sorted;      // per slot: (x, z, vx, vz)
 };
 
+// The agents in the order of the grid's slots (stably by cell), for numbering a crowd when it
+// is spawned: neighbours in space are then neighbours in memory, so the passes that read and
+// write per-agent buffers by agent index (steering, grid build, advance) touch few cache lines.
+std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, float cellSize, GridTable table);
+
 // placement = (x, y, z, heading); steer = (vx, vz, speed, flags); goals = (target x, z, max
 // speed, active). Agents with goal.w == 0 are inactive: steer zero, nothing else changes.
 Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, float cellSize,

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <vector>
 
@@ -49,7 +48,8 @@ double cpuTwinStepMs(std::vector<glm::vec4> placement, std::vector<glm::vec4> st
 }  // namespace
 
 AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
-                                   const AvoidanceParams& params, int steps, float density) {
+                                   const AvoidanceParams& params, int steps, float density,
+                                   BenchNumbering numbering) {
   if (agents == 0 || steps < 1 || !(density > 0.0f))
     fail("benchmark needs agents, steps and a positive density");
   Crowd crowd;
@@ -65,23 +65,17 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     goals[i] = glm::vec4(p + 1.3f * dir, 2.0f, 1.0f);
     steer[i] = glm::vec4(1.3f * dir, 1.3f, 0.0f);
   }
-  if (std::getenv("THRONG_SPATIAL")) {
-    const GridTable table = gridTable(agents);
-    std::vector<uint32_t> order(agents);
-    for (uint32_t i = 0; i < agents; ++i) order[i] = i;
-    auto key = [&](uint32_t i) {
-      return cellIndex(cellCoord({crowd.placement[i].x, crowd.placement[i].z}, 1.0f / params.cellSize), table);
-    };
-    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-    std::vector<glm::vec4> p2(agents), g2(agents), s2(agents);
+  if (numbering == BenchNumbering::Grid) {
+    const std::vector<uint32_t> order = gridOrder(crowd.placement, params.cellSize, gridTable(agents));
+    std::vector<glm::vec4> placement(agents), goalsInOrder(agents), steerInOrder(agents);
     for (uint32_t k = 0; k < agents; ++k) {
-      p2[k] = crowd.placement[order[k]];
-      g2[k] = goals[order[k]];
-      s2[k] = steer[order[k]];
+      placement[k] = crowd.placement[order[k]];
+      goalsInOrder[k] = goals[order[k]];
+      steerInOrder[k] = steer[order[k]];
     }
-    crowd.placement = p2;
-    goals = g2;
-    steer = s2;
+    crowd.placement = std::move(placement);
+    goals = std::move(goalsInOrder);
+    steer = std::move(steerInOrder);
   }
   const std::vector<glm::vec4> startPlacement = crowd.placement, startSteer = steer;
   AvoidancePrograms programs(context);

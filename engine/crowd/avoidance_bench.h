@@ -21,10 +21,15 @@ struct AvoidanceTiming {
   int steps = 0;
 };
 
+// How the bench crowd is numbered: in grid order, as a crowd is when it is spawned from a
+// storyboard (scan order) or by gridOrder, or at random (every per-agent access a cache miss).
+enum class BenchNumbering { Grid, Random };
+
 // Agents uniform in a square at `density` per m², each heading for a waypoint 1.3 m away in a
 // random direction; `steps` measured after 2 warm-up steps (positions advance between steps),
 // then the same steps again by the CPU twin.
 AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
-                                   const AvoidanceParams& params, int steps, float density = 0.5f);
+                                   const AvoidanceParams& params, int steps, float density = 0.5f,
+                                   BenchNumbering numbering = BenchNumbering::Grid);
 
 }  // namespace throng::crowd

@@ -75,4 +75,5 @@ TEST_CASE("throng crowd: bad input is reported, not crashed on") {
   expectError("crowd metrics --trajectories " + (dir / "bad.txt").string(),
               (dir / "bad.txt").string() + ":2: field 3 'x' is not a finite number");
   expectError("crowd bench --agents 0", "--agents: each count must be 1..1000000, got 0");
+  expectError("crowd bench --numbering sideways", "--numbering: expected grid or random, got 'sideways'");
 }

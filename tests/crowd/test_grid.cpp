@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
 #include "core/rng.h"
 #include "crowd/avoidance.h"
 #include "crowd/avoidance_jobs.h"
@@ -137,4 +138,26 @@ TEST_CASE("grid: GPU counting sort equals the CPU twin (counts, starts, each age
 
 TEST_CASE("grid: GPU counting sort equals the CPU twin on 100k agents") {
   compareGrids(100000, 2.0f);
+}
+
+TEST_CASE("grid: gridOrder numbers agents in the grid's slot order, stably within a cell") {
+  const uint32_t n = 5000;
+  crowd::Crowd c = gridCrowd(n, 11);
+  const float cellSize = 3.0f;
+  const crowd::GridTable table = crowd::gridTable(n);
+  const std::vector<uint32_t> order = crowd::gridOrder(c.placement, cellSize, table);
+  REQUIRE(order.size() == n);
+  std::vector<uint32_t> sortedCopy = order;
+  std::sort(sortedCopy.begin(), sortedCopy.end());
+  for (uint32_t k = 0; k < n; ++k) REQUIRE(sortedCopy[k] == k);  // a permutation
+  // The order is the CPU grid's slot order: by cell, and by agent index within a cell.
+  std::vector<glm::vec4> steer(n, glm::vec4(0.0f));
+  crowd::Grid grid = crowd::buildGridCpu(c.placement, steer, cellSize, table);
+  CHECK(order == grid.sortedIndex);
+  // Renumbered so, the crowd's own grid is the identity.
+  std::vector<glm::vec4> renumbered(n);
+  for (uint32_t k = 0; k < n; ++k) renumbered[k] = c.placement[order[k]];
+  crowd::Grid again = crowd::buildGridCpu(renumbered, steer, cellSize, table);
+  for (uint32_t k = 0; k < n; ++k) REQUIRE(again.sortedIndex[k] == k);
+  CHECK_THROWS_AS(crowd::gridOrder(c.placement, 0.0f, table), Error);
 }
