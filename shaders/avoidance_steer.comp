@@ -38,12 +38,12 @@ const uint kStartLoads = (kStartValues + kChunk - 1u) / kChunk;
 
 layout(std430, binding = 0) buffer Placement { vec4 placement[]; };
 layout(std430, binding = 1) writeonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 2) readonly buffer Goals { u64vec2 goals[]; };
+layout(binding = 2) uniform samplerBuffer goalTexels;
 layout(std430, binding = 3) buffer Steer { vec4 steer[]; };
 layout(std430, binding = 3) writeonly buffer SteerWords { u64vec2 steerWords[]; };  // the same, stored in words
-layout(std430, binding = 4) readonly buffer Starts { uint starts[]; };
-layout(std430, binding = 5) readonly buffer SortedIndex { uint sortedIndex[]; };
-layout(binding = 7) uniform samplerBuffer sortedTexels;
+layout(binding = 4) uniform usamplerBuffer startTexels;
+layout(binding = 5) uniform usamplerBuffer sortedIndexTexels;
+layout(binding = 6) uniform samplerBuffer sortedTexels;
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it evaluates.
@@ -195,7 +195,7 @@ void scanNeighbours(bool pending, ivec2 cell) {
       uint rowBase = (uint(row + int(j / 4u) - kRange) & gPush.rowMask) << gPush.widthShift;
       uint kind = j % 4u;
       uint column = kind == 0u ? (whole ? 0u : lo) : kind == 1u ? (whole || wraps ? width : hi + 1u) : kind == 2u ? 0u : (wraps ? hi + 1u : 0u);
-      fetched[k] = j < kStartValues && lane < kChunk ? starts[rowBase + column] : 0u;
+      fetched[k] = j < kStartValues && lane < kChunk ? texelFetch(startTexels, int(rowBase + column)).x : 0u;
     }
     for (int r = 0; r < kRows; ++r) {
 #define THRONG_FETCHED(kind) subgroupShuffle(fetched[(4u * uint(r) + kind) / kChunk], (4u * uint(r) + kind) % kChunk)
@@ -219,8 +219,8 @@ void main() {
   gPush = push;
   uint slot = gl_GlobalInvocationID.x;
   bool valid = slot < gPush.agentCount;
-  uint i = sortedIndex[min(slot, gPush.agentCount - 1u)];
-  vec4 goal = fromWords(goals[i]);
+  uint i = texelFetch(sortedIndexTexels, int(min(slot, gPush.agentCount - 1u))).x;
+  vec4 goal = texelFetch(goalTexels, int(i));
   // Position and velocity from the grid's copy (read in slot order, so nearly contiguous);
   // heading and wait counter only where the rule needs them (each load costs on lavapipe).
   vec4 own = texelFetch(sortedTexels, int(min(slot, gPush.agentCount - 1u)));

@@ -123,17 +123,18 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
          context.info().name, "'s limit of ", properties.limits.maxTexelBufferElements);
   g.table = gridTable(agentCapacity);
   g.cellSize = cellSize;
-  auto make = [&](VkDeviceSize bytes) {
-    return gpu::Buffer(context, std::max<VkDeviceSize>(bytes, 16), gpu::kStorageUsage,
+  auto make = [&](VkDeviceSize bytes, VkBufferUsageFlags extraUsage = 0) {
+    return gpu::Buffer(context, std::max<VkDeviceSize>(bytes, 16), gpu::kStorageUsage | extraUsage,
                        gpu::MemoryUse::DeviceLocal);
   };
+  const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
   g.cellRank = make(VkDeviceSize(g.agentCapacity) * 8);
   g.counts = make(VkDeviceSize(g.table.cellCount) * 4);
-  g.starts = make(VkDeviceSize(g.table.cellCount + 1) * 4);
-  g.sortedIndex = make(VkDeviceSize(g.agentCapacity) * 4);
-  g.sorted = gpu::Buffer(context, VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4),
-                         gpu::kStorageUsage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
-                         gpu::MemoryUse::DeviceLocal);
+  g.starts = make(VkDeviceSize(g.table.cellCount + 1) * 4, texels);
+  g.sortedIndex = make(VkDeviceSize(g.agentCapacity) * 4, texels);
+  g.sorted = make(VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4), texels);
+  g.startTexels = gpu::makeBufferView(context, g.starts, VK_FORMAT_R32_UINT);
+  g.sortedIndexTexels = gpu::makeBufferView(context, g.sortedIndex, VK_FORMAT_R32_UINT);
   g.sortedTexels = gpu::makeBufferView(context, g.sorted, VK_FORMAT_R32G32B32A32_SFLOAT);
   return g;
 }
@@ -144,7 +145,9 @@ SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4>
     fail("uploadSteer: ", goals.size(), " goals but ", steer.size(), " steer entries");
   SteerBuffers b;
   b.count = uint32_t(goals.size());
-  b.goals = gpu::makeStorageBuffer<glm::vec4>(context, goals);
+  b.goals = gpu::makeStorageBuffer<glm::vec4>(context, goals, gpu::MemoryUse::DeviceLocal,
+                                              VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  b.goalTexels = gpu::makeBufferView(context, b.goals, VK_FORMAT_R32G32B32A32_SFLOAT);
   b.steer = gpu::makeStorageBuffer<glm::vec4>(context, steer);
   return b;
 }
@@ -230,9 +233,10 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
   }
   const gpu::Binding bindings[] = {
       gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, crowd->motion),
-      gpu::storageBinding(2, agents->goals),    gpu::storageBinding(3, agents->steer),
-      gpu::storageBinding(4, grid->starts),     gpu::storageBinding(5, grid->sortedIndex),
-      gpu::uniformTexelBinding(7, grid->sortedTexels)};
+      gpu::uniformTexelBinding(2, agents->goalTexels), gpu::storageBinding(3, agents->steer),
+      gpu::uniformTexelBinding(4, grid->startTexels),
+      gpu::uniformTexelBinding(5, grid->sortedIndexTexels),
+      gpu::uniformTexelBinding(6, grid->sortedTexels)};
   gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
                 crowd->count);
 }

@@ -36,7 +36,9 @@ class AvoidancePrograms {
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
 struct GridBuffers {
   gpu::Buffer cellRank, counts, starts, sortedIndex, sorted;
-  gpu::Handle<VkBufferView> sortedTexels;  // `sorted` as RGBA32F texels
+  // What the steering pass reads, as texels (lavapipe gathers texels, loops over lanes for
+  // storage-buffer loads): `starts` and `sortedIndex` as R32UI, `sorted` as RGBA32F.
+  gpu::Handle<VkBufferView> startTexels, sortedIndexTexels, sortedTexels;
   uint32_t agentCapacity = 0;
   GridTable table;
   float cellSize = 0.0f;
@@ -48,6 +50,7 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
 struct SteerBuffers {
   gpu::Buffer goals;
   gpu::Buffer steer;
+  gpu::Handle<VkBufferView> goalTexels;  // `goals` as RGBA32F texels, for the steering pass
   uint32_t count = 0;
 };
 SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4> goals,
