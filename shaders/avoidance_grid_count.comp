@@ -8,16 +8,17 @@
 #include "avoidance_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Placement { u64vec2 placement[]; };  // 64-bit words, as in the scatter
+// Read as texels: lavapipe gathers a texel for all lanes, loops over the lanes for a storage load.
+layout(binding = 0) uniform samplerBuffer placementTexels;
 layout(std430, binding = 1) writeonly buffer CellRank { uint64_t cellRank[]; };
 layout(std430, binding = 2) buffer Counts { uint counts[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
 void main() {
+  GridPush p = push;  // before the branch: inside one, lavapipe gathers push constants lane by lane
   uint i = gl_GlobalInvocationID.x;
-  if (i >= push.agentCount) return;
-  u64vec2 place = placement[i];
-  vec2 xz = vec2(uintBitsToFloat(uint(place.x)), uintBitsToFloat(uint(place.y)));
-  uint cell = cellIndex(cellCoord(xz, push.invCellSize), push.widthShift, push.rowMask);
+  if (i >= p.agentCount) return;
+  vec2 xz = texelFetch(placementTexels, int(i)).xz;
+  uint cell = cellIndex(cellCoord(xz, p.invCellSize), p.widthShift, p.rowMask);
   cellRank[i] = packUint2x32(uvec2(cell, atomicAdd(counts[cell], 1u)));
 }

@@ -7,22 +7,24 @@
 #include "crowd_types.h"
 
 layout(local_size_x = 64) in;
-// Read and written in 64-bit words: lavapipe moves a vector one component per lane at a time.
-layout(std430, binding = 0) readonly buffer Placement { u64vec2 placement[]; };  // (x, y), (z, heading)
-layout(std430, binding = 1) readonly buffer Steer { uint64_t steer[]; };         // (vx, vz) at 2i
-layout(std430, binding = 2) readonly buffer CellRank { uint64_t cellRank[]; };
-layout(std430, binding = 3) readonly buffer Starts { uint starts[]; };
+// Reads as texels (one gather for all lanes on lavapipe, where a storage load loops over them);
+// writes in 64-bit words (lavapipe stores a vector one component per lane at a time).
+layout(binding = 0) uniform samplerBuffer placementTexels;  // (x, y, z, heading)
+layout(binding = 1) uniform samplerBuffer steerTexels;      // (vx, vz, speed, flags)
+layout(binding = 2) uniform usamplerBuffer cellRankTexels;  // (cell, rank)
+layout(binding = 3) uniform usamplerBuffer startTexels;
 layout(std430, binding = 4) writeonly buffer SortedIndex { uint sortedIndex[]; };
 layout(std430, binding = 5) writeonly buffer Sorted { u64vec2 sorted[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
 void main() {
+  uint agentCount = push.agentCount;
   uint i = gl_GlobalInvocationID.x;
-  if (i >= push.agentCount) return;
-  uvec2 cr = unpackUint2x32(cellRank[i]);
-  uint slot = starts[cr.x] + cr.y;
+  if (i >= agentCount) return;
+  uvec2 cr = texelFetch(cellRankTexels, int(i)).xy;
+  uint slot = texelFetch(startTexels, int(cr.x)).x + cr.y;
   sortedIndex[slot] = i;
-  u64vec2 place = placement[i];
-  uint64_t xz = (place.x & 0xFFFFFFFFul) | (place.y << 32);
-  sorted[slot] = u64vec2(xz, steer[2u * i]);
+  vec2 xz = texelFetch(placementTexels, int(i)).xz;
+  vec2 v = texelFetch(steerTexels, int(i)).xy;
+  sorted[slot] = u64vec2(packUint2x32(floatBitsToUint(xz)), packUint2x32(floatBitsToUint(v)));
 }

@@ -128,11 +128,12 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
                        gpu::MemoryUse::DeviceLocal);
   };
   const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-  g.cellRank = make(VkDeviceSize(g.agentCapacity) * 8);
+  g.cellRank = make(VkDeviceSize(g.agentCapacity) * 8, texels);
   g.counts = make(VkDeviceSize(g.table.cellCount) * 4);
   g.starts = make(VkDeviceSize(g.table.cellCount + 1) * 4, texels);
   g.sortedIndex = make(VkDeviceSize(g.agentCapacity) * 4, texels);
   g.sorted = make(VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4), texels);
+  g.cellRankTexels = gpu::makeBufferView(context, g.cellRank, VK_FORMAT_R32G32_UINT);
   g.startTexels = gpu::makeBufferView(context, g.starts, VK_FORMAT_R32_UINT);
   g.sortedIndexTexels = gpu::makeBufferView(context, g.sortedIndex, VK_FORMAT_R32_UINT);
   g.sortedTexels = gpu::makeBufferView(context, g.sorted, VK_FORMAT_R32G32B32A32_SFLOAT);
@@ -148,7 +149,9 @@ SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4>
   b.goals = gpu::makeStorageBuffer<glm::vec4>(context, goals, gpu::MemoryUse::DeviceLocal,
                                               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
   b.goalTexels = gpu::makeBufferView(context, b.goals, VK_FORMAT_R32G32B32A32_SFLOAT);
-  b.steer = gpu::makeStorageBuffer<glm::vec4>(context, steer);
+  b.steer = gpu::makeStorageBuffer<glm::vec4>(context, steer, gpu::MemoryUse::DeviceLocal,
+                                              VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  b.steerTexels = gpu::makeBufferView(context, b.steer, VK_FORMAT_R32G32B32A32_SFLOAT);
   return b;
 }
 
@@ -166,7 +169,7 @@ void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   vkCmdFillBuffer(cmd, grid->counts.get(), 0, VkDeviceSize(grid->table.cellCount) * 4, 0);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  const gpu::Binding count[] = {gpu::storageBinding(0, crowd->placement),
+  const gpu::Binding count[] = {gpu::uniformTexelBinding(0, crowd->placementTexels),
                                 gpu::storageBinding(1, grid->cellRank),
                                 gpu::storageBinding(2, grid->counts)};
   gpu::dispatch(cmd, programs.count, count, push, crowd->count);
@@ -178,9 +181,12 @@ void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
   const gpu::Binding scatter[] = {
-      gpu::storageBinding(0, crowd->placement),  gpu::storageBinding(1, agents->steer),
-      gpu::storageBinding(2, grid->cellRank),    gpu::storageBinding(3, grid->starts),
-      gpu::storageBinding(4, grid->sortedIndex), gpu::storageBinding(5, grid->sorted)};
+      gpu::uniformTexelBinding(0, crowd->placementTexels),
+      gpu::uniformTexelBinding(1, agents->steerTexels),
+      gpu::uniformTexelBinding(2, grid->cellRankTexels),
+      gpu::uniformTexelBinding(3, grid->startTexels),
+      gpu::storageBinding(4, grid->sortedIndex),
+      gpu::storageBinding(5, grid->sorted)};
   gpu::dispatch(cmd, programs.scatter, scatter, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
 }

@@ -36,9 +36,10 @@ class AvoidancePrograms {
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
 struct GridBuffers {
   gpu::Buffer cellRank, counts, starts, sortedIndex, sorted;
-  // What the steering pass reads, as texels (lavapipe gathers texels, loops over lanes for
-  // storage-buffer loads): `starts` and `sortedIndex` as R32UI, `sorted` as RGBA32F.
-  gpu::Handle<VkBufferView> startTexels, sortedIndexTexels, sortedTexels;
+  // What the passes read, as texels (lavapipe gathers texels, loops over lanes for
+  // storage-buffer loads): `cellRank` as RG32UI, `starts` and `sortedIndex` as R32UI, `sorted`
+  // as RGBA32F.
+  gpu::Handle<VkBufferView> cellRankTexels, startTexels, sortedIndexTexels, sortedTexels;
   uint32_t agentCapacity = 0;
   GridTable table;
   float cellSize = 0.0f;
@@ -50,7 +51,8 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
 struct SteerBuffers {
   gpu::Buffer goals;
   gpu::Buffer steer;
-  gpu::Handle<VkBufferView> goalTexels;  // `goals` as RGBA32F texels, for the steering pass
+  // `goals` and `steer` as RGBA32F texels, for the steering pass and the grid build
+  gpu::Handle<VkBufferView> goalTexels, steerTexels;
   uint32_t count = 0;
 };
 SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4> goals,
