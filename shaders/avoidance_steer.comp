@@ -129,21 +129,29 @@ void evaluate(vec4 other) {
 // runs as often as the lane with the most. Of the ≈ 60 candidates of a union about 14 lie
 // within a lane's sensing distance and only a few on a collision course with it, so the
 // expensive part runs a few times per block instead of once per candidate (lavapipe skips
-// work only in loops: every lane pays for both sides of a branch).
+// work only in loops: every lane pays for both sides of a branch). The block's candidates stay
+// in registers (`held`, one per lane and chunk) and reach the evaluating lanes by shuffles,
+// which costs less than finding and fetching them again.
 const uint kBlock = 32u;
+const uint kHeld = kBlock / kChunk;  // chunks per block
 void scanRound(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
   uint lane = gl_SubgroupInvocationID;
   // Do-whiles: lavapipe tests a loop's exit at its end, so a for loop would pay one more
-  // (masked) round. Every lane of the round is in its own cell, so total >= 1.
+  // (masked) round. Every lane of the round is in its own cell, so total >= 1. All lanes run
+  // every loop here the same number of times, so the shuffles read active lanes only.
   uint base = 0u;
   do {
     uint bits = 0u;
-    uint offset = 0u;
+    vec4 held[kHeld];
+    uint chunk = 0u;
     do {
+      uint offset = chunk * kChunk;
       uint t = lane < kChunk ? base + offset + lane : 0xFFFFFFFFu;
       uint slot = slotOf(t, runBegin, runLength);
       vec4 candidate = texelFetch(sortedTexels, int(min(slot, gPush.agentCount - 1u)));
       candidate = slot != 0xFFFFFFFFu ? candidate : vec4(1e18, 1e18, 0.0, 0.0);
+      for (uint h = 0u; h < kHeld; ++h)  // constant indices: a dynamic one spills the array
+        if (h == chunk) held[h] = candidate;
 #define THRONG_SCREEN(n) \
   if (kChunk > n) bits |= screened(subgroupShuffle(candidate, n)) ? 1u << (offset + n) : 0u;
       THRONG_SCREEN(0u) THRONG_SCREEN(1u) THRONG_SCREEN(2u) THRONG_SCREEN(3u)
@@ -155,15 +163,24 @@ void scanRound(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
       THRONG_SCREEN(24u) THRONG_SCREEN(25u) THRONG_SCREEN(26u) THRONG_SCREEN(27u)
       THRONG_SCREEN(28u) THRONG_SCREEN(29u) THRONG_SCREEN(30u) THRONG_SCREEN(31u)
 #undef THRONG_SCREEN
-      offset += kChunk;
-    } while (offset < kBlock && base + offset < total);
+      ++chunk;
+    } while (chunk < kHeld && base + chunk * kChunk < total);
     bits = gMine ? bits : 0u;
-    // A divergent loop: lavapipe leaves it when no lane has marks left (one vector test, where
-    // subgroupAny is a loop over the lanes).
-    while (bits != 0u) {
-      uint slot = slotOf(base + uint(findLSB(bits)), runBegin, runLength);
+    // As many evaluations as the lane with the most marks (a butterfly of shuffles: subgroupMax
+    // is a loop over the lanes on lavapipe).
+    uint most = uint(bitCount(bits));
+    for (uint m = 1u; m < gl_SubgroupSize; m <<= 1u) most = max(most, subgroupShuffleXor(most, m));
+    for (uint k = 0u; k < most; ++k) {
+      uint t = uint(findLSB(bits));  // 0xFFFFFFFF once this lane has none left
+      bool has = bits != 0u;
       bits &= bits - 1u;
-      evaluate(texelFetch(sortedTexels, int(min(slot, gPush.agentCount - 1u))));
+      uint from = t % kChunk, which = t / kChunk;
+      vec4 other = subgroupShuffle(held[0], from);
+      for (uint h = 1u; h < kHeld; ++h) {
+        vec4 inChunk = subgroupShuffle(held[h], from);
+        other = which == h ? inChunk : other;
+      }
+      if (has) evaluate(other);
     }
     base += kBlock;
   } while (base < total);
