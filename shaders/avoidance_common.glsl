@@ -10,7 +10,7 @@ uint pcgHash(uint v) {
   return (word >> 22u) ^ word;
 }
 
-ivec2 cellCoord(vec2 p, float invCellSize) { return ivec2(floor(p * invCellSize)); }
+ivec2 cellCoord(vec2 p, vec2 invCellSize) { return ivec2(floor(p * invCellSize)); }
 
 // Row-major index in the grid table, coordinates modulo its size (two's complement & keeps
 // negative coordinates in range): cells x and x + 1 of a row are adjacent unless x + 1 wraps.

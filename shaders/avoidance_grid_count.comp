@@ -19,6 +19,6 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= p.agentCount) return;
   vec2 xz = texelFetch(placementTexels, int(i)).xz;
-  uint cell = cellIndex(cellCoord(xz, p.invCellSize), p.widthShift, p.rowMask);
+  uint cell = cellIndex(cellCoord(xz, vec2(p.invCellX, p.invCellZ)), p.widthShift, p.rowMask);
   cellRank[i] = packUint2x32(uvec2(cell, atomicAdd(counts[cell], 1u)));
 }

@@ -29,9 +29,10 @@
 
 layout(local_size_x = 64) in;
 layout(constant_id = 0) const uint kPolicy = kSteerPolicyTtc;
-layout(constant_id = 1) const int kRange = 1;     // cells scanned each side: ceil(sensing / cell)
+layout(constant_id = 1) const int kRange = 1;     // columns scanned each side: ceil(sensing / width)
 layout(constant_id = 2) const uint kChunk = 8u;   // candidates per round: min(subgroup size, 32)
-const int kRows = 2 * kRange + 1;
+layout(constant_id = 3) const int kRangeZ = 1;    // rows scanned each side: ceil(sensing / depth)
+const int kRows = 2 * kRangeZ + 1;
 const int kRuns = 2 * kRows;                      // a row's columns may wrap around the table
 const uint kStartValues = 4u * uint(kRows);       // grid table entries a round reads
 const uint kStartLoads = (kStartValues + kChunk - 1u) / kChunk;
@@ -197,7 +198,7 @@ void scanNeighbours(bool pending, ivec2 cell) {
     pending = pending && !gMine;
     int xlo = subgroupMin(gMine ? cell.x : 0x7fffffff) - kRange;
     int xhi = subgroupMax(gMine ? cell.x : -0x7fffffff) + kRange;
-    // The union's columns xlo..xhi in rows row-kRange..row+kRange: per row one run of slots,
+    // The union's columns xlo..xhi in rows row-kRangeZ..row+kRangeZ: per row one run of slots,
     // or two when the columns wrap around the table, or the whole row when they span it.
     uint runBegin[kRuns], runLength[kRuns];
     uint total = 0u;
@@ -209,7 +210,7 @@ void scanNeighbours(bool pending, ivec2 cell) {
     uint fetched[kStartLoads];
     for (uint k = 0u; k < kStartLoads; ++k) {
       uint j = k * kChunk + lane;
-      uint rowBase = (uint(row + int(j / 4u) - kRange) & gPush.rowMask) << gPush.widthShift;
+      uint rowBase = (uint(row + int(j / 4u) - kRangeZ) & gPush.rowMask) << gPush.widthShift;
       uint kind = j % 4u;
       uint column = kind == 0u ? (whole ? 0u : lo) : kind == 1u ? (whole || wraps ? width : hi + 1u) : kind == 2u ? 0u : (wraps ? hi + 1u : 0u);
       fetched[k] = j < kStartValues && lane < kChunk ? texelFetch(startTexels, int(rowBase + column)).x : 0u;
@@ -271,7 +272,7 @@ void main() {
       gDraws[d] = prefSpeed * vec2(sin(heading), cos(heading));
     }
   }
-  if (kPolicy != kSteerPolicyNone) scanNeighbours(isActive, cellCoord(gPos, gPush.invCellSize));
+  if (kPolicy != kSteerPolicyNone) scanNeighbours(isActive, cellCoord(gPos, vec2(gPush.invCellX, gPush.invCellZ)));
   if (!isActive) {
     if (valid) steerWords[i] = u64vec2(0ul);
     return;

@@ -21,7 +21,7 @@ using uvec4 = glm::uvec4;
 //   cellRank[i] = (grid cell, rank of the agent among its cell's)  written by the count pass
 //   sorted[k]   = (x, z, vx, vz)                                    agent sortedIndex[k], cell order
 //
-// The grid: cells of push.invCellSize⁻¹ metres, laid out row-major in a table of
+// The grid: cells of 1 / invCellX by 1 / invCellZ metres, laid out row-major in a table of
 // 2^widthShift columns × (rowMask + 1) rows with the coordinates taken modulo the table (no
 // hash), so the cells x-1, x, x+1 of one row are adjacent in the sorted order: a neighbour
 // scan reads one or two runs of slots per row. Cells that alias (a table apart) are far away,
@@ -54,8 +54,8 @@ THRONG_CROWD_STRUCT(GridPush) {
   uint cellCount;        // (rowMask + 1) << widthShift
   uint widthShift;       // log2 of the table's columns
   uint rowMask;          // rows − 1 (a power of two minus one)
-  float invCellSize;     // 1 / cell side in metres (multiplied, so GPU and CPU floor alike)
-  float pad0;
+  float invCellX;        // 1 / cell width (x) in metres (multiplied, so GPU and CPU floor alike)
+  float invCellZ;        // 1 / cell depth (z): one row of the table
   float pad1;
   float pad2;
 };
@@ -68,7 +68,7 @@ THRONG_CROWD_STRUCT(SteerPush) {
   uint seed;
   uint widthShift;       // the grid table (GridPush)
   uint rowMask;
-  float invCellSize;
+  float invCellX;        // 1 / cell width and depth (GridPush)
   float dt;
   float invSecondsLeft;  // 1 / time until the current waypoint is due
   float radius;          // safe radius of each cylinder (metres)
@@ -81,7 +81,7 @@ THRONG_CROWD_STRUCT(SteerPush) {
   float ttcXi;
   float ttcMaxForce;
   float ttcInvTau0;      // 1 / tau0
-  float pad0;
+  float invCellZ;
   float pad1;
   // Speed → w (motion.z) per clip pair: agents [setEnd[k−1], setEnd[k]) use the root speeds
   // setSlow[k], setFast[k] (w = 0 when fast <= slow is left alone: motion.z unchanged).

@@ -30,7 +30,8 @@ std::vector<std::string> validateParams(const AvoidanceParams& p) {
     if (!(v > 0.0f) || !std::isfinite(v)) problems.push_back(concat(name, " must be positive, got ", v));
   };
   if (uint32_t(p.policy) > 2u) problems.push_back(concat("unknown policy ", uint32_t(p.policy)));
-  positive(p.cellSize, "cell size");
+  positive(p.cellSize.x, "cell width");
+  positive(p.cellSize.y, "cell depth");
   positive(p.radius, "safe radius");
   positive(p.sensing, "sensing distance");
   positive(p.lookahead, "lookahead");
@@ -43,13 +44,16 @@ std::vector<std::string> validateParams(const AvoidanceParams& p) {
   if (!(p.ttcK >= 0.0f)) problems.push_back(concat("TTC k must be >= 0, got ", p.ttcK));
   if (!(p.gazeAngle >= 0.0f && p.gazeAngle <= 6.2832f))
     problems.push_back(concat("gaze angle must lie in [0, 2 pi] radians, got ", p.gazeAngle));
-  if (p.cellSize > 0.0f && p.sensing > 0.0f && p.sensing > 8.0f * p.cellSize)
-    problems.push_back(concat("sensing distance ", p.sensing, " m spans more than 8 cells of ", p.cellSize,
-                              " m: use larger cells"));
+  const float smallest = std::min(p.cellSize.x, p.cellSize.y);
+  if (smallest > 0.0f && p.sensing > 0.0f && p.sensing > 8.0f * smallest)
+    problems.push_back(concat("sensing distance ", p.sensing, " m spans more than 8 cells of ", p.cellSize.x, " x ",
+                              p.cellSize.y, " m: use larger cells"));
   return problems;
 }
 
-int cellRange(const AvoidanceParams& p) { return std::max(1, int(std::ceil(p.sensing / p.cellSize))); }
+glm::ivec2 cellRange(const AvoidanceParams& p) {
+  return {std::max(1, int(std::ceil(p.sensing / p.cellSize.x))), std::max(1, int(std::ceil(p.sensing / p.cellSize.y)))};
+}
 
 GridTable gridTable(uint32_t agents) {
   GridTable t;
@@ -84,8 +88,8 @@ uint32_t pcgHash(uint32_t v) {
   return (word >> 22u) ^ word;
 }
 
-glm::ivec2 cellCoord(glm::vec2 p, float invCellSize) {
-  return {int(std::floor(p.x * invCellSize)), int(std::floor(p.y * invCellSize))};
+glm::ivec2 cellCoord(glm::vec2 p, glm::vec2 invCellSize) {
+  return {int(std::floor(p.x * invCellSize.x)), int(std::floor(p.y * invCellSize.y))};
 }
 
 uint32_t cellIndex(glm::ivec2 c, const GridTable& table) {
@@ -98,8 +102,8 @@ float steerRandom(uint32_t agent, uint32_t step, uint32_t seed) {
   return float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
-std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, float cellSize, GridTable table) {
-  THRONG_CHECK(cellSize > 0.0f, "grid cell size must be positive");
+std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize, GridTable table) {
+  THRONG_CHECK(cellSize.x > 0.0f && cellSize.y > 0.0f, "grid cell size must be positive");
   std::vector<uint32_t> cell(placement.size()), order(placement.size());
   for (size_t i = 0; i < placement.size(); ++i) {
     cell[i] = cellIndex(cellCoord({placement[i].x, placement[i].z}, 1.0f / cellSize), table);
@@ -109,7 +113,7 @@ std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, float cell
   return order;
 }
 
-Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, float cellSize,
+Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, glm::vec2 cellSize,
                   GridTable table) {
   THRONG_CHECK(table.cellCount == (table.rowMask + 1u) << table.widthShift, "inconsistent grid table");
   THRONG_CHECK(steer.size() >= placement.size(), "steer smaller than placement");
@@ -190,7 +194,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
   THRONG_CHECK(motion.size() >= n && goals.size() >= n && steer.size() >= n && grid.cellOf.size() == n,
                "steerCpu: arrays of ", n, " agents expected");
   const float invSecondsLeft = 1.0f / frame.secondsLeft;
-  const int range = cellRange(p);
+  const glm::ivec2 range = cellRange(p);
   const float diameter2 = 4.0f * p.radius * p.radius;
   const float sensing2 = p.sensing * p.sensing;
   const float cosHalfGaze = std::cos(0.5f * p.gazeAngle);
@@ -225,8 +229,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     glm::ivec2 force(0);
     if (p.policy != SteerPolicy::None) {
       glm::ivec2 home = cellCoord(pos, grid.invCellSize);
-      for (int dz = -range; dz <= range; ++dz) {
-        for (int dx = -range; dx <= range; ++dx) {
+      for (int dz = -range.y; dz <= range.y; ++dz) {
+        for (int dx = -range.x; dx <= range.x; ++dx) {
           uint32_t cell = cellIndex(home + glm::ivec2(dx, dz), grid.table);
           for (uint32_t k = grid.starts[cell], end = grid.starts[cell + 1]; k < end; ++k) {
             const glm::vec4 other = grid.sorted[k];

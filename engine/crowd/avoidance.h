@@ -37,7 +37,10 @@ std::string_view steerPolicyName(SteerPolicy policy);
 
 struct AvoidanceParams {
   SteerPolicy policy = SteerPolicy::Ttc;
-  float cellSize = 3.0f;     // grid cell side (m)
+  // Grid cell (x width, z depth) in metres. Narrower than deep: a subgroup's lanes lie along a
+  // row, and the union of their neighbourhoods overhangs their columns by the sensing distance
+  // rounded out to whole cells, less with narrow cells (about 10% fewer candidates at 1.5 m).
+  glm::vec2 cellSize{1.5f, 3.0f};
   float radius = 0.3f;       // safe radius of every cylinder (m)
   float sensing = 3.0f;      // neighbours farther than this are ignored (m)
   float lookahead = 1.0f;    // rule: seconds ahead the overlap is tested
@@ -50,8 +53,8 @@ struct AvoidanceParams {
 };
 // Problems with the parameters (empty when valid).
 std::vector<std::string> validateParams(const AvoidanceParams& params);
-// Neighbour cells scanned on each side: ceil(sensing / cellSize).
-int cellRange(const AvoidanceParams& params);
+// Neighbour columns and rows scanned on each side: ceil(sensing / cellSize) per axis.
+glm::ivec2 cellRange(const AvoidanceParams& params);
 
 // Root speeds of one clip pair (speed → w) for the agents [previous set's end, end).
 struct ClipSpeeds {
@@ -91,7 +94,7 @@ inline constexpr uint32_t kMaxGridCells = 1u << 20;
 // (any); the twin's is by agent index. Nothing downstream depends on that order.
 struct Grid {
   GridTable table;
-  float invCellSize = 0.0f;
+  glm::vec2 invCellSize{0.0f};
   std::vector<uint32_t> cellOf;       // per agent: cell index
   std::vector<uint32_t> counts;       // per cell
   std::vector<uint32_t> starts;       // per cell + 1: first slot (exclusive prefix sum), then the agent count
@@ -102,11 +105,11 @@ struct Grid {
 // The agents in the order of the grid's slots (stably by cell), for numbering a crowd when it
 // is spawned: neighbours in space are then neighbours in memory, so the passes that read and
 // write per-agent buffers by agent index (steering, grid build, advance) touch few cache lines.
-std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, float cellSize, GridTable table);
+std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize, GridTable table);
 
 // placement = (x, y, z, heading); steer = (vx, vz, speed, flags); goals = (target x, z, max
 // speed, active). Agents with goal.w == 0 are inactive: steer zero, nothing else changes.
-Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, float cellSize,
+Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, glm::vec2 cellSize,
                   GridTable table);
 void steerCpu(const Grid& grid, const AvoidanceParams& params, const SteerFrame& frame,
               std::span<glm::vec4> placement, std::span<glm::vec4> motion, std::span<const glm::vec4> goals,
@@ -117,7 +120,7 @@ void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer
 
 // The helpers of shaders/avoidance_common.glsl.
 uint32_t pcgHash(uint32_t v);
-glm::ivec2 cellCoord(glm::vec2 p, float invCellSize);
+glm::ivec2 cellCoord(glm::vec2 p, glm::vec2 invCellSize);
 uint32_t cellIndex(glm::ivec2 cell, const GridTable& table);
 float steerRandom(uint32_t agent, uint32_t step, uint32_t seed);
 

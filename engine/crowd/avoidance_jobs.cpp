@@ -57,8 +57,9 @@ void checkGrid(std::vector<std::string>& problems, const GridBuffers* grid,
     problems.push_back(concat("grid table of ", t.cellCount, " cells (", 1u << t.widthShift, " x ",
                               t.rowMask + 1u, ") is not powers of two of at least 32 x 32 up to ",
                               kMaxGridCells, " cells"));
-  if (!(grid->cellSize > 0.0f))
-    problems.push_back(concat("grid cell size must be positive, got ", grid->cellSize));
+  if (!(grid->cellSize.x > 0.0f && grid->cellSize.y > 0.0f))
+    problems.push_back(concat("grid cells must have a positive size, got ", grid->cellSize.x, " x ",
+                              grid->cellSize.y, " m"));
 }
 
 GridPush gridPush(const GridBuffers& grid, uint32_t agents) {
@@ -67,7 +68,8 @@ GridPush gridPush(const GridBuffers& grid, uint32_t agents) {
   push.cellCount = grid.table.cellCount;
   push.widthShift = grid.table.widthShift;
   push.rowMask = grid.table.rowMask;
-  push.invCellSize = 1.0f / grid.cellSize;
+  push.invCellX = 1.0f / grid.cellSize.x;
+  push.invCellZ = 1.0f / grid.cellSize.y;
   return push;
 }
 
@@ -102,18 +104,19 @@ AvoidancePrograms::AvoidancePrograms(const gpu::Context& context)
       context_(&context),
       chunk_(subgroupChunk(context)) {}
 
-const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, int range) const {
-  std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range}];
+const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, glm::ivec2 range) const {
+  std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range.x, range.y}];
   if (!program) {
-    const uint32_t specialization[] = {uint32_t(policy), uint32_t(range), chunk_};
+    const uint32_t specialization[] = {uint32_t(policy), uint32_t(range.x), chunk_, uint32_t(range.y)};
     program =
         std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
   }
   return *program;
 }
 
-GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, float cellSize) {
-  if (!(cellSize > 0.0f)) fail("grid cell size must be positive, got ", cellSize);
+GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, glm::vec2 cellSize) {
+  if (!(cellSize.x > 0.0f && cellSize.y > 0.0f))
+    fail("grid cells must have a positive size, got ", cellSize.x, " x ", cellSize.y, " m");
   GridBuffers g;
   g.agentCapacity = std::max(agentCapacity, 1u);
   VkPhysicalDeviceProperties properties;
@@ -202,8 +205,9 @@ std::vector<std::string> AvoidanceJob::validate() const {
     problems.push_back(e.what());
   }
   if (grid && grid->cellSize != params.cellSize)
-    problems.push_back(concat("the grid was built with ", grid->cellSize,
-                              " m cells, the parameters say ", params.cellSize, " m"));
+    problems.push_back(concat("the grid was built with ", grid->cellSize.x, " x ", grid->cellSize.y,
+                              " m cells, the parameters say ", params.cellSize.x, " x ",
+                              params.cellSize.y, " m"));
   if (!(frame.dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", frame.dt));
   if (!(frame.secondsLeft > 0.0f))
     problems.push_back(concat("secondsLeft must be > 0, got ", frame.secondsLeft));
@@ -218,7 +222,8 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
   push.seed = params.seed;
   push.widthShift = grid->table.widthShift;
   push.rowMask = grid->table.rowMask;
-  push.invCellSize = 1.0f / grid->cellSize;
+  push.invCellX = 1.0f / grid->cellSize.x;
+  push.invCellZ = 1.0f / grid->cellSize.y;
   push.dt = frame.dt;
   push.invSecondsLeft = 1.0f / frame.secondsLeft;
   push.radius = params.radius;

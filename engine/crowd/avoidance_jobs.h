@@ -5,6 +5,7 @@
 // AdvanceJob (kinematic, `throng crowd`) or the synthesis RootMotionJob (render path), which
 // moves each character along the heading the avoidance job wrote. CPU twins: avoidance.h.
 #include <map>
+#include <tuple>
 #include <memory>
 #include <span>
 #include <string>
@@ -24,13 +25,13 @@ class AvoidancePrograms {
  public:
   explicit AvoidancePrograms(const gpu::Context& context);
   gpu::ComputeProgram count, scan, scatter, advance, goals;
-  const gpu::ComputeProgram& steer(SteerPolicy policy, int range) const;
+  const gpu::ComputeProgram& steer(SteerPolicy policy, glm::ivec2 range) const;
   uint32_t chunk() const { return chunk_; }  // candidates shared per subgroup round
 
  private:
   const gpu::Context* context_;
   uint32_t chunk_ = 8;
-  mutable std::map<std::pair<uint32_t, int>, std::unique_ptr<gpu::ComputeProgram>> steer_;
+  mutable std::map<std::tuple<uint32_t, int, int>, std::unique_ptr<gpu::ComputeProgram>> steer_;
 };
 
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
@@ -42,9 +43,9 @@ struct GridBuffers {
   gpu::Handle<VkBufferView> cellRankTexels, startTexels, sortedIndexTexels, sortedTexels;
   uint32_t agentCapacity = 0;
   GridTable table;
-  float cellSize = 0.0f;
+  glm::vec2 cellSize{0.0f};  // x width, z depth (m)
 };
-GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, float cellSize);
+GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, glm::vec2 cellSize);
 
 // Per-agent steering arrays beside CrowdBuffers: goal (target x, z, max speed, active) and
 // steer (vx, vz, speed, flags).

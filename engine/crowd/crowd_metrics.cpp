@@ -31,7 +31,7 @@ void CollisionCounter::addStep(std::span<const glm::vec4> placement, std::span<c
   THRONG_CHECK(active.size() == placement.size(), "one active flag per agent expected");
   const float diameter = 2.0f * radius_;
   const float cell = std::max(diameter, 2.0f);
-  const float inv = 1.0f / cell;
+  const glm::vec2 inv(1.0f / cell);
   // Buckets of active agents by cell (exact coordinates: no hash collisions to sort out).
   std::unordered_map<uint64_t, std::vector<uint32_t>> cells;
   auto key = [](glm::ivec2 c) { return (uint64_t(uint32_t(c.x)) << 32) | uint32_t(c.y); };

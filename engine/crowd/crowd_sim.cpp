@@ -32,7 +32,7 @@ struct GpuRun {
   GridBuffers grid;
 
   GpuRun(const gpu::Context& ctx, const Crowd& c, std::span<const glm::vec4> goals, std::span<const glm::vec4> steer,
-         float cellSize)
+         glm::vec2 cellSize)
       : context(ctx),
         programs(ctx),
         crowd(uploadCrowd(ctx, c)),

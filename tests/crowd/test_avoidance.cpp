@@ -168,8 +168,8 @@ TEST_CASE("avoidance jobs: mismatched buffers, parameters and frames are reporte
   std::vector<glm::vec4> five(5, glm::vec4(0.0f));
   crowd::SteerBuffers small = crowd::uploadSteer(ctx, five, five);
   crowd::SteerBuffers agents = crowd::uploadSteer(ctx, a.goals, a.steer);
-  crowd::GridBuffers tinyGrid = crowd::makeGridBuffers(ctx, 4, 3.0f);
-  crowd::GridBuffers grid = crowd::makeGridBuffers(ctx, 10, 3.0f);
+  crowd::GridBuffers tinyGrid = crowd::makeGridBuffers(ctx, 4, crowd::AvoidanceParams{}.cellSize);
+  crowd::GridBuffers grid = crowd::makeGridBuffers(ctx, 10, crowd::AvoidanceParams{}.cellSize);
   crowd::AvoidanceJob job{&buffers, &small, &tinyGrid};
   auto problems = job.validate();
   CHECK(contains(problems, "the crowd has 10 agents but the steering buffers 5"));
@@ -178,11 +178,11 @@ TEST_CASE("avoidance jobs: mismatched buffers, parameters and frames are reporte
   job = {&buffers, &agents, &grid};
   CHECK(job.validate().empty());
   job.params.radius = -1.0f;
-  job.params.cellSize = 2.0f;
+  job.params.cellSize = glm::vec2(2.0f);
   job.frame.secondsLeft = 0.0f;
   problems = job.validate();
   CHECK(contains(problems, "safe radius must be positive, got -1"));
-  CHECK(contains(problems, "the grid was built with 3 m cells, the parameters say 2 m"));
+  CHECK(contains(problems, "the grid was built with 1.5 x 3 m cells, the parameters say 2 x 2 m"));
   CHECK(contains(problems, "secondsLeft must be > 0"));
   job.params = {};
   job.params.sensing = 100.0f;

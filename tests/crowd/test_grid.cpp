@@ -34,7 +34,7 @@ struct GpuGrid {
   std::vector<glm::vec4> sorted;
 };
 
-GpuGrid buildOnGpu(const crowd::Crowd& c, const std::vector<glm::vec4>& steer, float cellSize) {
+GpuGrid buildOnGpu(const crowd::Crowd& c, const std::vector<glm::vec4>& steer, glm::vec2 cellSize) {
   gpu::Context& ctx = test::gpuContext();
   crowd::AvoidancePrograms programs(ctx);
   crowd::CrowdBuffers buffers = crowd::uploadCrowd(ctx, c);
@@ -56,7 +56,7 @@ GpuGrid buildOnGpu(const crowd::Crowd& c, const std::vector<glm::vec4>& steer, f
   return g;
 }
 
-void compareGrids(uint32_t n, float cellSize) {
+void compareGrids(uint32_t n, glm::vec2 cellSize) {
   crowd::Crowd c = gridCrowd(n, n);
   std::vector<glm::vec4> steer(n);
   for (uint32_t i = 0; i < n; ++i) steer[i] = glm::vec4(float(i), -float(i), 0, 0);
@@ -118,7 +118,8 @@ TEST_CASE("grid: the table is a power of two >= N within bounds, at least 32 x 3
 
 TEST_CASE("grid: cell index, hash and random numbers are the shader's (fixed values)") {
   CHECK(crowd::pcgHash(0u) == 129708002u);
-  CHECK(crowd::cellCoord({-0.1f, 2.9f}, 1.0f / 3.0f) == glm::ivec2(-1, 0));
+  CHECK(crowd::cellCoord({-0.1f, 2.9f}, glm::vec2(1.0f / 3.0f)) == glm::ivec2(-1, 0));
+  CHECK(crowd::cellCoord({1.6f, 2.9f}, glm::vec2(1.0f / 1.5f, 1.0f / 3.0f)) == glm::ivec2(1, 0));
   crowd::GridTable t{1024, 5, 31};
   CHECK(crowd::cellIndex({0, 0}, t) == 0u);
   CHECK(crowd::cellIndex({1, 0}, t) == 1u);
@@ -133,17 +134,18 @@ TEST_CASE("grid: cell index, hash and random numbers are the shader's (fixed val
 }
 
 TEST_CASE("grid: GPU counting sort equals the CPU twin (counts, starts, each agent in its cell), small crowd") {
-  compareGrids(300, 3.0f);
+  compareGrids(300, glm::vec2(3.0f));
+  compareGrids(300, glm::vec2(1.5f, 3.0f));
 }
 
 TEST_CASE("grid: GPU counting sort equals the CPU twin on 100k agents") {
-  compareGrids(100000, 2.0f);
+  compareGrids(100000, glm::vec2(1.5f, 3.0f));
 }
 
 TEST_CASE("grid: gridOrder numbers agents in the grid's slot order, stably within a cell") {
   const uint32_t n = 5000;
   crowd::Crowd c = gridCrowd(n, 11);
-  const float cellSize = 3.0f;
+  const glm::vec2 cellSize(1.5f, 3.0f);
   const crowd::GridTable table = crowd::gridTable(n);
   const std::vector<uint32_t> order = crowd::gridOrder(c.placement, cellSize, table);
   REQUIRE(order.size() == n);
@@ -159,5 +161,5 @@ TEST_CASE("grid: gridOrder numbers agents in the grid's slot order, stably withi
   for (uint32_t k = 0; k < n; ++k) renumbered[k] = c.placement[order[k]];
   crowd::Grid again = crowd::buildGridCpu(renumbered, steer, cellSize, table);
   for (uint32_t k = 0; k < n; ++k) REQUIRE(again.sortedIndex[k] == k);
-  CHECK_THROWS_AS(crowd::gridOrder(c.placement, 0.0f, table), Error);
+  CHECK_THROWS_AS(crowd::gridOrder(c.placement, glm::vec2(0.0f, 3.0f), table), Error);
 }
