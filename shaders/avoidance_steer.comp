@@ -75,8 +75,8 @@ vec2 ttcForce(vec2 x, vec2 v, float dist2) {
   float s = sqrt(max(disc, 0.0));
   float tau = c / (s - b);
   float t = max(tau, 0.1);
-  float invT = 1.0 / t;
-  float magnitude = gPush.ttcK * exp(-t * gPush.ttcInvTau0) * invT * invT * (2.0 * invT + gPush.ttcInvTau0) / max(s, 0.05 * a);
+  // τ^-2 (2/τ + 1/τ0) as (2 + τ/τ0) / τ³: one division where there were three.
+  float magnitude = gPush.ttcK * exp(-t * gPush.ttcInvTau0) * (2.0 + t * gPush.ttcInvTau0) / (t * t * t * max(s, 0.05 * a));
   bool approaching = b < 0.0 && a >= 1e-6 && disc > 0.0;  // else: not approaching or passing clear
   return c < 0.0 ? apart : approaching ? (x + tau * v) * magnitude : vec2(0.0);
 }

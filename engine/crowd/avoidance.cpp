@@ -158,9 +158,8 @@ glm::vec2 ttcForce(const AvoidanceParams& p, glm::vec2 x, glm::vec2 v, float dis
   float s = std::sqrt(disc);
   float tau = c / (s - b);
   float t = std::max(tau, 0.1f);
-  float invT = 1.0f / t;
   const float invTau0 = 1.0f / p.ttcTau0;
-  float magnitude = p.ttcK * std::exp(-t * invTau0) * invT * invT * (2.0f * invT + invTau0) / std::max(s, 0.05f * a);
+  float magnitude = p.ttcK * std::exp(-t * invTau0) * (2.0f + t * invTau0) / (t * t * t * std::max(s, 0.05f * a));
   return (x + tau * v) * magnitude;
 }
 
