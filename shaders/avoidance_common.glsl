@@ -28,13 +28,16 @@ float steerRandom(uint agent, uint step, uint seed) {
 // Whether two discs of diameter² `diameter2`, at relative position x moving at relative
 // velocity v, come closer than touching within `horizon` seconds. Only while approaching:
 // agents already too close may always move apart. Division-free (the closest approach
-// |x|² − (x·v)²/|v|² is compared multiplied by |v|²), so GPU and CPU decide alike.
+// |x|² − (x·v)²/|v|² is compared multiplied by |v|²), so GPU and CPU decide alike; the
+// distance at the horizon is |x|² + h(2 x·v + h|v|²), from the dot products already taken
+// (|x|² is the same for all of a candidate's courses, so it is computed once).
 bool collides(vec2 x, vec2 v, float horizon, float diameter2) {
   float xv = dot(x, v);
   float vv = dot(v, v);
-  vec2 atHorizon = x + v * horizon;
-  bool closestInside = -xv < horizon * vv;
-  bool hit = closestInside ? dot(x, x) * vv - xv * xv < diameter2 * vv : dot(atHorizon, atHorizon) < diameter2;
+  float xx = dot(x, x);
+  float horizonVv = horizon * vv;
+  bool closestInside = -xv < horizonVv;
+  bool hit = closestInside ? (xx - diameter2) * vv < xv * xv : xx + horizon * (xv + xv + horizonVv) < diameter2;
   return xv < 0.0 && hit;
 }
 

@@ -175,9 +175,10 @@ glm::ivec2 toFixed(glm::vec2 f) {
 bool collides(glm::vec2 x, glm::vec2 v, float horizon, float diameter2) {
   float xv = glm::dot(x, v);
   float vv = glm::dot(v, v);
-  glm::vec2 atHorizon = x + v * horizon;
-  bool closestInside = -xv < horizon * vv;
-  bool hit = closestInside ? glm::dot(x, x) * vv - xv * xv < diameter2 * vv : glm::dot(atHorizon, atHorizon) < diameter2;
+  float xx = glm::dot(x, x);
+  float horizonVv = horizon * vv;
+  bool closestInside = -xv < horizonVv;
+  bool hit = closestInside ? (xx - diameter2) * vv < xv * xv : xx + horizon * (xv + xv + horizonVv) < diameter2;
   return xv < 0.0f && hit;
 }
 
