@@ -40,11 +40,14 @@ const uint kStartLoads = (kStartValues + kChunk - 1u) / kChunk;
 layout(std430, binding = 0) buffer Placement { vec4 placement[]; };
 layout(std430, binding = 1) writeonly buffer Motion { vec4 motion[]; };
 layout(binding = 2) uniform samplerBuffer goalTexels;
-layout(std430, binding = 3) buffer Steer { vec4 steer[]; };
-layout(std430, binding = 3) writeonly buffer SteerWords { u64vec2 steerWords[]; };  // the same, stored in words
+layout(std430, binding = 3) writeonly buffer SteerWords { u64vec2 steerWords[]; };  // steer, stored in words
 layout(binding = 4) uniform usamplerBuffer startTexels;
 layout(binding = 5) uniform usamplerBuffer sortedIndexTexels;
 layout(binding = 6) uniform samplerBuffer sortedTexels;
+// The rule's own heading and wait counter, read before this invocation writes them (texel reads
+// of placement and steer; no other invocation writes agent i).
+layout(binding = 7) uniform samplerBuffer placementTexels;
+layout(binding = 8) uniform samplerBuffer steerTexels;
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it evaluates.
@@ -242,8 +245,8 @@ void main() {
   // Position and velocity from the grid's copy (read in slot order, so nearly contiguous);
   // heading and wait counter only where the rule needs them (each load costs on lavapipe).
   vec4 own = texelFetch(sortedTexels, int(min(slot, gPush.agentCount - 1u)));
-  vec4 place = kPolicy == kSteerPolicyRule ? placement[i] : vec4(0.0);
-  vec4 state = kPolicy == kSteerPolicyRule ? steer[i] : vec4(0.0);
+  vec4 place = kPolicy == kSteerPolicyRule ? texelFetch(placementTexels, int(i)) : vec4(0.0);
+  vec4 state = kPolicy == kSteerPolicyRule ? texelFetch(steerTexels, int(i)) : vec4(0.0);
   bool isActive = valid && goal.w != 0.0;
   gPos = own.xy;
   gVPref = (goal.xy - gPos) * gPush.invSecondsLeft;

@@ -247,7 +247,9 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
       gpu::uniformTexelBinding(2, agents->goalTexels), gpu::storageBinding(3, agents->steer),
       gpu::uniformTexelBinding(4, grid->startTexels),
       gpu::uniformTexelBinding(5, grid->sortedIndexTexels),
-      gpu::uniformTexelBinding(6, grid->sortedTexels)};
+      gpu::uniformTexelBinding(6, grid->sortedTexels),
+      gpu::uniformTexelBinding(7, crowd->placementTexels),
+      gpu::uniformTexelBinding(8, agents->steerTexels)};
   gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
                 crowd->count);
 }
