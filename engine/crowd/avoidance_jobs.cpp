@@ -132,11 +132,12 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
   };
   const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
   g.cellRank = make(VkDeviceSize(g.agentCapacity) * 8, texels);
-  g.counts = make(VkDeviceSize(g.table.cellCount) * 4);
+  g.counts = make(VkDeviceSize(g.table.cellCount) * 4, texels);
   g.starts = make(VkDeviceSize(g.table.cellCount + 1) * 4, texels);
   g.sortedIndex = make(VkDeviceSize(g.agentCapacity) * 4, texels);
   g.sorted = make(VkDeviceSize(g.agentCapacity) * sizeof(glm::vec4), texels);
   g.cellRankTexels = gpu::makeBufferView(context, g.cellRank, VK_FORMAT_R32G32_UINT);
+  g.countTexels = gpu::makeBufferView(context, g.counts, VK_FORMAT_R32G32B32A32_UINT);
   g.startTexels = gpu::makeBufferView(context, g.starts, VK_FORMAT_R32_UINT);
   g.sortedIndexTexels = gpu::makeBufferView(context, g.sortedIndex, VK_FORMAT_R32_UINT);
   g.sortedTexels = gpu::makeBufferView(context, g.sorted, VK_FORMAT_R32G32B32A32_SFLOAT);
@@ -178,7 +179,7 @@ void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   gpu::dispatch(cmd, programs.count, count, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scan[] = {gpu::storageBinding(0, grid->counts),
+  const gpu::Binding scan[] = {gpu::uniformTexelBinding(0, grid->countTexels),
                                gpu::storageBinding(1, grid->starts)};
   gpu::dispatch(cmd, programs.scan, scan, push, gpu_types::kScanThreads);
   if (timestamps) timestamps->write(cmd);

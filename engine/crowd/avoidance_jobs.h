@@ -38,9 +38,9 @@ class AvoidancePrograms {
 struct GridBuffers {
   gpu::Buffer cellRank, counts, starts, sortedIndex, sorted;
   // What the passes read, as texels (lavapipe gathers texels, loops over lanes for
-  // storage-buffer loads): `cellRank` as RG32UI, `starts` and `sortedIndex` as R32UI, `sorted`
-  // as RGBA32F.
-  gpu::Handle<VkBufferView> cellRankTexels, startTexels, sortedIndexTexels, sortedTexels;
+  // storage-buffer loads): `cellRank` as RG32UI, `counts` as RGBA32UI (four cells a texel),
+  // `starts` and `sortedIndex` as R32UI, `sorted` as RGBA32F.
+  gpu::Handle<VkBufferView> cellRankTexels, countTexels, startTexels, sortedIndexTexels, sortedTexels;
   uint32_t agentCapacity = 0;
   GridTable table;
   glm::vec2 cellSize{0.0f};  // x width, z depth (m)
