@@ -119,11 +119,6 @@ GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
     fail("grid cells must have a positive size, got ", cellSize.x, " x ", cellSize.y, " m");
   GridBuffers g;
   g.agentCapacity = std::max(agentCapacity, 1u);
-  VkPhysicalDeviceProperties properties;
-  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
-  if (g.agentCapacity > properties.limits.maxTexelBufferElements)
-    fail("the steering pass reads agents as texels: ", g.agentCapacity, " agents exceed ",
-         context.info().name, "'s limit of ", properties.limits.maxTexelBufferElements);
   g.table = gridTable(agentCapacity);
   g.cellSize = cellSize;
   auto make = [&](VkDeviceSize bytes, VkBufferUsageFlags extraUsage = 0) {

@@ -28,8 +28,28 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
   if (use == MemoryUse::HostVisible) VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
+namespace {
+VkDeviceSize texelBytes(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R32_UINT:
+    case VK_FORMAT_R32_SFLOAT: return 4;
+    case VK_FORMAT_R32G32_UINT:
+    case VK_FORMAT_R32G32_SFLOAT: return 8;
+    case VK_FORMAT_R32G32B32A32_UINT:
+    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+    default: fail("makeBufferView: texel format ", int(format), " is not one this engine uses");
+  }
+}
+}  // namespace
+
 Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer, VkFormat format) {
   VkDevice device = context.device();
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+  const VkDeviceSize texels = buffer.size() / texelBytes(format);
+  if (texels > properties.limits.maxTexelBufferElements)
+    fail("a buffer of ", texels, " texels exceeds ", context.info().name, "'s limit of ",
+         properties.limits.maxTexelBufferElements, " texels per texel buffer");
   VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   info.buffer = buffer.get();
   info.format = format;

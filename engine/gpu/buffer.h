@@ -41,6 +41,7 @@ constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT 
                                              VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 // A view of a whole buffer as texels of `format` (the buffer needs a texel-buffer usage bit).
+// Throws when the buffer holds more texels than the device's maxTexelBufferElements.
 Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer, VkFormat format);
 
 // Copies bytes into a buffer (directly when mapped, else through a staging buffer).
