@@ -19,10 +19,11 @@
 // turns subgroupBroadcast into a search for the first active lane per component: a TTC step
 // took 2.7 times as long with it). Every lane screens every candidate cheaply and marks those
 // that can change its steering (scanRound); candidates outside a lane's own neighbourhood lie
-// beyond the sensing distance and are never marked. Only marked ones are evaluated.
-// The grid's sorted copy is read as a uniform texel buffer: lavapipe fetches a texel for all
-// lanes with one unrolled gather, where a storage-buffer load is a loop over the lanes with a
-// branch per lane and component (the TTC step: 5-8% faster).
+// beyond the sensing distance and are never marked. Only marked ones are evaluated, handed
+// from the lanes that fetched them by shuffles.
+// Everything is read as uniform texel buffers: lavapipe fetches a texel for all lanes with one
+// unrolled gather, where a storage-buffer load is a loop over the lanes with a branch per lane
+// and component. Stores stay storage-buffer writes, as few and as wide as possible.
 #include "crowd_types.h"
 #include "avoidance_common.glsl"
 #include "words64.glsl"
