@@ -277,11 +277,12 @@ void addBench(CLI::App& parent) {
     gpu::ContextOptions options;
     options.device = args->device;
     gpu::Context context(options);
-    std::printf("device: %s (%s), agents numbered %s\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n",
-                context.info().name.c_str(), context.info().driver.c_str(),
-                numbering == crowd::BenchNumbering::Grid ? "in grid order" : "at random", "policy", "agents",
-                "count ms", "scan ms", "scatter ms", "grid ms", "steer ms", "total ms", "cpu ms",
-                "cpu/gpu");
+    std::printf(
+        "device: %s (%s), agents numbered %s\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n",
+        context.info().name.c_str(), context.info().driver.c_str(),
+        numbering == crowd::BenchNumbering::Grid ? "in grid order" : "at random", "policy",
+        "agents", "count ms", "scan ms", "scatter ms", "grid ms", "steer ms", "total ms", "cpu ms",
+        "cpu/gpu");
     for (crowd::SteerPolicy policy : policies)
       for (uint32_t n : args->agents) {
         crowd::AvoidanceParams params;

@@ -17,9 +17,12 @@ std::optional<SteerPolicy> parseSteerPolicy(std::string_view name) {
 
 std::string_view steerPolicyName(SteerPolicy policy) {
   switch (policy) {
-    case SteerPolicy::None: return "none";
-    case SteerPolicy::Rule: return "rule";
-    case SteerPolicy::Ttc: return "ttc";
+    case SteerPolicy::None:
+      return "none";
+    case SteerPolicy::Rule:
+      return "rule";
+    case SteerPolicy::Ttc:
+      return "ttc";
   }
   return "?";
 }
@@ -27,7 +30,8 @@ std::string_view steerPolicyName(SteerPolicy policy) {
 std::vector<std::string> validateParams(const AvoidanceParams& p) {
   std::vector<std::string> problems;
   auto positive = [&](float v, const char* name) {
-    if (!(v > 0.0f) || !std::isfinite(v)) problems.push_back(concat(name, " must be positive, got ", v));
+    if (!(v > 0.0f) || !std::isfinite(v))
+      problems.push_back(concat(name, " must be positive, got ", v));
   };
   if (uint32_t(p.policy) > 2u) problems.push_back(concat("unknown policy ", uint32_t(p.policy)));
   positive(p.cellSize.x, "cell width");
@@ -39,20 +43,22 @@ std::vector<std::string> validateParams(const AvoidanceParams& p) {
   positive(p.ttcXi, "TTC relaxation time xi");
   positive(p.ttcMaxForce, "TTC force cap");
   if (p.ttcMaxForce > 0.5f * gpu_types::kForceTermCap)
-    problems.push_back(concat("TTC force cap ", p.ttcMaxForce, " m/s^2 is above ", 0.5f * gpu_types::kForceTermCap,
-                              " (the fixed-point sum clamps each neighbour's term at ", gpu_types::kForceTermCap, ")"));
+    problems.push_back(concat(
+        "TTC force cap ", p.ttcMaxForce, " m/s^2 is above ", 0.5f * gpu_types::kForceTermCap,
+        " (the fixed-point sum clamps each neighbour's term at ", gpu_types::kForceTermCap, ")"));
   if (!(p.ttcK >= 0.0f)) problems.push_back(concat("TTC k must be >= 0, got ", p.ttcK));
   if (!(p.gazeAngle >= 0.0f && p.gazeAngle <= 6.2832f))
     problems.push_back(concat("gaze angle must lie in [0, 2 pi] radians, got ", p.gazeAngle));
   const float smallest = std::min(p.cellSize.x, p.cellSize.y);
   if (smallest > 0.0f && p.sensing > 0.0f && p.sensing > 8.0f * smallest)
-    problems.push_back(concat("sensing distance ", p.sensing, " m spans more than 8 cells of ", p.cellSize.x, " x ",
-                              p.cellSize.y, " m: use larger cells"));
+    problems.push_back(concat("sensing distance ", p.sensing, " m spans more than 8 cells of ",
+                              p.cellSize.x, " x ", p.cellSize.y, " m: use larger cells"));
   return problems;
 }
 
 glm::ivec2 cellRange(const AvoidanceParams& p) {
-  return {std::max(1, int(std::ceil(p.sensing / p.cellSize.x))), std::max(1, int(std::ceil(p.sensing / p.cellSize.y)))};
+  return {std::max(1, int(std::ceil(p.sensing / p.cellSize.x))),
+          std::max(1, int(std::ceil(p.sensing / p.cellSize.y)))};
 }
 
 GridTable gridTable(uint32_t agents) {
@@ -73,11 +79,13 @@ std::array<ClipSpeeds, 4> clipSpeedTable(const SteerFrame& frame) {
     table.fill({frame.slowSpeed, frame.fastSpeed, UINT32_MAX});
     return table;
   }
-  if (frame.sets.size() > table.size()) fail(frame.sets.size(), " clip sets: at most ", table.size(), " per steering pass");
+  if (frame.sets.size() > table.size())
+    fail(frame.sets.size(), " clip sets: at most ", table.size(), " per steering pass");
   for (size_t k = 0; k < table.size(); ++k) {
     table[k] = frame.sets[std::min(k, frame.sets.size() - 1)];
     if (k > 0 && k < frame.sets.size() && table[k].end < table[k - 1].end)
-      fail("clip set ", k, " ends at agent ", table[k].end, " before set ", k - 1, " (", table[k - 1].end, ")");
+      fail("clip set ", k, " ends at agent ", table[k].end, " before set ", k - 1, " (",
+           table[k - 1].end, ")");
   }
   return table;
 }
@@ -102,20 +110,23 @@ float steerRandom(uint32_t agent, uint32_t step, uint32_t seed) {
   return float(h >> 8u) * (1.0f / 16777216.0f);
 }
 
-std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize, GridTable table) {
+std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize,
+                                GridTable table) {
   THRONG_CHECK(cellSize.x > 0.0f && cellSize.y > 0.0f, "grid cell size must be positive");
   std::vector<uint32_t> cell(placement.size()), order(placement.size());
   for (size_t i = 0; i < placement.size(); ++i) {
     cell[i] = cellIndex(cellCoord({placement[i].x, placement[i].z}, 1.0f / cellSize), table);
     order[i] = uint32_t(i);
   }
-  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return cell[a] < cell[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return cell[a] < cell[b]; });
   return order;
 }
 
-Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, glm::vec2 cellSize,
-                  GridTable table) {
-  THRONG_CHECK(table.cellCount == (table.rowMask + 1u) << table.widthShift, "inconsistent grid table");
+Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer,
+                  glm::vec2 cellSize, GridTable table) {
+  THRONG_CHECK(table.cellCount == (table.rowMask + 1u) << table.widthShift,
+               "inconsistent grid table");
   THRONG_CHECK(steer.size() >= placement.size(), "steer smaller than placement");
   const size_t n = placement.size();
   Grid g;
@@ -150,7 +161,8 @@ glm::vec2 ttcForce(const AvoidanceParams& p, glm::vec2 x, glm::vec2 v, float dis
   const float diameter = 2.0f * p.radius;
   float c = dist2 - diameter * diameter;
   if (c < 0.0f)
-    return dist2 > 1e-8f ? x * (p.ttcMaxForce * (1.0f / std::sqrt(dist2) - 0.5f / p.radius)) : glm::vec2(0.0f);
+    return dist2 > 1e-8f ? x * (p.ttcMaxForce * (1.0f / std::sqrt(dist2) - 0.5f / p.radius))
+                         : glm::vec2(0.0f);
   float a = glm::dot(v, v);
   float b = glm::dot(x, v);
   float disc = b * b - a * c;
@@ -159,14 +171,17 @@ glm::vec2 ttcForce(const AvoidanceParams& p, glm::vec2 x, glm::vec2 v, float dis
   float tau = c / (s - b);
   float t = std::max(tau, 0.1f);
   const float invTau0 = 1.0f / p.ttcTau0;
-  float magnitude = p.ttcK * std::exp(-t * invTau0) * (2.0f + t * invTau0) / (t * t * t * std::max(s, 0.05f * a));
+  float magnitude =
+      p.ttcK * std::exp(-t * invTau0) * (2.0f + t * invTau0) / (t * t * t * std::max(s, 0.05f * a));
   return (x + tau * v) * magnitude;
 }
 
 // Mirrors toFixed in shaders/avoidance_steer.comp.
 glm::ivec2 toFixed(glm::vec2 f) {
   auto one = [](float v) {
-    return int(std::floor(std::clamp(v, -gpu_types::kForceTermCap, gpu_types::kForceTermCap) * gpu_types::kForceScale + 0.5f));
+    return int(std::floor(std::clamp(v, -gpu_types::kForceTermCap, gpu_types::kForceTermCap) *
+                              gpu_types::kForceScale +
+                          0.5f));
   };
   return {one(f.x), one(f.y)};
 }
@@ -178,21 +193,27 @@ bool collides(glm::vec2 x, glm::vec2 v, float horizon, float diameter2) {
   float xx = glm::dot(x, x);
   float horizonVv = horizon * vv;
   bool closestInside = -xv < horizonVv;
-  bool hit = closestInside ? (xx - diameter2) * vv < xv * xv : xx + horizon * (xv + xv + horizonVv) < diameter2;
+  bool hit = closestInside ? (xx - diameter2) * vv < xv * xv
+                           : xx + horizon * (xv + xv + horizonVv) < diameter2;
   return xv < 0.0f && hit;
 }
 
 const ClipSpeeds& speedSet(const std::array<ClipSpeeds, 4>& table, uint32_t agent) {
-  return agent < table[0].end ? table[0] : agent < table[1].end ? table[1] : agent < table[2].end ? table[2] : table[3];
+  return agent < table[0].end   ? table[0]
+         : agent < table[1].end ? table[1]
+         : agent < table[2].end ? table[2]
+                                : table[3];
 }
 
 }  // namespace
 
-void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& frame, std::span<glm::vec4> placement,
-              std::span<glm::vec4> motion, std::span<const glm::vec4> goals, std::span<glm::vec4> steer) {
+void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& frame,
+              std::span<glm::vec4> placement, std::span<glm::vec4> motion,
+              std::span<const glm::vec4> goals, std::span<glm::vec4> steer) {
   const size_t n = placement.size();
-  THRONG_CHECK(motion.size() >= n && goals.size() >= n && steer.size() >= n && grid.cellOf.size() == n,
-               "steerCpu: arrays of ", n, " agents expected");
+  THRONG_CHECK(
+      motion.size() >= n && goals.size() >= n && steer.size() >= n && grid.cellOf.size() == n,
+      "steerCpu: arrays of ", n, " agents expected");
   const float invSecondsLeft = 1.0f / frame.secondsLeft;
   const glm::ivec2 range = cellRange(p);
   const float diameter2 = 4.0f * p.radius * p.radius;
@@ -254,14 +275,16 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     glm::vec2 v = vPref;
     uint32_t flags = 0;
     if (rule && blocked) {
-      bool inGaze = prefSpeed > 1e-4f && glm::dot(keep, vPref) >= cosHalfGaze * prefSpeed * prefSpeed;
+      bool inGaze =
+          prefSpeed > 1e-4f && glm::dot(keep, vPref) >= cosHalfGaze * prefSpeed * prefSpeed;
       float waited = std::max(-steer[i].w, 0.0f) * frame.dt;
       if (!keepBlocked && inGaze) {
         v = keep;
         flags = gpu_types::kSteerFlagKept;
       } else {
         v = waited < gpu_types::kRuleMaxWait ? glm::vec2(0.0f) : draws[0];
-        flags = waited < gpu_types::kRuleMaxWait ? gpu_types::kSteerFlagWaiting : gpu_types::kSteerFlagForced;
+        flags = waited < gpu_types::kRuleMaxWait ? gpu_types::kSteerFlagWaiting
+                                                 : gpu_types::kSteerFlagForced;
         for (uint32_t d = 0; d < gpu_types::kRuleDraws; ++d) {
           if ((drawBlocked & (1u << d)) == 0) {
             v = draws[d];
@@ -281,15 +304,17 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     float speed = glm::length(v);
     if (speed > 1e-3f) place.w = std::atan2(v.x, v.y);
     placement[i] = place;
-    float state = flags == gpu_types::kSteerFlagWaiting ? std::min(steer[i].w, 0.0f) - 1.0f : float(flags);
+    float state =
+        flags == gpu_types::kSteerFlagWaiting ? std::min(steer[i].w, 0.0f) - 1.0f : float(flags);
     steer[i] = glm::vec4(v, speed, state);
     const ClipSpeeds& set = speedSet(speeds, uint32_t(i));
-    if (set.fast > set.slow) motion[i].z = std::clamp((speed - set.slow) / (set.fast - set.slow), 0.0f, 1.0f);
+    if (set.fast > set.slow)
+      motion[i].z = std::clamp((speed - set.slow) / (set.fast - set.slow), 0.0f, 1.0f);
   }
 }
 
-void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer, std::span<const glm::vec4> goals,
-                float dt) {
+void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer,
+                std::span<const glm::vec4> goals, float dt) {
   for (size_t i = 0; i < placement.size(); ++i) {
     if (goals[i].w == 0.0f) continue;
     placement[i].x += steer[i].x * dt;

@@ -19,8 +19,8 @@
 // The output of a step is the heading (placement.w) and velocity/speed (steer) each agent
 // takes, and its speed weight (motion.z, taken up by the root-motion pass at the cycle end).
 // This file is the CPU twin; avoidance_jobs.h records the same passes on the GPU.
-#include <cstdint>
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -41,14 +41,14 @@ struct AvoidanceParams {
   // row, and the union of their neighbourhoods overhangs their columns by the sensing distance
   // rounded out to whole cells, less with narrow cells (about 10% fewer candidates at 1.5 m).
   glm::vec2 cellSize{1.5f, 3.0f};
-  float radius = 0.3f;       // safe radius of every cylinder (m)
-  float sensing = 3.0f;      // neighbours farther than this are ignored (m)
-  float lookahead = 1.0f;    // rule: seconds ahead the overlap is tested
-  float gazeAngle = 1.5708f; // rule: full width of the random turn (rad), 90°
-  float ttcK = 1.5f;         // TTC constants of the paper: k, τ0 (s), relaxation ξ (s)
+  float radius = 0.3f;        // safe radius of every cylinder (m)
+  float sensing = 3.0f;       // neighbours farther than this are ignored (m)
+  float lookahead = 1.0f;     // rule: seconds ahead the overlap is tested
+  float gazeAngle = 1.5708f;  // rule: full width of the random turn (rad), 90°
+  float ttcK = 1.5f;          // TTC constants of the paper: k, τ0 (s), relaxation ξ (s)
   float ttcTau0 = 3.0f;
   float ttcXi = 0.54f;
-  float ttcMaxForce = 20.0f; // cap of the avoidance acceleration (m/s²)
+  float ttcMaxForce = 20.0f;  // cap of the avoidance acceleration (m/s²)
   uint32_t seed = 1;
 };
 // Problems with the parameters (empty when valid).
@@ -95,9 +95,10 @@ inline constexpr uint32_t kMaxGridCells = 1u << 20;
 struct Grid {
   GridTable table;
   glm::vec2 invCellSize{0.0f};
-  std::vector<uint32_t> cellOf;       // per agent: cell index
-  std::vector<uint32_t> counts;       // per cell
-  std::vector<uint32_t> starts;       // per cell + 1: first slot (exclusive prefix sum), then the agent count
+  std::vector<uint32_t> cellOf;  // per agent: cell index
+  std::vector<uint32_t> counts;  // per cell
+  std::vector<uint32_t>
+      starts;  // per cell + 1: first slot (exclusive prefix sum), then the agent count
   std::vector<uint32_t> sortedIndex;  // per slot: agent, by cell
   std::vector<glm::vec4> sorted;      // per slot: (x, z, vx, vz)
 };
@@ -105,18 +106,19 @@ struct Grid {
 // The agents in the order of the grid's slots (stably by cell), for numbering a crowd when it
 // is spawned: neighbours in space are then neighbours in memory, so the passes that read and
 // write per-agent buffers by agent index (steering, grid build, advance) touch few cache lines.
-std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize, GridTable table);
+std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize,
+                                GridTable table);
 
 // placement = (x, y, z, heading); steer = (vx, vz, speed, flags); goals = (target x, z, max
 // speed, active). Agents with goal.w == 0 are inactive: steer zero, nothing else changes.
-Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer, glm::vec2 cellSize,
-                  GridTable table);
+Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer,
+                  glm::vec2 cellSize, GridTable table);
 void steerCpu(const Grid& grid, const AvoidanceParams& params, const SteerFrame& frame,
-              std::span<glm::vec4> placement, std::span<glm::vec4> motion, std::span<const glm::vec4> goals,
-              std::span<glm::vec4> steer);
+              std::span<glm::vec4> placement, std::span<glm::vec4> motion,
+              std::span<const glm::vec4> goals, std::span<glm::vec4> steer);
 // position += velocity · dt for active agents (the kinematic integration of `throng crowd`).
-void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer, std::span<const glm::vec4> goals,
-                float dt);
+void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer,
+                std::span<const glm::vec4> goals, float dt);
 
 // The helpers of shaders/avoidance_common.glsl.
 uint32_t pcgHash(uint32_t v);

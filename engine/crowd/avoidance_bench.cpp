@@ -66,7 +66,8 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     steer[i] = glm::vec4(1.3f * dir, 1.3f, 0.0f);
   }
   if (numbering == BenchNumbering::Grid) {
-    const std::vector<uint32_t> order = gridOrder(crowd.placement, params.cellSize, gridTable(agents));
+    const std::vector<uint32_t> order =
+        gridOrder(crowd.placement, params.cellSize, gridTable(agents));
     std::vector<glm::vec4> placement(agents), goalsInOrder(agents), steerInOrder(agents);
     for (uint32_t k = 0; k < agents; ++k) {
       placement[k] = crowd.placement[order[k]];

@@ -107,14 +107,16 @@ AvoidancePrograms::AvoidancePrograms(const gpu::Context& context)
 const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, glm::ivec2 range) const {
   std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range.x, range.y}];
   if (!program) {
-    const uint32_t specialization[] = {uint32_t(policy), uint32_t(range.x), chunk_, uint32_t(range.y)};
+    const uint32_t specialization[] = {uint32_t(policy), uint32_t(range.x), chunk_,
+                                       uint32_t(range.y)};
     program =
         std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
   }
   return *program;
 }
 
-GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, glm::vec2 cellSize) {
+GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
+                            glm::vec2 cellSize) {
   if (!(cellSize.x > 0.0f && cellSize.y > 0.0f))
     fail("grid cells must have a positive size, got ", cellSize.x, " x ", cellSize.y, " m");
   GridBuffers g;
@@ -179,13 +181,12 @@ void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   gpu::dispatch(cmd, programs.scan, scan, push, gpu_types::kScanThreads);
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scatter[] = {
-      gpu::uniformTexelBinding(0, crowd->placementTexels),
-      gpu::uniformTexelBinding(1, agents->steerTexels),
-      gpu::uniformTexelBinding(2, grid->cellRankTexels),
-      gpu::uniformTexelBinding(3, grid->startTexels),
-      gpu::storageBinding(4, grid->sortedIndex),
-      gpu::storageBinding(5, grid->sorted)};
+  const gpu::Binding scatter[] = {gpu::uniformTexelBinding(0, crowd->placementTexels),
+                                  gpu::uniformTexelBinding(1, agents->steerTexels),
+                                  gpu::uniformTexelBinding(2, grid->cellRankTexels),
+                                  gpu::uniformTexelBinding(3, grid->startTexels),
+                                  gpu::storageBinding(4, grid->sortedIndex),
+                                  gpu::storageBinding(5, grid->sorted)};
   gpu::dispatch(cmd, programs.scatter, scatter, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
 }
@@ -238,14 +239,15 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
     push.setSlow[k] = sets[size_t(k)].slow;
     push.setFast[k] = sets[size_t(k)].fast;
   }
-  const gpu::Binding bindings[] = {
-      gpu::storageBinding(0, crowd->placement), gpu::storageBinding(1, crowd->motion),
-      gpu::uniformTexelBinding(2, agents->goalTexels), gpu::storageBinding(3, agents->steer),
-      gpu::uniformTexelBinding(4, grid->startTexels),
-      gpu::uniformTexelBinding(5, grid->sortedIndexTexels),
-      gpu::uniformTexelBinding(6, grid->sortedTexels),
-      gpu::uniformTexelBinding(7, crowd->placementTexels),
-      gpu::uniformTexelBinding(8, agents->steerTexels)};
+  const gpu::Binding bindings[] = {gpu::storageBinding(0, crowd->placement),
+                                   gpu::storageBinding(1, crowd->motion),
+                                   gpu::uniformTexelBinding(2, agents->goalTexels),
+                                   gpu::storageBinding(3, agents->steer),
+                                   gpu::uniformTexelBinding(4, grid->startTexels),
+                                   gpu::uniformTexelBinding(5, grid->sortedIndexTexels),
+                                   gpu::uniformTexelBinding(6, grid->sortedTexels),
+                                   gpu::uniformTexelBinding(7, crowd->placementTexels),
+                                   gpu::uniformTexelBinding(8, agents->steerTexels)};
   gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
                 crowd->count);
 }

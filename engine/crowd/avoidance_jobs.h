@@ -5,10 +5,10 @@
 // AdvanceJob (kinematic, `throng crowd`) or the synthesis RootMotionJob (render path), which
 // moves each character along the heading the avoidance job wrote. CPU twins: avoidance.h.
 #include <map>
-#include <tuple>
 #include <memory>
 #include <span>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "crowd/avoidance.h"
@@ -40,12 +40,14 @@ struct GridBuffers {
   // What the passes read, as texels (lavapipe gathers texels, loops over lanes for
   // storage-buffer loads): `cellRank` as RG32UI, `counts` as RGBA32UI (four cells a texel),
   // `starts` and `sortedIndex` as R32UI, `sorted` as RGBA32F.
-  gpu::Handle<VkBufferView> cellRankTexels, countTexels, startTexels, sortedIndexTexels, sortedTexels;
+  gpu::Handle<VkBufferView> cellRankTexels, countTexels, startTexels, sortedIndexTexels,
+      sortedTexels;
   uint32_t agentCapacity = 0;
   GridTable table;
   glm::vec2 cellSize{0.0f};  // x width, z depth (m)
 };
-GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity, glm::vec2 cellSize);
+GridBuffers makeGridBuffers(const gpu::Context& context, uint32_t agentCapacity,
+                            glm::vec2 cellSize);
 
 // Per-agent steering arrays beside CrowdBuffers: goal (target x, z, max speed, active) and
 // steer (vx, vz, speed, flags).
@@ -65,7 +67,8 @@ struct GridJob {
   const CrowdBuffers* crowd = nullptr;   // input: placement
   const SteerBuffers* agents = nullptr;  // input: steer (velocities copied into the grid)
   const GridBuffers* grid = nullptr;     // output
-  gpu::TimestampPool* timestamps = nullptr;  // optional: a mark after the count, the scan and the scatter
+  gpu::TimestampPool* timestamps =
+      nullptr;  // optional: a mark after the count, the scan and the scatter
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;

@@ -11,9 +11,11 @@ void Crowd::resize(size_t n) {
 CrowdBuffers uploadCrowd(const gpu::Context& context, const Crowd& crowd) {
   CrowdBuffers buffers;
   buffers.count = static_cast<uint32_t>(crowd.size());
-  buffers.placement = gpu::makeStorageBuffer<glm::vec4>(context, crowd.placement, gpu::MemoryUse::DeviceLocal,
-                                                        VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
-  buffers.placementTexels = gpu::makeBufferView(context, buffers.placement, VK_FORMAT_R32G32B32A32_SFLOAT);
+  buffers.placement =
+      gpu::makeStorageBuffer<glm::vec4>(context, crowd.placement, gpu::MemoryUse::DeviceLocal,
+                                        VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  buffers.placementTexels =
+      gpu::makeBufferView(context, buffers.placement, VK_FORMAT_R32G32B32A32_SFLOAT);
   buffers.motion = gpu::makeStorageBuffer<glm::vec4>(context, crowd.motion);
   return buffers;
 }

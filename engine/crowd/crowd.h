@@ -26,7 +26,8 @@ struct Crowd {
 struct CrowdBuffers {
   gpu::Buffer placement;
   gpu::Buffer motion;
-  gpu::Handle<VkBufferView> placementTexels;  // placement as RGBA32F texels (the grid build reads these)
+  gpu::Handle<VkBufferView>
+      placementTexels;  // placement as RGBA32F texels (the grid build reads these)
   uint32_t count = 0;
 };
 CrowdBuffers uploadCrowd(const gpu::Context& context, const Crowd& crowd);

@@ -27,7 +27,8 @@ double ksDistance(std::span<const float> a, std::span<const float> b) {
   return worst;
 }
 
-void CollisionCounter::addStep(std::span<const glm::vec4> placement, std::span<const uint8_t> active, float dt) {
+void CollisionCounter::addStep(std::span<const glm::vec4> placement,
+                               std::span<const uint8_t> active, float dt) {
   THRONG_CHECK(active.size() == placement.size(), "one active flag per agent expected");
   const float diameter = 2.0f * radius_;
   const float cell = std::max(diameter, 2.0f);
@@ -42,7 +43,8 @@ void CollisionCounter::addStep(std::span<const glm::vec4> placement, std::span<c
     cells[key(cellCoord({placement[i].x, placement[i].z}, inv))].push_back(uint32_t(i));
   }
   // Density over the counting cells (2 m unless the safe diameter is larger).
-  for (const auto& [k, members] : cells) peakDensity_ = std::max(peakDensity_, double(members.size()) / (cell * cell));
+  for (const auto& [k, members] : cells)
+    peakDensity_ = std::max(peakDensity_, double(members.size()) / (cell * cell));
   std::vector<uint64_t> current;
   std::vector<uint8_t> overlapping(placement.size(), 0);
   for (const auto& [k, members] : cells) {
@@ -78,7 +80,8 @@ CrowdMetrics trajectoryMetrics(const Trajectories& trajectories, float radius) {
   std::map<long, std::vector<glm::vec2>> frames;
   const double spf = trajectories.secondsPerFrame;
   for (const Track& track : trajectories.tracks)
-    for (const TrackPoint& p : track.points) frames[std::lround(double(p.time) / spf)].push_back(p.position);
+    for (const TrackPoint& p : track.points)
+      frames[std::lround(double(p.time) / spf)].push_back(p.position);
   CollisionCounter counter(radius);
   for (const auto& [frame, positions] : frames) {
     std::vector<glm::vec4> placement;
@@ -106,19 +109,21 @@ std::string formatMetrics(const std::string& label, const CrowdMetrics& m) {
   return concat(label, ": ", m.agents, " agents, ", m.seconds, " s, ", m.agentSeconds, " agent-s\n",
                 "  collisions per agent-second ", m.collisionsPerAgentSecond, " (", m.collisions,
                 " agent events), overlapping ", 100.0 * m.overlapShare, "% of agent-steps\n",
-                "  speed: mean ", m.meanSpeed, " m/s (sources ", m.sourceMeanSpeed, " m/s), KS distance ", m.speedKs,
-                " over ", m.speedSamples, " samples\n",
-                "  path error: mean ", m.meanPathError, " m, p95 ", m.p95PathError, " m, max ", m.maxPathError, " m\n",
-                "  peak density ", m.peakDensity, " agents/m^2\n");
+                "  speed: mean ", m.meanSpeed, " m/s (sources ", m.sourceMeanSpeed,
+                " m/s), KS distance ", m.speedKs, " over ", m.speedSamples, " samples\n",
+                "  path error: mean ", m.meanPathError, " m, p95 ", m.p95PathError, " m, max ",
+                m.maxPathError, " m\n", "  peak density ", m.peakDensity, " agents/m^2\n");
 }
 
 std::string metricsJson(const CrowdMetrics& m) {
-  return concat("{\"agents\":", m.agents, ",\"seconds\":", m.seconds, ",\"agent_seconds\":", m.agentSeconds,
-                ",\"collisions\":", m.collisions, ",\"collisions_per_agent_second\":", m.collisionsPerAgentSecond,
-                ",\"overlap_share\":", m.overlapShare, ",\"speed_ks\":", m.speedKs, ",\"mean_speed\":", m.meanSpeed,
-                ",\"source_mean_speed\":", m.sourceMeanSpeed, ",\"speed_samples\":", m.speedSamples,
-                ",\"mean_path_error\":", m.meanPathError, ",\"p95_path_error\":", m.p95PathError,
-                ",\"max_path_error\":", m.maxPathError, ",\"peak_density\":", m.peakDensity, "}");
+  return concat("{\"agents\":", m.agents, ",\"seconds\":", m.seconds,
+                ",\"agent_seconds\":", m.agentSeconds, ",\"collisions\":", m.collisions,
+                ",\"collisions_per_agent_second\":", m.collisionsPerAgentSecond,
+                ",\"overlap_share\":", m.overlapShare, ",\"speed_ks\":", m.speedKs,
+                ",\"mean_speed\":", m.meanSpeed, ",\"source_mean_speed\":", m.sourceMeanSpeed,
+                ",\"speed_samples\":", m.speedSamples, ",\"mean_path_error\":", m.meanPathError,
+                ",\"p95_path_error\":", m.p95PathError, ",\"max_path_error\":", m.maxPathError,
+                ",\"peak_density\":", m.peakDensity, "}");
 }
 
 }  // namespace throng::crowd

@@ -31,8 +31,8 @@ struct GpuRun {
   SteerBuffers agents;
   GridBuffers grid;
 
-  GpuRun(const gpu::Context& ctx, const Crowd& c, std::span<const glm::vec4> goals, std::span<const glm::vec4> steer,
-         glm::vec2 cellSize)
+  GpuRun(const gpu::Context& ctx, const Crowd& c, std::span<const glm::vec4> goals,
+         std::span<const glm::vec4> steer, glm::vec2 cellSize)
       : context(ctx),
         programs(ctx),
         crowd(uploadCrowd(ctx, c)),
@@ -41,7 +41,8 @@ struct GpuRun {
 
   template <typename T>
   void upload(const gpu::Buffer& buffer, std::span<const T> data) {
-    gpu::uploadBytes(context, buffer, {reinterpret_cast<const uint8_t*>(data.data()), data.size_bytes()});
+    gpu::uploadBytes(context, buffer,
+                     {reinterpret_cast<const uint8_t*>(data.data()), data.size_bytes()});
   }
 };
 
@@ -131,7 +132,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
     writeGoals(paths, s, goals);
     if (context) {
       if (!gpuRun) {
-        gpuRun = std::make_unique<GpuRun>(*context, crowd, goals, steer, options.avoidance.cellSize);
+        gpuRun =
+            std::make_unique<GpuRun>(*context, crowd, goals, steer, options.avoidance.cellSize);
       } else {
         gpuRun->upload<glm::vec4>(gpuRun->agents.goals, goals);
         if (changed) {
@@ -162,7 +164,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
         });
         crowd.placement = gpu::readback<glm::vec4>(*context, g.crowd.placement, n);
       } else {
-        Grid grid = buildGridCpu(crowd.placement, steer, options.avoidance.cellSize, gridTable(uint32_t(n)));
+        Grid grid = buildGridCpu(crowd.placement, steer, options.avoidance.cellSize,
+                                 gridTable(uint32_t(n)));
         steerCpu(grid, options.avoidance, frame, crowd.placement, crowd.motion, goals, steer);
         advanceCpu(crowd.placement, steer, goals, dt);
       }
@@ -180,7 +183,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
     crowd.motion = gpu::readback<glm::vec4>(*context, gpuRun->crowd.motion, n);
     steer = gpu::readback<glm::vec4>(*context, gpuRun->agents.steer, n);
   }
-  result.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  result.wallSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   CrowdMetrics& m = result.metrics;
   m.seconds = seconds;
@@ -203,7 +207,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
   if (!pathErrors.empty()) {
     m.meanPathError = mean(pathErrors);
     std::sort(pathErrors.begin(), pathErrors.end());
-    m.p95PathError = pathErrors[std::min(pathErrors.size() - 1, size_t(0.95 * double(pathErrors.size())))];
+    m.p95PathError =
+        pathErrors[std::min(pathErrors.size() - 1, size_t(0.95 * double(pathErrors.size())))];
     m.maxPathError = pathErrors.back();
   }
   return result;

@@ -20,24 +20,30 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
 
   VkMemoryRequirements requirements;
   vkGetBufferMemoryRequirements(device, buffer, &requirements);
-  VkMemoryPropertyFlags flags = use == MemoryUse::HostVisible
-                                    ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  VkMemoryPropertyFlags flags =
+      use == MemoryUse::HostVisible
+          ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+          : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
   memory_ = context.allocateMemory(requirements, flags);
   VK_CHECK(vkBindBufferMemory(device, buffer, memory_, 0));
-  if (use == MemoryUse::HostVisible) VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+  if (use == MemoryUse::HostVisible)
+    VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
 namespace {
 VkDeviceSize texelBytes(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R32_UINT:
-    case VK_FORMAT_R32_SFLOAT: return 4;
+    case VK_FORMAT_R32_SFLOAT:
+      return 4;
     case VK_FORMAT_R32G32_UINT:
-    case VK_FORMAT_R32G32_SFLOAT: return 8;
+    case VK_FORMAT_R32G32_SFLOAT:
+      return 8;
     case VK_FORMAT_R32G32B32A32_UINT:
-    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
-    default: fail("makeBufferView: texel format ", int(format), " is not one this engine uses");
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+      return 16;
+    default:
+      fail("makeBufferView: texel format ", int(format), " is not one this engine uses");
   }
 }
 }  // namespace
@@ -57,7 +63,8 @@ Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer
   info.range = VK_WHOLE_SIZE;
   VkBufferView view = VK_NULL_HANDLE;
   VK_CHECK(vkCreateBufferView(device, &info, nullptr, &view));
-  return Handle<VkBufferView>(view, [device](VkBufferView v) { vkDestroyBufferView(device, v, nullptr); });
+  return Handle<VkBufferView>(
+      view, [device](VkBufferView v) { vkDestroyBufferView(device, v, nullptr); });
 }
 
 void uploadBytes(const Context& context, const Buffer& dst, std::span<const uint8_t> bytes,

@@ -54,9 +54,11 @@ template <typename T>
 Buffer makeStorageBuffer(const Context& context, std::span<const T> data,
                          MemoryUse use = MemoryUse::DeviceLocal,
                          VkBufferUsageFlags extraUsage = 0) {
-  Buffer buffer(context, std::max<VkDeviceSize>(data.size_bytes(), 16), kStorageUsage | extraUsage, use);
+  Buffer buffer(context, std::max<VkDeviceSize>(data.size_bytes(), 16), kStorageUsage | extraUsage,
+                use);
   if (!data.empty())
-    uploadBytes(context, buffer, {reinterpret_cast<const uint8_t*>(data.data()), data.size_bytes()});
+    uploadBytes(context, buffer,
+                {reinterpret_cast<const uint8_t*>(data.data()), data.size_bytes()});
   return buffer;
 }
 

@@ -8,7 +8,8 @@
 
 namespace throng::gpu {
 
-Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset, VkDeviceSize range) {
+Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset,
+                       VkDeviceSize range) {
   Binding b;
   b.slot = slot;
   b.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
@@ -16,7 +17,8 @@ Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset,
   return b;
 }
 
-Binding uniformBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset, VkDeviceSize range) {
+Binding uniformBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset,
+                       VkDeviceSize range) {
   Binding b = storageBinding(slot, buffer, offset, range);
   b.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   return b;
@@ -45,7 +47,8 @@ Handle<VkShaderModule> makeShaderModule(const Context& context, std::span<const 
   VkDevice device = context.device();
   VkShaderModule module = VK_NULL_HANDLE;
   VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
-  return Handle<VkShaderModule>(module, [device](VkShaderModule m) { vkDestroyShaderModule(device, m, nullptr); });
+  return Handle<VkShaderModule>(
+      module, [device](VkShaderModule m) { vkDestroyShaderModule(device, m, nullptr); });
 }
 
 PipelineLayout makePipelineLayout(const Context& context, std::span<const ShaderReflection> shaders,
@@ -74,8 +77,9 @@ PipelineLayout makePipelineLayout(const Context& context, std::span<const Shader
   VkDevice device = context.device();
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VK_CHECK(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout));
-  out.setLayout = Handle<VkDescriptorSetLayout>(
-      setLayout, [device](VkDescriptorSetLayout l) { vkDestroyDescriptorSetLayout(device, l, nullptr); });
+  out.setLayout = Handle<VkDescriptorSetLayout>(setLayout, [device](VkDescriptorSetLayout l) {
+    vkDestroyDescriptorSetLayout(device, l, nullptr);
+  });
 
   VkPushConstantRange range{out.stages, 0, out.pushConstantSize};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -85,7 +89,8 @@ PipelineLayout makePipelineLayout(const Context& context, std::span<const Shader
   layoutInfo.pPushConstantRanges = &range;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VK_CHECK(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout));
-  out.layout = Handle<VkPipelineLayout>(layout, [device](VkPipelineLayout l) { vkDestroyPipelineLayout(device, l, nullptr); });
+  out.layout = Handle<VkPipelineLayout>(
+      layout, [device](VkPipelineLayout l) { vkDestroyPipelineLayout(device, l, nullptr); });
   return out;
 }
 
@@ -98,17 +103,21 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
                               [&](const Binding& b) { return b.slot == declared.binding; });
     if (given == bindings.end()) fail(name, ": binding ", declared.binding, " was not provided");
     if (given->type != declared.type)
-      fail(name, ": binding ", declared.binding, " expects descriptor type ", declared.type, ", got ", given->type);
+      fail(name, ": binding ", declared.binding, " expects descriptor type ", declared.type,
+           ", got ", given->type);
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstBinding = declared.binding;
     write.descriptorCount = 1;
     write.descriptorType = declared.type;
-    if (declared.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER || declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
-      if (given->buffer.buffer == VK_NULL_HANDLE) fail(name, ": binding ", declared.binding, " has a null buffer");
+    if (declared.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER ||
+        declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
+      if (given->buffer.buffer == VK_NULL_HANDLE)
+        fail(name, ": binding ", declared.binding, " has a null buffer");
       write.pBufferInfo = &given->buffer;
     } else if (declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER ||
                declared.type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER) {
-      if (given->texelView == VK_NULL_HANDLE) fail(name, ": binding ", declared.binding, " has a null buffer view");
+      if (given->texelView == VK_NULL_HANDLE)
+        fail(name, ": binding ", declared.binding, " has a null buffer view");
       write.pTexelBufferView = &given->texelView;
     } else {
       write.pImageInfo = &given->image;
@@ -117,7 +126,8 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
   }
   if (bindings.size() != layout.bindings.size())
     fail(name, ": ", bindings.size(), " bindings given, shader declares ", layout.bindings.size());
-  vkCmdPushDescriptorSetKHR(cmd, bindPoint, layout.layout, 0, static_cast<uint32_t>(writes.size()), writes.data());
+  vkCmdPushDescriptorSetKHR(cmd, bindPoint, layout.layout, 0, static_cast<uint32_t>(writes.size()),
+                            writes.data());
 }
 
 ComputeProgram::ComputeProgram(const Context& context, const std::string& shaderFile,
@@ -138,19 +148,21 @@ ComputeProgram::ComputeProgram(const Context& context, const std::string& shader
   std::vector<VkSpecializationMapEntry> entries;
   for (uint32_t i = 0; i < specialization.size(); ++i)
     entries.push_back({i, static_cast<uint32_t>(i * sizeof(uint32_t)), sizeof(uint32_t)});
-  VkSpecializationInfo specInfo{static_cast<uint32_t>(entries.size()), entries.data(), specialization.size_bytes(),
-                                specialization.data()};
+  VkSpecializationInfo specInfo{static_cast<uint32_t>(entries.size()), entries.data(),
+                                specialization.size_bytes(), specialization.data()};
   if (!specialization.empty()) info.stage.pSpecializationInfo = &specInfo;
   info.layout = layout_.layout;
   VkDevice device = context.device();
   VkPipeline pipeline = VK_NULL_HANDLE;
   VK_CHECK(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline));
-  pipeline_ = Handle<VkPipeline>(pipeline, [device](VkPipeline p) { vkDestroyPipeline(device, p, nullptr); });
+  pipeline_ = Handle<VkPipeline>(pipeline,
+                                 [device](VkPipeline p) { vkDestroyPipeline(device, p, nullptr); });
 }
 
 namespace {
-void bindForDispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
-                     const void* pushConstants, size_t pushSize) {
+void bindForDispatch(VkCommandBuffer cmd, const ComputeProgram& program,
+                     std::span<const Binding> bindings, const void* pushConstants,
+                     size_t pushSize) {
   const std::string& name = program.name();
   if (pushSize != program.layout().pushConstantSize)
     fail(name, ": push constants of ", pushSize, " bytes given, shader declares ",
@@ -163,9 +175,11 @@ void bindForDispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::sp
 }
 }  // namespace
 
-void dispatchIndirect(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
-                      const void* pushConstants, size_t pushSize, const Buffer& args, VkDeviceSize offset) {
-  if (offset + 12 > args.size()) fail(program.name(), ": indirect arguments at ", offset, " overflow their buffer");
+void dispatchIndirect(VkCommandBuffer cmd, const ComputeProgram& program,
+                      std::span<const Binding> bindings, const void* pushConstants, size_t pushSize,
+                      const Buffer& args, VkDeviceSize offset) {
+  if (offset + 12 > args.size())
+    fail(program.name(), ": indirect arguments at ", offset, " overflow their buffer");
   bindForDispatch(cmd, program, bindings, pushConstants, pushSize);
   vkCmdDispatchIndirect(cmd, args.get(), offset);
 }
@@ -178,7 +192,8 @@ void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<cons
          program.layout().pushConstantSize);
   if (threadCount == 0) return;
   uint32_t groups = (threadCount + program.localSizeX() - 1) / program.localSizeX();
-  if (groups > 65535u) fail(name, ": ", groups, " workgroups exceed the 65535 limit; dispatch in chunks");
+  if (groups > 65535u)
+    fail(name, ": ", groups, " workgroups exceed the 65535 limit; dispatch in chunks");
   bindForDispatch(cmd, program, bindings, pushConstants, pushSize);
   vkCmdDispatch(cmd, groups, 1, 1);
 }

@@ -72,8 +72,9 @@ void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<cons
               const void* pushConstants, size_t pushSize, uint32_t threadCount);
 
 // The same with the group count read from `args` (a VkDispatchIndirectCommand at `offset`).
-void dispatchIndirect(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
-                      const void* pushConstants, size_t pushSize, const Buffer& args, VkDeviceSize offset);
+void dispatchIndirect(VkCommandBuffer cmd, const ComputeProgram& program,
+                      std::span<const Binding> bindings, const void* pushConstants, size_t pushSize,
+                      const Buffer& args, VkDeviceSize offset);
 
 template <typename Push>
 void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,

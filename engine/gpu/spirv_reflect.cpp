@@ -10,28 +10,51 @@ namespace {
 
 // SPIR-V opcodes, decorations and storage classes used here (SPIR-V spec, section 3).
 enum Op : uint32_t {
-  OpEntryPoint = 15, OpExecutionMode = 16, OpTypeInt = 21, OpTypeFloat = 22, OpTypeVector = 23,
-  OpTypeMatrix = 24, OpTypeImage = 25, OpTypeSampler = 26, OpTypeSampledImage = 27,
-  OpTypeArray = 28, OpTypeRuntimeArray = 29, OpTypeStruct = 30, OpTypePointer = 32,
-  OpConstant = 43, OpVariable = 59, OpDecorate = 71, OpMemberDecorate = 72,
+  OpEntryPoint = 15,
+  OpExecutionMode = 16,
+  OpTypeInt = 21,
+  OpTypeFloat = 22,
+  OpTypeVector = 23,
+  OpTypeMatrix = 24,
+  OpTypeImage = 25,
+  OpTypeSampler = 26,
+  OpTypeSampledImage = 27,
+  OpTypeArray = 28,
+  OpTypeRuntimeArray = 29,
+  OpTypeStruct = 30,
+  OpTypePointer = 32,
+  OpConstant = 43,
+  OpVariable = 59,
+  OpDecorate = 71,
+  OpMemberDecorate = 72,
 };
 enum Decoration : uint32_t {
-  DecBlock = 2, DecBufferBlock = 3, DecArrayStride = 6, DecMatrixStride = 7, DecBinding = 33,
-  DecDescriptorSet = 34, DecOffset = 35,
+  DecBlock = 2,
+  DecBufferBlock = 3,
+  DecArrayStride = 6,
+  DecMatrixStride = 7,
+  DecBinding = 33,
+  DecDescriptorSet = 34,
+  DecOffset = 35,
 };
-enum StorageClass : uint32_t { UniformConstant = 0, Uniform = 2, PushConstant = 9, StorageBuffer = 12 };
+enum StorageClass : uint32_t {
+  UniformConstant = 0,
+  Uniform = 2,
+  PushConstant = 9,
+  StorageBuffer = 12
+};
 constexpr uint32_t kExecutionModeLocalSize = 17;
 constexpr uint32_t kDimBuffer = 5;
 
 struct Id {
   uint32_t opcode = 0;
-  uint32_t typeId = 0;         // pointee for pointers, element for arrays/vectors/matrices
+  uint32_t typeId = 0;  // pointee for pointers, element for arrays/vectors/matrices
   uint32_t storageClass = 0;
-  uint32_t width = 0;          // scalars: bits; vectors/matrices: component/column count
-  uint32_t sampled = 0;        // images: 1 sampled, 2 storage
-  uint32_t dim = 0;            // images: SPIR-V Dim (kDimBuffer for texel buffers)
-  uint32_t constant = 0;       // OpConstant value
-  uint32_t lengthId = 0;       // arrays
+  uint32_t width = 0;     // scalars: bits; vectors/matrices: component/column count
+  uint32_t sampled = 0;   // images: 1 sampled, 2 storage
+  uint32_t dim = 0;       // images: SPIR-V Dim (kDimBuffer for texel buffers)
+  uint32_t constant = 0;  // OpConstant value
+  uint32_t lengthId = 0;  // arrays
   uint32_t binding = UINT32_MAX, set = UINT32_MAX;
   uint32_t arrayStride = 0;
   bool block = false, bufferBlock = false;
@@ -39,7 +62,8 @@ struct Id {
   std::vector<uint32_t> memberOffsets, memberMatrixStrides;
 };
 
-uint32_t typeSize(const std::unordered_map<uint32_t, Id>& ids, uint32_t typeId, uint32_t matrixStride);
+uint32_t typeSize(const std::unordered_map<uint32_t, Id>& ids, uint32_t typeId,
+                  uint32_t matrixStride);
 
 uint32_t structSize(const std::unordered_map<uint32_t, Id>& ids, const Id& s) {
   uint32_t size = 0;
@@ -51,22 +75,28 @@ uint32_t structSize(const std::unordered_map<uint32_t, Id>& ids, const Id& s) {
   return size;
 }
 
-uint32_t typeSize(const std::unordered_map<uint32_t, Id>& ids, uint32_t typeId, uint32_t matrixStride) {
+uint32_t typeSize(const std::unordered_map<uint32_t, Id>& ids, uint32_t typeId,
+                  uint32_t matrixStride) {
   auto it = ids.find(typeId);
   if (it == ids.end()) return 0;
   const Id& t = it->second;
   switch (t.opcode) {
     case OpTypeInt:
-    case OpTypeFloat: return t.width / 8;
-    case OpTypeVector: return t.width * typeSize(ids, t.typeId, 0);
-    case OpTypeMatrix: return t.width * (matrixStride ? matrixStride : typeSize(ids, t.typeId, 0));
+    case OpTypeFloat:
+      return t.width / 8;
+    case OpTypeVector:
+      return t.width * typeSize(ids, t.typeId, 0);
+    case OpTypeMatrix:
+      return t.width * (matrixStride ? matrixStride : typeSize(ids, t.typeId, 0));
     case OpTypeArray: {
       auto len = ids.find(t.lengthId);
       uint32_t count = len == ids.end() ? 0 : len->second.constant;
       return count * (t.arrayStride ? t.arrayStride : typeSize(ids, t.typeId, 0));
     }
-    case OpTypeStruct: return structSize(ids, t);
-    default: return 0;
+    case OpTypeStruct:
+      return structSize(ids, t);
+    default:
+      return 0;
   }
 }
 
@@ -74,7 +104,8 @@ VkDescriptorType descriptorType(const std::unordered_map<uint32_t, Id>& ids, con
                                 uint32_t storageClass) {
   if (storageClass == StorageBuffer) return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   if (storageClass == Uniform) {
-    return pointee.bufferBlock ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    return pointee.bufferBlock ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+                               : VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
   }
   const Id* t = &pointee;
   if (t->opcode == OpTypeArray || t->opcode == OpTypeRuntimeArray) t = &ids.at(t->typeId);
@@ -82,19 +113,23 @@ VkDescriptorType descriptorType(const std::unordered_map<uint32_t, Id>& ids, con
     case OpTypeSampledImage:
       return ids.at(t->typeId).dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
                                                  : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    case OpTypeSampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
+    case OpTypeSampler:
+      return VK_DESCRIPTOR_TYPE_SAMPLER;
     case OpTypeImage:
       if (t->dim == kDimBuffer)
-        return t->sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+        return t->sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER
+                               : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
       return t->sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-    default: return VK_DESCRIPTOR_TYPE_MAX_ENUM;
+    default:
+      return VK_DESCRIPTOR_TYPE_MAX_ENUM;
   }
 }
 
 }  // namespace
 
 ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string& shaderName) {
-  if (words.size() < 5 || words[0] != 0x07230203u) fail(shaderName, ": not SPIR-V (bad magic number)");
+  if (words.size() < 5 || words[0] != 0x07230203u)
+    fail(shaderName, ": not SPIR-V (bad magic number)");
   ShaderReflection out;
   std::unordered_map<uint32_t, Id> ids;
   std::vector<uint32_t> variables;
@@ -106,7 +141,7 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string
     const uint32_t* w = &words[i];
     switch (opcode) {
       case OpEntryPoint:
-        out.stage = w[1] == 0 ? VK_SHADER_STAGE_VERTEX_BIT
+        out.stage = w[1] == 0   ? VK_SHADER_STAGE_VERTEX_BIT
                     : w[1] == 4 ? VK_SHADER_STAGE_FRAGMENT_BIT
                                 : VK_SHADER_STAGE_COMPUTE_BIT;
         break;
@@ -140,31 +175,58 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string
         break;
       }
       case OpTypeInt:
-      case OpTypeFloat: ids[w[1]].opcode = opcode; ids[w[1]].width = w[2]; break;
+      case OpTypeFloat:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].width = w[2];
+        break;
       case OpTypeVector:
-      case OpTypeMatrix: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; ids[w[1]].width = w[3]; break;
+      case OpTypeMatrix:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].typeId = w[2];
+        ids[w[1]].width = w[3];
+        break;
       case OpTypeImage:
         ids[w[1]].opcode = opcode;
         ids[w[1]].dim = w[3];
         ids[w[1]].sampled = w[7];
         break;
-      case OpTypeSampler: ids[w[1]].opcode = opcode; break;
-      case OpTypeSampledImage: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; break;
-      case OpTypeArray: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; ids[w[1]].lengthId = w[3]; break;
-      case OpTypeRuntimeArray: ids[w[1]].opcode = opcode; ids[w[1]].typeId = w[2]; break;
+      case OpTypeSampler:
+        ids[w[1]].opcode = opcode;
+        break;
+      case OpTypeSampledImage:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].typeId = w[2];
+        break;
+      case OpTypeArray:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].typeId = w[2];
+        ids[w[1]].lengthId = w[3];
+        break;
+      case OpTypeRuntimeArray:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].typeId = w[2];
+        break;
       case OpTypeStruct:
         ids[w[1]].opcode = opcode;
         ids[w[1]].members.assign(w + 2, w + count);
         break;
-      case OpTypePointer: ids[w[1]].opcode = opcode; ids[w[1]].storageClass = w[2]; ids[w[1]].typeId = w[3]; break;
-      case OpConstant: ids[w[2]].opcode = opcode; ids[w[2]].constant = count > 3 ? w[3] : 0; break;
+      case OpTypePointer:
+        ids[w[1]].opcode = opcode;
+        ids[w[1]].storageClass = w[2];
+        ids[w[1]].typeId = w[3];
+        break;
+      case OpConstant:
+        ids[w[2]].opcode = opcode;
+        ids[w[2]].constant = count > 3 ? w[3] : 0;
+        break;
       case OpVariable:
         ids[w[2]].opcode = opcode;
         ids[w[2]].typeId = w[1];
         ids[w[2]].storageClass = w[3];
         variables.push_back(w[2]);
         break;
-      default: break;
+      default:
+        break;
     }
     i += count;
   }
@@ -179,14 +241,17 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string
       if (var.binding == UINT32_MAX) continue;
       VkDescriptorType type = descriptorType(ids, pointee, var.storageClass);
       if (type == VK_DESCRIPTOR_TYPE_MAX_ENUM)
-        fail(shaderName, ": binding ", var.binding, " has a resource type this engine does not handle");
+        fail(shaderName, ": binding ", var.binding,
+             " has a resource type this engine does not handle");
       out.bindings.push_back({var.set == UINT32_MAX ? 0 : var.set, var.binding, type});
     }
   }
-  std::sort(out.bindings.begin(), out.bindings.end(),
-            [](const ReflectedBinding& a, const ReflectedBinding& b) { return a.binding < b.binding; });
+  std::sort(
+      out.bindings.begin(), out.bindings.end(),
+      [](const ReflectedBinding& a, const ReflectedBinding& b) { return a.binding < b.binding; });
   for (const ReflectedBinding& b : out.bindings) {
-    if (b.set != 0) fail(shaderName, ": binding ", b.binding, " uses set ", b.set, "; only set 0 is supported");
+    if (b.set != 0)
+      fail(shaderName, ": binding ", b.binding, " uses set ", b.set, "; only set 0 is supported");
   }
   return out;
 }

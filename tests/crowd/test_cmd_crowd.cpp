@@ -27,8 +27,9 @@ TEST_CASE("throng crowd simulate: a storyboard on tracked paths, every policy, a
   auto tracks = writeTracks(dir);
   auto board = dir / "board.png";
   REQUIRE(test::runThrong("storyboard example --seed 5 --out " + board.string()).exitCode == 0);
-  test::CommandResult r = test::runThrong("crowd simulate --storyboard " + board.string() + " --trajectories " +
-                                          tracks.string() + " --policy all --seconds 4 --json");
+  test::CommandResult r =
+      test::runThrong("crowd simulate --storyboard " + board.string() + " --trajectories " +
+                      tracks.string() + " --policy all --seconds 4 --json");
   REQUIRE_MESSAGE(r.exitCode == 0, r.output);
   nlohmann::json doc = nlohmann::json::parse(r.output.substr(r.output.find('{')));
   CHECK(doc["agents"].get<int>() > 20);
@@ -46,9 +47,12 @@ TEST_CASE("throng crowd simulate: a storyboard on tracked paths, every policy, a
 TEST_CASE("throng crowd metrics: replays the people with the CPU twin") {
   auto dir = test::freshDirectory("crowd_metrics");
   auto tracks = writeTracks(dir);
-  test::CommandResult r = test::runThrong("crowd metrics --trajectories " + tracks.string() + " --cpu --policy ttc");
+  test::CommandResult r =
+      test::runThrong("crowd metrics --trajectories " + tracks.string() + " --cpu --policy ttc");
   REQUIRE_MESSAGE(r.exitCode == 0, r.output);
-  CHECK(r.output.find("2 people (2 span 2+ s), frame step 10 = 0.400 s, replay of 12 s on cpu twin") != std::string::npos);
+  CHECK(r.output.find(
+            "2 people (2 span 2+ s), frame step 10 = 0.400 s, replay of 12 s on cpu twin") !=
+        std::string::npos);
   CHECK(r.output.find("real people: 2 agents") != std::string::npos);
   CHECK(r.output.find("policy ttc: 2 agents, 12 s") != std::string::npos);
 }
@@ -65,15 +69,19 @@ TEST_CASE("throng crowd: bad input is reported, not crashed on") {
     CHECK(r.exitCode == 1);
     CHECK(r.output.find("error: " + text) != std::string::npos);
   };
-  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " + tracks.string() + " --policy boids",
+  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " +
+                  tracks.string() + " --policy boids",
               "--policy 'boids': expected none, rule, ttc or all");
-  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " + (dir / "none.txt").string(),
+  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " +
+                  (dir / "none.txt").string(),
               (dir / "none.txt").string() + ": cannot open");
-  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " + tracks.string() + " --dt 0.3",
+  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " +
+                  tracks.string() + " --dt 0.3",
               "step 0.3 s: expected 1/n of a second");
   std::ofstream(dir / "bad.txt") << "0\t1\t0\t0\n10\t1\tx\t0\n";
   expectError("crowd metrics --trajectories " + (dir / "bad.txt").string(),
               (dir / "bad.txt").string() + ":2: field 3 'x' is not a finite number");
   expectError("crowd bench --agents 0", "--agents: each count must be 1..1000000, got 0");
-  expectError("crowd bench --numbering sideways", "--numbering: expected grid or random, got 'sideways'");
+  expectError("crowd bench --numbering sideways",
+              "--numbering: expected grid or random, got 'sideways'");
 }

@@ -44,7 +44,8 @@ GpuGrid buildOnGpu(const crowd::Crowd& c, const std::vector<glm::vec4>& steer, g
   crowd::GridJob job{&buffers, &agents, &grid};
   REQUIRE(job.validate().empty());
   // Twice, so leftovers of the first build (counts) would show.
-  for (int k = 0; k < 2; ++k) gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, programs); });
+  for (int k = 0; k < 2; ++k)
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, programs); });
   GpuGrid g;
   const size_t n = c.size();
   g.cellRank = gpu::readback<glm::uvec2>(ctx, grid.cellRank, n);
@@ -77,8 +78,10 @@ void compareGrids(uint32_t n, glm::vec2 cellSize) {
     REQUIRE(i < n);
     ++seen[i];
     uint32_t cell = cpu.cellOf[i];
-    cellsMatch = cellsMatch && k >= cpu.starts[cell] && k < cpu.starts[cell + 1] && k == cpu.starts[cell] + gpu.cellRank[i].y;
-    copiesMatch = copiesMatch && gpu.sorted[k] == glm::vec4(c.placement[i].x, c.placement[i].z, steer[i].x, steer[i].y);
+    cellsMatch = cellsMatch && k >= cpu.starts[cell] && k < cpu.starts[cell + 1] &&
+                 k == cpu.starts[cell] + gpu.cellRank[i].y;
+    copiesMatch = copiesMatch && gpu.sorted[k] == glm::vec4(c.placement[i].x, c.placement[i].z,
+                                                            steer[i].x, steer[i].y);
   }
   CHECK(cellsMatch);
   CHECK(ranksMatch);
@@ -90,18 +93,20 @@ void compareGrids(uint32_t n, glm::vec2 cellSize) {
     REQUIRE(cpu.starts[cell] == sum);
     sum += cpu.counts[cell];
     largest = std::max(largest, cpu.counts[cell]);
-    for (uint32_t k = cpu.starts[cell]; k < cpu.starts[cell + 1]; ++k) REQUIRE(cpu.cellOf[cpu.sortedIndex[k]] == cell);
+    for (uint32_t k = cpu.starts[cell]; k < cpu.starts[cell + 1]; ++k)
+      REQUIRE(cpu.cellOf[cpu.sortedIndex[k]] == cell);
   }
   CHECK(sum == n);
   CHECK(cpu.starts[cpu.table.cellCount] == n);
   CHECK(largest > 4);  // the cluster fills some cells
-  MESSAGE(n, " agents, ", cpu.table.cellCount, " cells (", 1u << cpu.table.widthShift, " x ", cpu.table.rowMask + 1,
-          "), largest cell ", largest);
+  MESSAGE(n, " agents, ", cpu.table.cellCount, " cells (", 1u << cpu.table.widthShift, " x ",
+          cpu.table.rowMask + 1, "), largest cell ", largest);
 }
 
 }  // namespace
 
-TEST_CASE("grid: the table is a power of two >= N within bounds, at least 32 x 32, rows <= columns") {
+TEST_CASE(
+    "grid: the table is a power of two >= N within bounds, at least 32 x 32, rows <= columns") {
   CHECK(crowd::gridTable(0).cellCount == 1024);
   CHECK(crowd::gridTable(1024).cellCount == 1024);
   CHECK(crowd::gridTable(1025).cellCount == 2048);
@@ -133,7 +138,9 @@ TEST_CASE("grid: cell index, hash and random numbers are the shader's (fixed val
   CHECK(u != crowd::steerRandom(5, 7, 7));
 }
 
-TEST_CASE("grid: GPU counting sort equals the CPU twin (counts, starts, each agent in its cell), small crowd") {
+TEST_CASE(
+    "grid: GPU counting sort equals the CPU twin (counts, starts, each agent in its cell), small "
+    "crowd") {
   compareGrids(300, glm::vec2(3.0f));
   compareGrids(300, glm::vec2(1.5f, 3.0f));
 }

@@ -98,7 +98,8 @@ TEST_CASE("program: a uniform texel buffer is reflected, bound and read") {
     gpu::Binding wrongType[] = {gpu::storageBinding(0, source), gpu::storageBinding(1, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, wrongType, count, n),
                          doctest::Contains("expects descriptor type"), Error);
-    gpu::Binding nullView[] = {gpu::uniformTexelBinding(0, VK_NULL_HANDLE), gpu::storageBinding(1, out)};
+    gpu::Binding nullView[] = {gpu::uniformTexelBinding(0, VK_NULL_HANDLE),
+                               gpu::storageBinding(1, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, nullView, count, n),
                          doctest::Contains("null buffer view"), Error);
   });
@@ -118,9 +119,12 @@ TEST_CASE("program: missing binding and wrong push size are reported") {
   gpu::CommandPool pool(ctx);
   VkCommandBuffer cmd = pool.allocate();
   gpu::beginCommands(cmd);
-  CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, one, push, 4), doctest::Contains("binding 1 was not provided"), Error);
-  CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, one, wrongPush, 4), doctest::Contains("push constants of 4 bytes"), Error);
-  CHECK_THROWS_WITH_AS(gpu::ComputeProgram(ctx, "nope.comp"), doctest::Contains("not embedded"), Error);
+  CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, one, push, 4),
+                       doctest::Contains("binding 1 was not provided"), Error);
+  CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, one, wrongPush, 4),
+                       doctest::Contains("push constants of 4 bytes"), Error);
+  CHECK_THROWS_WITH_AS(gpu::ComputeProgram(ctx, "nope.comp"), doctest::Contains("not embedded"),
+                       Error);
   gpu::endCommands(cmd);
   CHECK(ctx.validationMessageCount() == 0);
 }
