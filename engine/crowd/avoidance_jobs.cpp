@@ -39,6 +39,10 @@ void checkCrowdAndAgents(std::vector<std::string>& problems, const CrowdBuffers*
         concat("the crowd has ", crowd->count, " agents but the steering buffers ", agents->count));
   requireBuffer(problems, agents->goals, bytes, "goals");
   requireBuffer(problems, agents->steer, bytes, "steer");
+  if (!crowd->placementTexels || !agents->goalTexels || !agents->steerTexels)
+    problems.push_back(
+        "texel views of placement, goals or steer are missing (make the buffers with uploadCrowd "
+        "and uploadSteer)");
 }
 
 void checkGrid(std::vector<std::string>& problems, const GridBuffers* grid,
@@ -57,6 +61,9 @@ void checkGrid(std::vector<std::string>& problems, const GridBuffers* grid,
     problems.push_back(concat("grid table of ", t.cellCount, " cells (", 1u << t.widthShift, " x ",
                               t.rowMask + 1u, ") is not powers of two of at least 32 x 32 up to ",
                               kMaxGridCells, " cells"));
+  if (!grid->cellRankTexels || !grid->countTexels || !grid->startTexels ||
+      !grid->sortedIndexTexels || !grid->sortedTexels)
+    problems.push_back("the grid's texel views are missing (make it with makeGridBuffers)");
   if (!(grid->cellSize.x > 0.0f && grid->cellSize.y > 0.0f))
     problems.push_back(concat("grid cells must have a positive size, got ", grid->cellSize.x, " x ",
                               grid->cellSize.y, " m"));

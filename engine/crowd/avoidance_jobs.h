@@ -67,8 +67,8 @@ struct GridJob {
   const CrowdBuffers* crowd = nullptr;   // input: placement
   const SteerBuffers* agents = nullptr;  // input: steer (velocities copied into the grid)
   const GridBuffers* grid = nullptr;     // output
-  gpu::TimestampPool* timestamps =
-      nullptr;  // optional: a mark after the count, the scan and the scatter
+  // Optional: a mark after the count, the scan and the scatter.
+  gpu::TimestampPool* timestamps = nullptr;
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;

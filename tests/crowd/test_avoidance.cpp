@@ -189,6 +189,15 @@ TEST_CASE("avoidance jobs: mismatched buffers, parameters and frames are reporte
   CHECK(contains(job.validate(), "spans more than 8 cells"));
   CHECK(crowd::parseSteerPolicy("ttc") == crowd::SteerPolicy::Ttc);
   CHECK(!crowd::parseSteerPolicy("boids"));
+  // Buffers made by hand, without the texel views the passes read through, are reported.
+  crowd::GridBuffers viewless = crowd::makeGridBuffers(ctx, 10, crowd::AvoidanceParams{}.cellSize);
+  viewless.sortedTexels = gpu::Handle<VkBufferView>();
+  crowd::CrowdBuffers bare = crowd::uploadCrowd(ctx, a.crowd);
+  bare.placementTexels = gpu::Handle<VkBufferView>();
+  job = {&bare, &agents, &viewless};
+  problems = job.validate();
+  CHECK(contains(problems, "the grid's texel views are missing"));
+  CHECK(contains(problems, "texel views of placement, goals or steer are missing"));
 }
 
 TEST_CASE("avoidance: GPU vs CPU twin over several steps on 2000 agents, each policy") {
