@@ -147,6 +147,8 @@ void scanRound(uint total, uint runBegin[kRuns], uint runLength[kRuns]) {
   uint base = 0u;
   do {
     uint bits = 0u;
+    // Chunks past the end of the union are left unset: no lane marks a candidate there, so the
+    // evaluation loop's selects never take them (setting them costs registers, ≈ 5% TTC).
     vec4 held[kHeld];
     uint chunk = 0u;
     do {
