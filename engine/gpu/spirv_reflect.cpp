@@ -9,40 +9,19 @@ namespace throng::gpu {
 namespace {
 
 // SPIR-V opcodes, decorations and storage classes used here (SPIR-V spec, section 3).
+// clang-format off
 enum Op : uint32_t {
-  OpEntryPoint = 15,
-  OpExecutionMode = 16,
-  OpTypeInt = 21,
-  OpTypeFloat = 22,
-  OpTypeVector = 23,
-  OpTypeMatrix = 24,
-  OpTypeImage = 25,
-  OpTypeSampler = 26,
-  OpTypeSampledImage = 27,
-  OpTypeArray = 28,
-  OpTypeRuntimeArray = 29,
-  OpTypeStruct = 30,
-  OpTypePointer = 32,
-  OpConstant = 43,
-  OpVariable = 59,
-  OpDecorate = 71,
-  OpMemberDecorate = 72,
+  OpEntryPoint = 15, OpExecutionMode = 16, OpTypeInt = 21, OpTypeFloat = 22, OpTypeVector = 23,
+  OpTypeMatrix = 24, OpTypeImage = 25, OpTypeSampler = 26, OpTypeSampledImage = 27,
+  OpTypeArray = 28, OpTypeRuntimeArray = 29, OpTypeStruct = 30, OpTypePointer = 32,
+  OpConstant = 43, OpVariable = 59, OpDecorate = 71, OpMemberDecorate = 72,
 };
 enum Decoration : uint32_t {
-  DecBlock = 2,
-  DecBufferBlock = 3,
-  DecArrayStride = 6,
-  DecMatrixStride = 7,
-  DecBinding = 33,
-  DecDescriptorSet = 34,
-  DecOffset = 35,
+  DecBlock = 2, DecBufferBlock = 3, DecArrayStride = 6, DecMatrixStride = 7, DecBinding = 33,
+  DecDescriptorSet = 34, DecOffset = 35,
 };
-enum StorageClass : uint32_t {
-  UniformConstant = 0,
-  Uniform = 2,
-  PushConstant = 9,
-  StorageBuffer = 12
-};
+enum StorageClass : uint32_t { UniformConstant = 0, Uniform = 2, PushConstant = 9, StorageBuffer = 12 };
+// clang-format on
 constexpr uint32_t kExecutionModeLocalSize = 17;
 constexpr uint32_t kDimBuffer = 5;
 
@@ -125,6 +104,43 @@ VkDescriptorType descriptorType(const std::unordered_map<uint32_t, Id>& ids, con
   }
 }
 
+// A type declaration (result id in word 1): the fields the layout needs.
+void recordType(Id& t, uint32_t opcode, const uint32_t* w, uint32_t count) {
+  t.opcode = opcode;
+  switch (opcode) {
+    case OpTypeInt:
+    case OpTypeFloat:
+      t.width = w[2];
+      break;
+    case OpTypeVector:
+    case OpTypeMatrix:
+      t.typeId = w[2];
+      t.width = w[3];
+      break;
+    case OpTypeImage:
+      t.dim = w[3];
+      t.sampled = w[7];
+      break;
+    case OpTypeSampledImage:
+    case OpTypeRuntimeArray:
+      t.typeId = w[2];
+      break;
+    case OpTypeArray:
+      t.typeId = w[2];
+      t.lengthId = w[3];
+      break;
+    case OpTypeStruct:
+      t.members.assign(w + 2, w + count);
+      break;
+    case OpTypePointer:
+      t.storageClass = w[2];
+      t.typeId = w[3];
+      break;
+    default:
+      break;
+  }
+}
+
 }  // namespace
 
 ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string& shaderName) {
@@ -176,44 +192,16 @@ ShaderReflection reflectSpirv(std::span<const uint32_t> words, const std::string
       }
       case OpTypeInt:
       case OpTypeFloat:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].width = w[2];
-        break;
       case OpTypeVector:
       case OpTypeMatrix:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].typeId = w[2];
-        ids[w[1]].width = w[3];
-        break;
       case OpTypeImage:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].dim = w[3];
-        ids[w[1]].sampled = w[7];
-        break;
       case OpTypeSampler:
-        ids[w[1]].opcode = opcode;
-        break;
       case OpTypeSampledImage:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].typeId = w[2];
-        break;
       case OpTypeArray:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].typeId = w[2];
-        ids[w[1]].lengthId = w[3];
-        break;
       case OpTypeRuntimeArray:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].typeId = w[2];
-        break;
       case OpTypeStruct:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].members.assign(w + 2, w + count);
-        break;
       case OpTypePointer:
-        ids[w[1]].opcode = opcode;
-        ids[w[1]].storageClass = w[2];
-        ids[w[1]].typeId = w[3];
+        recordType(ids[w[1]], opcode, w, count);
         break;
       case OpConstant:
         ids[w[2]].opcode = opcode;
