@@ -113,14 +113,9 @@ float steerRandom(uint32_t agent, uint32_t step, uint32_t seed) {
 std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 cellSize,
                                 GridTable table) {
   THRONG_CHECK(cellSize.x > 0.0f && cellSize.y > 0.0f, "grid cell size must be positive");
-  std::vector<uint32_t> cell(placement.size()), order(placement.size());
-  for (size_t i = 0; i < placement.size(); ++i) {
-    cell[i] = cellIndex(cellCoord({placement[i].x, placement[i].z}, 1.0f / cellSize), table);
-    order[i] = uint32_t(i);
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](uint32_t a, uint32_t b) { return cell[a] < cell[b]; });
-  return order;
+  // The CPU grid's own counting sort; the velocities it copies beside the positions are unused.
+  const std::vector<glm::vec4> still(placement.size(), glm::vec4(0.0f));
+  return buildGridCpu(placement, still, cellSize, table).sortedIndex;
 }
 
 Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer,

@@ -50,12 +50,10 @@ VkDeviceSize texelBytes(VkFormat format) {
 
 Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer, VkFormat format) {
   VkDevice device = context.device();
-  VkPhysicalDeviceProperties properties;
-  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
   const VkDeviceSize texels = buffer.size() / texelBytes(format);
-  if (texels > properties.limits.maxTexelBufferElements)
+  if (texels > context.info().maxTexelBufferElements)
     fail("a buffer of ", texels, " texels exceeds ", context.info().name, "'s limit of ",
-         properties.limits.maxTexelBufferElements, " texels per texel buffer");
+         context.info().maxTexelBufferElements, " texels per texel buffer");
   VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   info.buffer = buffer.get();
   info.format = format;

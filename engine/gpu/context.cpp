@@ -156,6 +156,7 @@ Context::Context(const ContextOptions& options)
   info_.timestampPeriodNs = chosen.properties.limits.timestampPeriod;
   info_.maxStorageBufferRange = chosen.properties.limits.maxStorageBufferRange;
   info_.maxUniformBufferRange = chosen.properties.limits.maxUniformBufferRange;
+  info_.maxTexelBufferElements = chosen.properties.limits.maxTexelBufferElements;
   VkPhysicalDeviceMemoryProperties memory{};
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory);
   for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)

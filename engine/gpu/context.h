@@ -28,6 +28,7 @@ struct DeviceInfo {
   float timestampPeriodNs = 1.0f;
   uint32_t maxStorageBufferRange = 0;
   uint32_t maxUniformBufferRange = 0;
+  uint32_t maxTexelBufferElements = 0;
   bool int64Atomics = false;  // shaderInt64 + shaderBufferInt64Atomics (the joint splat needs them)
   uint64_t deviceLocalBytes = 0;  // the largest device-local heap (lavapipe: system memory)
   bool isCpu() const { return type == VK_PHYSICAL_DEVICE_TYPE_CPU; }
@@ -53,7 +54,8 @@ class Context {
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const;
   // One allocation of a memory type with `wanted` flags that satisfies `requirements`.
-  Handle<VkDeviceMemory> allocateMemory(const VkMemoryRequirements& requirements, VkMemoryPropertyFlags wanted) const;
+  Handle<VkDeviceMemory> allocateMemory(const VkMemoryRequirements& requirements,
+                                        VkMemoryPropertyFlags wanted) const;
   void waitIdle() const;
 
  private:
