@@ -9,6 +9,9 @@ packages=(
   libimgui-dev doctest-dev
   libopenmpi-dev openmpi-bin
   xvfb xauth gnuplot-nox
+  clang libclang-rt-14-dev
+  ffmpeg libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  libpugixml-dev
 )
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
