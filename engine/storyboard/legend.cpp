@@ -4,22 +4,24 @@
 #include <cctype>
 #include <cstdlib>
 
-#include <nlohmann/json.hpp>
-
 #include "core/error.h"
 #include "core/file_io.h"
+#include "storyboard/json_document.h"
 
 namespace throng::storyboard {
 namespace {
-using Json = nlohmann::json;
+using Json = JsonDocument;
 
-std::string colourText(Rgba8 c) { return concat("(", int(c.r), ",", int(c.g), ",", int(c.b), ")"); }
+std::string colourText(Rgba8 c) {
+  return concat("(", int(c.r), ",", int(c.g), ",", int(c.b), ")");
+}
 
 Rgba8 parseColour(const Json& value, const std::string& where) {
   if (value.is_string()) {
     const std::string text = value.get<std::string>();
     if (text.size() == 7 && text[0] == '#' &&
-        std::all_of(text.begin() + 1, text.end(), [](char ch) { return std::isxdigit(uint8_t(ch)); })) {
+        std::all_of(text.begin() + 1, text.end(),
+                    [](char ch) { return std::isxdigit(uint8_t(ch)); })) {
       unsigned long rgb = std::strtoul(text.c_str() + 1, nullptr, 16);
       return {uint8_t(rgb >> 16), uint8_t(rgb >> 8), uint8_t(rgb), 255};
     }
@@ -27,9 +29,11 @@ Rgba8 parseColour(const Json& value, const std::string& where) {
              std::all_of(value.begin(), value.end(), [](const Json& v) {
                return v.is_number_integer() && v.get<int64_t>() >= 0 && v.get<int64_t>() <= 255;
              })) {
-    return {uint8_t(value[0].get<int>()), uint8_t(value[1].get<int>()), uint8_t(value[2].get<int>()), 255};
+    return {uint8_t(value[0].get<int>()), uint8_t(value[1].get<int>()),
+            uint8_t(value[2].get<int>()), 255};
   }
-  fail(where, ": expected a colour [r,g,b] with integers 0..255 or \"#rrggbb\", got ", value.dump());
+  fail(where, ": expected a colour [r,g,b] with integers 0..255 or \"#rrggbb\", got ",
+       value.dump());
 }
 
 template <size_t N>
@@ -53,35 +57,47 @@ void requireDistinct(std::span<const Rgba8> colours, int tolerance, const std::s
                      std::string_view what) {
   for (size_t i = 0; i < colours.size(); ++i) {
     if (isWhite(colours[i], tolerance))
-      fail(source, ": ", what, " colour ", colourText(colours[i]), " is indistinguishable from the white background");
+      fail(source, ": ", what, " colour ", colourText(colours[i]),
+           " is indistinguishable from the white background");
     for (size_t j = 0; j < i; ++j)
       if (colourDistance(colours[i], colours[j]) <= tolerance)
-        fail(source, ": ", what, " colours ", colourText(colours[j]), " and ", colourText(colours[i]),
-             " are within the tolerance ", tolerance, " of each other (ambiguous)");
+        fail(source, ": ", what, " colours ", colourText(colours[j]), " and ",
+             colourText(colours[i]), " are within the tolerance ", tolerance,
+             " of each other (ambiguous)");
   }
 }
+Legend legendFrom(const Json& root, const std::string& source);
 }  // namespace
 
 Legend parseLegend(std::string_view text, const std::string& source) {
-  Json root;
-  try {
-    root = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    fail(source, ": not valid JSON (", e.what(), ")");
-  }
-  if (!root.is_object()) fail(source, ": expected a JSON object with states/actions/groups/tolerance");
+  const Json root = parseJsonDocument(text, source);
+  return readJsonDocument(source, [&] { return legendFrom(root, source); });
+}
+
+Legend loadLegend(const std::filesystem::path& path) {
+  return parseLegend(readTextFile(path), path.string());
+}
+
+namespace {
+Legend legendFrom(const Json& root, const std::string& source) {
+  if (!root.is_object())
+    fail(source, ": expected a JSON object with states/actions/groups/tolerance");
   Legend legend;
   for (const auto& [key, value] : root.items()) {
     if (key == "tolerance") {
-      if (!value.is_number_integer() || value.get<int64_t>() < 0 || value.get<int64_t>() > kMaxTolerance)
+      if (!value.is_number_integer() || value.get<int64_t>() < 0 ||
+          value.get<int64_t>() > kMaxTolerance)
         fail(source, ": tolerance: expected an integer 0..", kMaxTolerance, ", got ", value.dump());
       legend.tolerance = value.get<int>();
     } else if (key == "states") {
-      parseNamedColours(value, source + ": states", [](int i) { return stateName(State(i)); }, legend.states);
+      parseNamedColours(
+          value, source + ": states", [](int i) { return stateName(State(i)); }, legend.states);
     } else if (key == "actions") {
-      parseNamedColours(value, source + ": actions", [](int i) { return actionName(Action(i)); }, legend.actions);
+      parseNamedColours(
+          value, source + ": actions", [](int i) { return actionName(Action(i)); }, legend.actions);
     } else if (key == "groups") {
-      if (!value.is_array()) fail(source, ": groups: expected an array of {\"name\": ..., \"colour\": [r,g,b]}");
+      if (!value.is_array())
+        fail(source, ": groups: expected an array of {\"name\": ..., \"colour\": [r,g,b]}");
       for (size_t i = 0; i < value.size(); ++i) {
         const Json& entry = value[i];
         std::string where = concat(source, ": groups[", i, "]");
@@ -106,10 +122,7 @@ Legend parseLegend(std::string_view text, const std::string& source) {
   requireDistinct(groupColours, legend.tolerance, source, "group");
   return legend;
 }
-
-Legend loadLegend(const std::filesystem::path& path) {
-  return parseLegend(readTextFile(path), path.string());
-}
+}  // namespace
 
 int colourDistance(Rgba8 a, Rgba8 b) {
   return std::max({std::abs(int(a.r) - int(b.r)), std::abs(int(a.g) - int(b.g)),
@@ -140,15 +153,16 @@ namespace {
 const std::vector<Rgba8>& palette() {
   static const std::vector<Rgba8> colours = [] {
     // Most distinct first; then the rest of the grid in order.
-    std::vector<Rgba8> list = {{0, 0, 255, 255},   {0, 0, 0, 255},     {128, 0, 255, 255},
+    std::vector<Rgba8> list = {{0, 0, 255, 255},   {0, 0, 0, 255},       {128, 0, 255, 255},
                                {0, 255, 255, 255}, {128, 128, 128, 255}, {0, 128, 128, 255},
-                               {255, 0, 255, 255}, {0, 0, 128, 255},   {128, 0, 0, 255}};
+                               {255, 0, 255, 255}, {0, 0, 128, 255},     {128, 0, 0, 255}};
     const Legend defaults;
     for (int r : {0, 128, 255})
       for (int g : {0, 128, 255})
         for (int b : {0, 128, 255}) {
           Rgba8 c{uint8_t(r), uint8_t(g), uint8_t(b), 255};
-          bool taken = std::find(list.begin(), list.end(), c) != list.end() || (r == 255 && g == 255 && b == 255);
+          bool taken = std::find(list.begin(), list.end(), c) != list.end() ||
+                       (r == 255 && g == 255 && b == 255);
           for (Rgba8 s : defaults.states) taken = taken || colourDistance(c, s) == 0;
           for (Rgba8 a : defaults.actions) taken = taken || colourDistance(c, a) == 0;
           if (!taken) list.push_back(c);
@@ -159,8 +173,12 @@ const std::vector<Rgba8>& palette() {
 }
 }  // namespace
 
-int groupPaletteSize() { return int(palette().size()); }
-Rgba8 paletteColour(int index) { return palette().at(size_t(index)); }
+int groupPaletteSize() {
+  return int(palette().size());
+}
+Rgba8 paletteColour(int index) {
+  return palette().at(size_t(index));
+}
 
 Rgba8 groupColour(const Legend& legend, int group) {
   if (group < 0) fail("group ", group, ": group numbers start at 0");

@@ -1,25 +1,27 @@
 #include "storyboard/storyboard_json.h"
 
-#include <nlohmann/json.hpp>
-
 #include "core/error.h"
+#include "storyboard/json_document.h"
 
 namespace throng::storyboard {
 namespace {
-using Json = nlohmann::ordered_json;
+using Json = JsonDocument;
 constexpr int64_t kLimit = 1'000'000;
 
 int intField(const Json& object, const char* key, const std::string& where) {
-  if (!object.contains(key) || !object[key].is_number_integer() || object[key].get<int64_t>() < -kLimit ||
-      object[key].get<int64_t>() > kLimit)
+  if (!object.contains(key) || !object[key].is_number_integer() ||
+      (object[key].is_number_unsigned() && object[key].get<uint64_t>() > uint64_t(kLimit)) ||
+      object[key].get<int64_t>() < -kLimit || object[key].get<int64_t>() > kLimit)
     fail(where, ": expected an integer \"", key, "\" within +-", kLimit);
   return object[key].get<int>();
 }
 
 std::string stringField(const Json& object, const char* key, const std::string& where) {
-  if (!object.contains(key) || !object[key].is_string()) fail(where, ": expected a string \"", key, "\"");
+  if (!object.contains(key) || !object[key].is_string())
+    fail(where, ": expected a string \"", key, "\"");
   return object[key].get<std::string>();
 }
+Storyboard storyboardFrom(const Json& root, const std::string& source);
 }  // namespace
 
 std::string storyboardToJson(const Storyboard& storyboard) {
@@ -39,23 +41,25 @@ std::string storyboardToJson(const Storyboard& storyboard) {
   }
   root["agents"] = std::move(agents);
   Json invalid = Json::array();
-  for (const InvalidGlyph& g : storyboard.invalid) invalid.push_back(Json{{"x", g.x}, {"y", g.y}, {"reason", g.reason}});
+  for (const InvalidGlyph& g : storyboard.invalid)
+    invalid.push_back(Json{{"x", g.x}, {"y", g.y}, {"reason", g.reason}});
   root["invalid"] = std::move(invalid);
   return root.dump();
 }
 
 Storyboard storyboardFromJson(std::string_view text, const std::string& source) {
-  Json root;
-  try {
-    root = Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    fail(source, ": not valid JSON (", e.what(), ")");
-  }
+  const Json root = parseJsonDocument(text, source);
+  return readJsonDocument(source, [&] { return storyboardFrom(root, source); });
+}
+
+namespace {
+Storyboard storyboardFrom(const Json& root, const std::string& source) {
   if (!root.is_object()) fail(source, ": expected an object {\"width\", \"height\", \"agents\"}");
   Storyboard storyboard;
   storyboard.width = intField(root, "width", source);
   storyboard.height = intField(root, "height", source);
-  if (!root.contains("agents") || !root["agents"].is_array()) fail(source, ": expected an array \"agents\"");
+  if (!root.contains("agents") || !root["agents"].is_array())
+    fail(source, ": expected an array \"agents\"");
   for (size_t i = 0; i < root["agents"].size(); ++i) {
     const Json& a = root["agents"][i];
     std::string where = concat(source, ": agents[", i, "]");
@@ -66,7 +70,9 @@ Storyboard storyboardFromJson(std::string_view text, const std::string& source) 
     std::string heading = stringField(a, "heading", where), state = stringField(a, "state", where),
                 action = stringField(a, "action", where);
     auto h = parseHeading(heading);
-    if (!h) fail(where, ": heading \"", heading, "\" (expected Top, Left, Down, Right, TopLeft, TopRight, LeftDown, RightDown)");
+    if (!h)
+      fail(where, ": heading \"", heading,
+           "\" (expected Top, Left, Down, Right, TopLeft, TopRight, LeftDown, RightDown)");
     auto s = parseState(state);
     if (!s) fail(where, ": state \"", state, "\" (expected stroll or hurried)");
     auto act = parseAction(action);
@@ -78,5 +84,7 @@ Storyboard storyboardFromJson(std::string_view text, const std::string& source) 
   }
   return storyboard;
 }
+
+}  // namespace
 
 }  // namespace throng::storyboard

@@ -45,7 +45,8 @@ TEST_CASE("legend: overrides change what colours mean") {
   image.at(15, 4) = test::kGreen;
   const Storyboard s = decodeStoryboard(image, legend);
   REQUIRE(s.glyphs.size() == 2);
-  CHECK(s.glyphs[0] == Glyph{3, 3, Heading::Down, State::Stroll, Action::Talk, 2});  // after the named ones
+  CHECK(s.glyphs[0] ==
+        Glyph{3, 3, Heading::Down, State::Stroll, Action::Talk, 2});  // after the named ones
   CHECK(s.glyphs[1] == Glyph{9, 3, Heading::Down, State::Hurried, Action::Walk, 1});
   REQUIRE(s.invalid.size() == 1);
   CHECK(s.invalid[0].reason == "unknown state colour (255,128,0)");
@@ -60,9 +61,12 @@ TEST_CASE("legend: overrides change what colours mean") {
 }
 
 TEST_CASE("legend: malformed files give errors naming the file and what was expected") {
-  CHECK_THROWS_WITH_AS(parseLegend("{\"states\": ", "a.json"), doctest::Contains("a.json: not valid JSON"), Error);
-  CHECK_THROWS_WITH_AS(parseLegend("[1]", "b.json"), doctest::Contains("b.json: expected a JSON object"), Error);
-  CHECK_THROWS_WITH_AS(parseLegend(R"({"colours": {}})", "c.json"), doctest::Contains("unknown key \"colours\""), Error);
+  CHECK_THROWS_WITH_AS(parseLegend("{\"states\": ", "a.json"),
+                       doctest::Contains("a.json: not valid JSON"), Error);
+  CHECK_THROWS_WITH_AS(parseLegend("[1]", "b.json"),
+                       doctest::Contains("b.json: expected a JSON object"), Error);
+  CHECK_THROWS_WITH_AS(parseLegend(R"({"colours": {}})", "c.json"),
+                       doctest::Contains("unknown key \"colours\""), Error);
   CHECK_THROWS_WITH_AS(parseLegend(R"({"states": {"sprint": [1,2,3]}})", "d.json"),
                        doctest::Contains("d.json: states: unknown name \"sprint\""), Error);
   CHECK_THROWS_WITH_AS(parseLegend(R"({"actions": {"run": [1,2]}})", "e.json"),
@@ -71,10 +75,12 @@ TEST_CASE("legend: malformed files give errors naming the file and what was expe
                        doctest::Contains("ambiguous"), Error);
   CHECK_THROWS_WITH_AS(parseLegend(R"({"states": {"stroll": [250,250,250]}})", "g.json"),
                        doctest::Contains("white background"), Error);
-  CHECK_THROWS_WITH_AS(parseLegend(R"({"tolerance": 300})", "h.json"), doctest::Contains("h.json: tolerance"), Error);
+  CHECK_THROWS_WITH_AS(parseLegend(R"({"tolerance": 300})", "h.json"),
+                       doctest::Contains("h.json: tolerance"), Error);
   CHECK_THROWS_WITH_AS(parseLegend(R"({"groups": [{"name": "x"}]})", "i.json"),
                        doctest::Contains("i.json: groups[0]"), Error);
-  CHECK_THROWS_WITH_AS(loadLegend("/nonexistent/legend.json"), doctest::Contains("/nonexistent/legend.json"), Error);
+  CHECK_THROWS_WITH_AS(loadLegend("/nonexistent/legend.json"),
+                       doctest::Contains("/nonexistent/legend.json"), Error);
 }
 
 TEST_CASE("legend: colour helpers") {
@@ -90,4 +96,22 @@ TEST_CASE("legend: colour helpers") {
   CHECK(groupPaletteSize() == 23);
   for (int i = 0; i < groupPaletteSize(); ++i)
     for (int j = 0; j < i; ++j) CHECK(colourDistance(paletteColour(i), paletteColour(j)) >= 127);
+}
+
+TEST_CASE("legend: numbers out of range and repeated keys name the file and key") {
+  CHECK_THROWS_WITH_AS(parseLegend(R"({"tolerance": 1e400})", "big.json"),
+                       doctest::Contains("big.json: key \"tolerance\""), Error);
+  CHECK_THROWS_WITH_AS(parseLegend("{\"tolerance\": 20,\n \"tolerance\": 30}", "twice.json"),
+                       doctest::Contains("twice.json: duplicate key \"tolerance\""), Error);
+  CHECK_THROWS_WITH_AS(
+      parseLegend(R"({"states": {"stroll": [0,0,0], "stroll": [9,9,9]}})", "nested.json"),
+      doctest::Contains("nested.json: duplicate key \"states.stroll\""), Error);
+  CHECK_THROWS_WITH_AS(parseLegend("{\n\"tolerance\": 20,\n\"states\": }", "line.json"),
+                       doctest::Contains("line.json: not valid JSON (parse error at line 3"),
+                       Error);
+  // The same key in two different objects is not a repeat.
+  const Legend legend = parseLegend(
+      R"({"groups": [{"name": "a", "colour": [0,0,255]}, {"name": "b", "colour": [0,0,0]}]})",
+      "ok.json");
+  CHECK(legend.groups.size() == 2);
 }

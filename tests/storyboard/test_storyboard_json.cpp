@@ -13,10 +13,11 @@ TEST_CASE("storyboard json: the exact decode --json form") {
   s.glyphs = {{10, 12, Heading::Down, State::Hurried, Action::Walk, 0},
               {40, 12, Heading::TopLeft, State::Stroll, Action::Talk, 1}};
   s.invalid = {{5, 50, "sum 19 is not a T glyph"}};
-  CHECK(storyboardToJson(s) ==
-        R"({"width":90,"height":60,"agents":[{"x":10,"y":12,"heading":"Down","state":"hurried","action":"walk","group":0},)"
-        R"({"x":40,"y":12,"heading":"TopLeft","state":"stroll","action":"talk","group":1}],)"
-        R"("invalid":[{"x":5,"y":50,"reason":"sum 19 is not a T glyph"}]})");
+  CHECK(
+      storyboardToJson(s) ==
+      R"({"width":90,"height":60,"agents":[{"x":10,"y":12,"heading":"Down","state":"hurried","action":"walk","group":0},)"
+      R"({"x":40,"y":12,"heading":"TopLeft","state":"stroll","action":"talk","group":1}],)"
+      R"("invalid":[{"x":5,"y":50,"reason":"sum 19 is not a T glyph"}]})");
   const Storyboard back = storyboardFromJson(storyboardToJson(s), "s.json");
   CHECK(back.width == 90);
   CHECK(back.height == 60);
@@ -24,11 +25,25 @@ TEST_CASE("storyboard json: the exact decode --json form") {
 }
 
 TEST_CASE("storyboard json: errors name the agent and the expected values") {
-  CHECK_THROWS_WITH_AS(storyboardFromJson("{", "a.json"), doctest::Contains("a.json: not valid JSON"), Error);
+  CHECK_THROWS_WITH_AS(storyboardFromJson("{", "a.json"),
+                       doctest::Contains("a.json: not valid JSON"), Error);
   CHECK_THROWS_WITH_AS(storyboardFromJson(R"({"width":9,"agents":[]})", "b.json"),
                        doctest::Contains("b.json: expected an integer \"height\""), Error);
   CHECK_THROWS_WITH_AS(
-      storyboardFromJson(R"({"width":9,"height":9,"agents":[{"x":4,"y":4,"heading":"Up","state":"stroll","action":"walk"}]})",
-                         "c.json"),
+      storyboardFromJson(
+          R"({"width":9,"height":9,"agents":[{"x":4,"y":4,"heading":"Up","state":"stroll","action":"walk"}]})",
+          "c.json"),
       doctest::Contains("c.json: agents[0]: heading \"Up\""), Error);
+}
+
+TEST_CASE("storyboard json: out-of-range numbers and repeated keys are errors naming the file") {
+  CHECK_THROWS_WITH_AS(
+      storyboardFromJson(R"({"width": 1e400, "height": 5, "agents": []})", "big.json"),
+      doctest::Contains("big.json: key \"width\""), Error);
+  CHECK_THROWS_WITH_AS(
+      storyboardFromJson(R"({"width": 5, "width": 6, "height": 5, "agents": []})", "twice.json"),
+      doctest::Contains("twice.json: duplicate key \"width\""), Error);
+  CHECK_THROWS_WITH_AS(
+      storyboardFromJson(R"({"width": 18446744073709551615, "height": 5, "agents": []})", "u.json"),
+      doctest::Contains("u.json: expected an integer \"width\""), Error);
 }
