@@ -1,0 +1,116 @@
+#include "core/frame_output.h"
+
+#include <chrono>
+#include <cstdio>
+
+#include "core/error.h"
+
+namespace throng {
+namespace {
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+}  // namespace
+
+FrameOutput::FrameOutput(const FrameOutputOptions& options) : options_(options) {
+  if (options_.queueDepth < 1 || options_.queueDepth > 64)
+    fail("frame output: queue depth ", options_.queueDepth, " is outside 1..64");
+  if (options_.video)
+    video_.emplace(*options_.video, VideoOptions{options_.width, options_.height, options_.fps});
+  worker_ = std::thread([this] { run(); });
+}
+
+FrameOutput::~FrameOutput() {
+  {
+    std::lock_guard lock(mutex_);
+    closing_ = true;
+    queue_.clear();
+  }
+  changed_.notify_all();
+  if (worker_.joinable()) worker_.join();
+  video_.reset();  // an unfinished video's temporary file is removed
+}
+
+void FrameOutput::rethrow() {
+  if (error_) {
+    std::exception_ptr e = error_;
+    error_ = nullptr;
+    std::rethrow_exception(e);
+  }
+}
+
+void FrameOutput::push(std::shared_ptr<const ImageRgba8> frame, int index) {
+  auto start = std::chrono::steady_clock::now();
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock,
+                [&] { return error_ || int(queue_.size()) + inFlight_ < options_.queueDepth; });
+  stats_.waitedMs += millisecondsSince(start);
+  rethrow();
+  queue_.push_back({std::move(frame), index});
+  lock.unlock();
+  changed_.notify_all();
+}
+
+void FrameOutput::finish() {
+  {
+    std::unique_lock lock(mutex_);
+    closing_ = true;
+  }
+  changed_.notify_all();
+  if (worker_.joinable()) worker_.join();
+  std::lock_guard lock(mutex_);
+  rethrow();
+  if (video_) {
+    video_->finish();
+    video_.reset();
+  }
+}
+
+FrameOutputStats FrameOutput::stats() const {
+  std::lock_guard lock(mutex_);
+  return stats_;
+}
+
+void FrameOutput::run() {
+  for (;;) {
+    Job job;
+    {
+      std::unique_lock lock(mutex_);
+      changed_.wait(lock, [&] { return closing_ || !queue_.empty(); });
+      if (queue_.empty() || error_) return;
+      job = std::move(queue_.front());
+      queue_.pop_front();
+      inFlight_ = 1;  // the slot frees only once the frame is encoded: depth bounds memory
+    }
+    auto start = std::chrono::steady_clock::now();
+    try {
+      encode(job);
+    } catch (...) {
+      std::lock_guard lock(mutex_);
+      error_ = std::current_exception();
+      inFlight_ = 0;
+      queue_.clear();
+      changed_.notify_all();
+      return;
+    }
+    {
+      std::lock_guard lock(mutex_);
+      inFlight_ = 0;
+      stats_.encodeMs += millisecondsSince(start);
+      ++stats_.frames;
+    }
+    changed_.notify_all();
+  }
+}
+
+void FrameOutput::encode(const Job& job) {
+  if (options_.pngFolder) {
+    char name[32];
+    std::snprintf(name, sizeof(name), "frame_%04d.png", job.index);
+    writePngAtomic(*options_.pngFolder / name, *job.image);
+  }
+  if (video_) video_->write(*job.image);
+}
+
+}  // namespace throng

@@ -1,0 +1,68 @@
+#pragma once
+// Where rendered frames go: numbered PNG files and/or an MP4 video, encoded on a worker thread
+// so that encoding never sits on the frame loop's timing path. The queue between the frame loop
+// and the worker holds at most `queueDepth` frames: a loop that outruns the encoder waits for a
+// free slot (bounded memory) and the time it waits is reported.
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "core/image.h"
+#include "core/video_writer.h"
+
+namespace throng {
+
+struct FrameOutputOptions {
+  std::optional<std::filesystem::path> pngFolder;  // frame_0000.png, frame_0001.png, ...
+  std::optional<std::filesystem::path> video;      // an .mp4 file
+  int width = 0, height = 0;
+  double fps = 30.0;
+  int queueDepth = 3;
+};
+
+struct FrameOutputStats {
+  int frames = 0;
+  double encodeMs = 0.0;  // the worker's time, all frames
+  double waitedMs = 0.0;  // the frame loop's time waiting for a free queue slot
+};
+
+class FrameOutput {
+ public:
+  explicit FrameOutput(const FrameOutputOptions& options);
+  ~FrameOutput();  // unfinished: stops the worker; an unfinished video is removed
+  FrameOutput(const FrameOutput&) = delete;
+  FrameOutput& operator=(const FrameOutput&) = delete;
+
+  // Queues a frame (its index names the PNG). Rethrows the worker's error, if any.
+  void push(std::shared_ptr<const ImageRgba8> frame, int index);
+  // Drains the queue, closes the video, rethrows the worker's error.
+  void finish();
+  FrameOutputStats stats() const;
+
+ private:
+  struct Job {
+    std::shared_ptr<const ImageRgba8> image;
+    int index = 0;
+  };
+  void run();
+  void encode(const Job& job);
+  void rethrow();
+
+  FrameOutputOptions options_;
+  std::optional<VideoWriter> video_;
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<Job> queue_;
+  int inFlight_ = 0;  // frames taken by the worker and not yet encoded
+  bool closing_ = false;
+  std::exception_ptr error_;
+  FrameOutputStats stats_;
+  std::thread worker_;
+};
+
+}  // namespace throng

@@ -1,0 +1,170 @@
+// Frames out: PNG files and H.264/MP4 video written off the frame loop, checked with ffprobe.
+#include <doctest/doctest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "core/error.h"
+#include "core/frame_output.h"
+#include "core/video_writer.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using namespace throng;
+
+namespace {
+
+std::shared_ptr<ImageRgba8> gradientFrame(int w, int h, int t) {
+  auto image = std::make_shared<ImageRgba8>(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      image->at(x, y) = {uint8_t((x * 4 + t * 8) & 255), uint8_t(y * 4), uint8_t(t * 16 & 255),
+                         255};
+  return image;
+}
+
+std::string run(const std::string& command) {
+  std::string out;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  char buffer[512];
+  while (std::fgets(buffer, sizeof(buffer), pipe)) out += buffer;
+  ::pclose(pipe);
+  return out;
+}
+
+// "codec_name,width,height,nb_read_frames" of the first video stream.
+std::string probe(const fs::path& video) {
+  std::string out =
+      run("ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+          "stream=codec_name,width,height,nb_read_frames -of csv=p=0 '" +
+          video.string() + "' 2>&1");
+  while (!out.empty() && out.back() == '\n') out.pop_back();
+  return out;
+}
+
+bool haveFfmpeg() {
+  return std::system("ffmpeg -version >/dev/null 2>&1") == 0;
+}
+
+fs::path freshFolder(const char* name) {
+  fs::path dir = fs::temp_directory_path() / concat("throng_", name, "_", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("video: impossible options are errors naming the file or option") {
+  fs::path dir = freshFolder("video_opts");
+  CHECK_THROWS_WITH_AS(checkVideoOptions(dir / "a.avi", {64, 48, 30.0}), doctest::Contains(".mp4"),
+                       Error);
+  CHECK_THROWS_WITH_AS(checkVideoOptions(dir / "a.mp4", {1, 48, 30.0}),
+                       doctest::Contains("outside 2..8192"), Error);
+  CHECK_THROWS_WITH_AS(checkVideoOptions(dir / "a.mp4", {64, 48, 0.0}), doctest::Contains("--fps"),
+                       Error);
+  CHECK_THROWS_WITH_AS(checkVideoOptions(dir / "a.mp4", {64, 48, 30.0, 99}),
+                       doctest::Contains("crf"), Error);
+  fs::create_directories(dir / "d.mp4");
+  CHECK_THROWS_WITH_AS(checkVideoOptions(dir / "d.mp4", {64, 48, 30.0}),
+                       doctest::Contains("is a directory"), Error);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("video: frames become an H.264 MP4 that ffprobe reads, with the right size and count") {
+  if (!haveFfmpeg()) {
+    MESSAGE("skipped: the ffmpeg program is not installed");
+    return;
+  }
+  fs::path dir = freshFolder("video_ok");
+  fs::path video = dir / "out.mp4";
+  {
+    VideoWriter writer(video, {64, 48, 30.0});
+    for (int t = 0; t < 12; ++t) writer.write(*gradientFrame(64, 48, t));
+    CHECK_FALSE(fs::exists(video));  // nothing under the final name before it is complete
+    writer.finish();
+  }
+  CHECK(probe(video) == "h264,64,48,12");
+  int others = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) others += entry.path() != video;
+  CHECK(others == 0);  // no temporary or log file left behind
+  CHECK_THROWS_WITH_AS(VideoWriter(video, {64, 48, 30.0}).write(*gradientFrame(32, 48, 0)),
+                       doctest::Contains("frame of 32x48"), Error);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("video: an odd frame size is padded to even sides") {
+  if (!haveFfmpeg()) {
+    MESSAGE("skipped: the ffmpeg program is not installed");
+    return;
+  }
+  fs::path dir = freshFolder("video_odd");
+  VideoWriter writer(dir / "odd.mp4", {33, 21, 24.0});
+  for (int t = 0; t < 3; ++t) writer.write(*gradientFrame(33, 21, t));
+  writer.finish();
+  CHECK(probe(dir / "odd.mp4") == "h264,34,22,3");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("video: an abandoned writer leaves no file under the final name or temporaries") {
+  if (!haveFfmpeg()) {
+    MESSAGE("skipped: the ffmpeg program is not installed");
+    return;
+  }
+  fs::path dir = freshFolder("video_abandon");
+  {
+    VideoWriter writer(dir / "gone.mp4", {64, 48, 30.0});
+    writer.write(*gradientFrame(64, 48, 0));
+  }
+  CHECK(fs::is_empty(dir));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("frame output: PNGs and video from a worker, bounded queue, stats") {
+  if (!haveFfmpeg()) {
+    MESSAGE("skipped: the ffmpeg program is not installed");
+    return;
+  }
+  fs::path dir = freshFolder("frame_output");
+  FrameOutputOptions options;
+  options.pngFolder = dir;
+  options.video = dir / "clip.mp4";
+  options.width = 64;
+  options.height = 48;
+  options.queueDepth = 2;
+  FrameOutput output(options);
+  for (int t = 0; t < 9; ++t) output.push(gradientFrame(64, 48, t), t);
+  output.finish();
+  FrameOutputStats stats = output.stats();
+  CHECK(stats.frames == 9);
+  CHECK(stats.encodeMs > 0.0);
+  CHECK(fs::exists(dir / "frame_0000.png"));
+  CHECK(fs::exists(dir / "frame_0008.png"));
+  CHECK(readPng(dir / "frame_0004.png").at(10, 10) == gradientFrame(64, 48, 4)->at(10, 10));
+  CHECK(probe(dir / "clip.mp4") == "h264,64,48,9");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("frame output: a failing encoder's error reaches the frame loop") {
+  fs::path dir = freshFolder("frame_output_fail");
+  FrameOutputOptions options;
+  options.pngFolder = dir / "missing" / "folder";  // not created: the PNG write fails
+  options.width = 8;
+  options.height = 8;
+  FrameOutput output(options);
+  bool threw = false;
+  try {
+    for (int t = 0; t < 50; ++t) output.push(gradientFrame(8, 8, t), t);
+    output.finish();
+  } catch (const Error& e) {
+    threw = true;
+    CHECK(std::string(e.what()).find("frame_0000.png") != std::string::npos);
+  }
+  CHECK(threw);
+  fs::remove_all(dir);
+}
