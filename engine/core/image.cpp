@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -22,9 +23,24 @@
 
 namespace throng {
 
+void checkImageSize(const std::filesystem::path& path, long long width, long long height) {
+  if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide ||
+      width * height > kMaxImagePixels)
+    fail(path.string(), ": image of ", width, "x", height, " pixels; expected at most ",
+         kMaxImageSide, " pixels per side and ", kMaxImagePixels, " pixels (",
+         kMaxImagePixels / (1024 * 1024), " Mpixel, 8192x8192) in all");
+}
+
 ImageRgba8 readPng(const std::filesystem::path& path) {
   std::string bytes = readTextFile(path);
+  if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+    fail(path.string(), ": ", bytes.size(), " bytes; PNG files of up to 2 GiB are read");
   int w = 0, h = 0, channels = 0;
+  // The header's size is checked before decoding: a small file can claim a huge image.
+  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                            static_cast<int>(bytes.size()), &w, &h, &channels)) {
+    checkImageSize(path, w, h);
+  }
   stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                         static_cast<int>(bytes.size()), &w, &h, &channels, 4);
   if (!data) fail(path.string(), ": not a readable PNG (", stbi_failure_reason(), ")");
@@ -53,7 +69,8 @@ void appendBytes(void* context, void* data, int size) {
 }  // namespace
 
 void writePngAtomic(const std::filesystem::path& path, const ImageRgba8& image) {
-  if (image.width <= 0 || image.height <= 0) fail(path.string(), ": refusing to write an empty image");
+  if (image.width <= 0 || image.height <= 0)
+    fail(path.string(), ": refusing to write an empty image");
   std::vector<uint8_t> encoded;
   if (!stbi_write_png_to_func(appendBytes, &encoded, image.width, image.height, 4,
                               image.pixels.data(), image.width * 4)) {

@@ -22,16 +22,25 @@ struct ImageRgba8 {
   const Rgba8& at(int x, int y) const { return pixels[size_t(y) * width + x]; }
 };
 
-// Throws Error naming the file when it is missing or not a PNG.
+// The largest image readPng decodes: 16384 pixels per side and 64 Mpixel (8192 x 8192) in
+// all, 256 MiB as RGBA. The size in the header is checked before anything is decoded, so a
+// small file claiming a huge image (an all-black 12000 x 12000 PNG is 420 KB) is refused
+// instead of allocating gigabytes.
+inline constexpr long long kMaxImageSide = 16384;
+inline constexpr long long kMaxImagePixels = 64ll * 1024 * 1024;
+// Throws Error naming the file when width x height exceeds the limits above.
+void checkImageSize(const std::filesystem::path& path, long long width, long long height);
+
+// Throws Error naming the file when it is missing, not a PNG or larger than the limits above.
 ImageRgba8 readPng(const std::filesystem::path& path);
 // Written to a temporary name and renamed when complete.
 void writePngAtomic(const std::filesystem::path& path, const ImageRgba8& image);
 
 struct ImageDiff {
-  double meanAbsError = 0;      // over RGB channels, 0..255
-  double fractionDifferent = 0; // pixels whose max channel error exceeds the threshold
+  double meanAbsError = 0;       // over RGB channels, 0..255
+  double fractionDifferent = 0;  // pixels whose max channel error exceeds the threshold
   int maxError = 0;
-  ImageRgba8 diffImage;         // per-pixel error amplified for people to look at
+  ImageRgba8 diffImage;  // per-pixel error amplified for people to look at
 };
 ImageDiff compareImages(const ImageRgba8& actual, const ImageRgba8& expected, int pixelThreshold);
 
