@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Regenerates the seed corpus fuzz/corpus/<harness>/ with the project's own tools (the release
+# build's build/bin/throng: assets generate, storyboard example/decode, cloth explore/compress)
+# plus a few short hand-written inputs where no tool writes the format (legends, input
+# scripts) and small synthetic trajectories in both text formats. Every file stays a few KB.
+#   fuzz/make_corpus.sh [THRONG_BINARY]
+set -euo pipefail
+cd "$(dirname "$0")"
+throng=$(realpath "${1:-../build/bin/throng}")
+[ -x "$throng" ] || { echo "error: $throng not found: build it first (scripts/build.sh)" >&2; exit 2; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+reset() { rm -rf "corpus/$1"; mkdir -p "corpus/$1"; }
+
+# BVH: the generated default clips cut to their first frames (the hierarchy is most of it).
+bvh_slice() {  # FILE FRAMES OUT
+  awk -v keep="$2" '
+    /^MOTION/ { motion = 1; print; next }
+    motion && /^Frames:/ { print "Frames: " keep; next }
+    motion && /^Frame Time:/ { print; data = 1; next }
+    data { if (++row > keep) exit }
+    { print }' "$1" > "$3"
+}
+reset bvh
+"$throng" assets generate --out "$work/assets" > /dev/null
+bvh_slice "$work/assets/walk_slow.bvh" 3 corpus/bvh/walk_slow_3.bvh
+bvh_slice "$work/assets/run_fast.bvh" 2 corpus/bvh/run_fast_2.bvh
+
+# Storyboards: small example PNGs, and the agents JSON `storyboard decode --json` prints.
+reset storyboard_png
+reset storyboard_json
+for spec in "1 16x16 2" "2 24x20 3" "3 12x30 1"; do
+  read -r seed size groups <<< "$spec"
+  png=corpus/storyboard_png/example_${seed}.png
+  "$throng" storyboard example --seed "$seed" --size "$size" --groups "$groups" --out "$png" > /dev/null
+  "$throng" storyboard decode "$png" --json > corpus/storyboard_json/example_${seed}.json
+done
+
+# Legends (no tool writes one): the default legend as JSON and variants of each key.
+reset legend
+cat > corpus/legend/default.json <<'JSON'
+{"tolerance": 40,
+ "states": {"stroll": [255,128,0], "hurried": [255,0,0]},
+ "actions": {"walk": [0,200,0], "run": [255,255,0], "talk": [255,105,180], "jump": [255,0,0]}}
+JSON
+cat > corpus/legend/groups_hex.json <<'JSON'
+{"tolerance": 20, "states": {"stroll": "#ff8000", "hurried": "#ff0000"},
+ "groups": [{"name": "tourists", "colour": [0,0,255]}, {"name": "commuters", "colour": "#008000"},
+            {"colour": [128,0,128]}]}
+JSON
+echo '{"actions": {"jump": "#102030"}, "groups": []}' > corpus/legend/actions_only.json
+
+# Trajectories (the real ETH/UCY files are third-party data and stay out of the repository):
+# a few people walking in both formats. The first byte picks the harness's format variant
+# (byte % 5: 0 auto, 1 auto as biwi_eth, 2 auto as obsmat.txt, 3 frame-ped-x-y, 4 obsmat),
+# so '0' (48) reads frame-ped-x-y, '3' (51) biwi_eth and '4' (52) obsmat.txt.
+reset trajectories
+awk 'BEGIN {
+  printf "0"
+  for (f = 0; f <= 200; f += 10)
+    for (p = 1; p <= 3; ++p)
+      if (f >= p * 20) printf "%d\t%d\t%.2f\t%.2f\n", f, p, 0.05 * f + p, 0.5 * p - 0.01 * f
+}' > corpus/trajectories/frame_ped_xy.txt
+awk 'BEGIN {
+  printf "4"
+  for (f = 0; f <= 120; f += 6)
+    for (p = 1; p <= 2; ++p)
+      printf "%.7e %.7e %.7e %.7e %.7e %.7e %.7e %.7e\n", f, p, 0.03 * f * p, 0, 1 - 0.02 * f, 1.2, 0, -0.5
+}' > corpus/trajectories/obsmat.txt
+awk 'BEGIN {
+  printf "3"
+  for (f = 780; f <= 900; f += 6) printf "%d %d %.3f %.3f\n", f, 7, f / 100.0, 2.5
+}' > corpus/trajectories/biwi_eth.txt
+
+# Viewer input scripts: every command of docs/viewer.md.
+reset input_script
+printf '# orbit, zoom, fly\ndrag 900 400 1000 400 10\nscroll 2\nkey W 5\nkey SHIFT\nwait 3\n' \
+  > corpus/input_script/orbit.txt
+printf 'resize 640 480\nrespawn 500 circle\nrespawn 20\ndrag 10 10 300 200 4 right\nkey F12\nclose\n' \
+  > corpus/input_script/respawn_resize.txt
+printf 'key 1\nkey 2 2\nkey SPACE\nkey TAB\nscroll -1.5\ndrag 0 0 1 1 1 middle\nkey ESCAPE\n' \
+  > corpus/input_script/keys.txt
+
+# Cloth files: a tiny explored graph of the toy garment and its compressed database.
+reset tsg
+reset tsc
+"$throng" cloth explore --garment toy --budget-expansions 2 --max-states 4 --quiet --out corpus/tsg/toy.tsg > /dev/null
+"$throng" cloth explore --garment toy --budget-expansions 1 --max-states 2 --seed 3 --quiet --out corpus/tsg/toy_small.tsg > /dev/null
+"$throng" cloth compress corpus/tsg/toy.tsg -o corpus/tsc/toy.tsc --min-ratio 0 --quiet > /dev/null
+"$throng" cloth compress corpus/tsg/toy_small.tsg -o corpus/tsc/toy_small_2bases.tsc --bases 2 --min-ratio 0 --quiet > /dev/null
+
+du -sh corpus/* | sed 's/^/corpus: /'

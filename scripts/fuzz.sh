@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (fuzz/, `cmake --preset fuzz`: Debian's clang with ASan and
+# UBSan) and runs each for SECONDS (default 60) from its committed seed corpus.
+#   scripts/fuzz.sh [SECONDS] [HARNESS...]     e.g. scripts/fuzz.sh 600, scripts/fuzz.sh 30 bvh tsc
+# A crash, sanitizer report, leak, input slower than 10 s, allocation over 1 GiB or resident
+# memory over 2 GiB is a finding: the input is kept under fuzz/findings/<harness>/, its path
+# and the report's first lines are printed, and the script exits 1 after running the rest.
+# New inputs the fuzzer finds go to build-fuzz/corpus/<harness>/ (not committed).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+usage() {
+  echo "usage: scripts/fuzz.sh [SECONDS] [HARNESS...]" >&2
+  exit 2
+}
+seconds=${1:-60}
+[[ "$seconds" =~ ^[1-9][0-9]*$ ]] || usage
+shift $(( $# > 0 ? 1 : 0 ))
+
+all=()
+for source in fuzz/*_fuzzer.cpp; do
+  name=$(basename "$source" _fuzzer.cpp)
+  all+=("$name")
+done
+harnesses=("$@")
+[ ${#harnesses[@]} -gt 0 ] || harnesses=("${all[@]}")
+for name in "${harnesses[@]}"; do
+  [ -f "fuzz/${name}_fuzzer.cpp" ] || { echo "error: no harness '$name' (have: ${all[*]})" >&2; exit 2; }
+done
+
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake --preset fuzz >/dev/null
+targets=()
+for name in "${harnesses[@]}"; do targets+=("fuzz_$name"); done
+cmake --build build-fuzz -j"$jobs" --target "${targets[@]}"
+
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+mkdir -p build-fuzz/logs
+failed=()
+for name in "${harnesses[@]}"; do
+  corpus=build-fuzz/corpus/$name
+  findings=fuzz/findings/$name
+  log=build-fuzz/logs/$name.log
+  mkdir -p "$corpus" "$findings" "fuzz/corpus/$name"
+  echo "== fuzz_$name for ${seconds} s"
+  status=0
+  build-fuzz/bin/fuzz_"$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -malloc_limit_mb=1024 -print_final_stats=1 -artifact_prefix="$findings/" \
+    "$corpus" "fuzz/corpus/$name" >"$log" 2>&1 || status=$?
+  grep -E '^stat::number_of_executed_units|^#[0-9]+ *DONE' "$log" | tail -2 | sed 's/^/   /' || true
+  if [ "$status" -ne 0 ]; then
+    failed+=("$name")
+    echo "FINDING in fuzz_$name (exit $status), log $log"
+    grep -E 'Test unit written to|throng fuzz finding' "$log" | sed 's/^/   /' || true
+    grep -m1 -A14 -E '^==[0-9]+==ERROR|runtime error|throng fuzz finding|ERROR: libFuzzer' "$log" | sed 's/^/   /' || true
+  fi
+done
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "fuzz: findings in ${failed[*]}"
+  exit 1
+fi
+echo "fuzz: no findings in ${harnesses[*]} (${seconds} s each)"
