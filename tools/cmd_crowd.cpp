@@ -30,6 +30,7 @@ struct RunOptions {
   float seconds = 20.0f;
   float dt = 0.05f;
   float radius = 0.3f;
+  float bodyRadius = crowd::kBodyRadius;
   float stepTime = 0.0f;  // seconds per annotation step; 0: by dataset
   uint64_t seed = 1;
   bool cpu = false, json = false;
@@ -38,7 +39,11 @@ struct RunOptions {
   void add(CLI::App* cmd, const char* policyHelp) {
     cmd->add_option("--policy", policies, policyHelp);
     cmd->add_option("--dt", dt, "Simulation step in seconds, 1/n of a second (default 0.05)");
-    cmd->add_option("--radius", radius, "Safe radius of each agent in metres (default 0.3)");
+    cmd->add_option("--radius", radius,
+                    "Safe radius of each agent in metres, kept by avoidance; overlaps of it are "
+                    "reported as intrusions (default 0.3)");
+    cmd->add_option("--body-radius", bodyRadius,
+                    "Body radius in metres; overlaps of it are the collisions (default 0.2)");
     cmd->add_option(
         "--step-time", stepTime,
         "Seconds per annotation step of the trajectories (default: 0.667 for biwi_eth, else 0.4)");
@@ -64,13 +69,22 @@ struct RunOptions {
     return out;
   }
 
+  void checkRadii() const {
+    if (!(radius > 0.0f && radius <= 10.0f))
+      fail("--radius ", radius, ": expected 0 < metres <= 10");
+    if (!(bodyRadius > 0.0f && bodyRadius <= 10.0f))
+      fail("--body-radius ", bodyRadius, ": expected 0 < metres <= 10");
+  }
+
   crowd::SimulationOptions simulation(crowd::SteerPolicy policy) const {
+    checkRadii();
     if (!(seconds >= 1.0f && seconds <= 100000.0f))
       fail("--seconds ", seconds, ": expected 1..100000");
     crowd::SimulationOptions o;
     o.avoidance.policy = policy;
     o.avoidance.radius = radius;
     o.avoidance.seed = uint32_t(seed);
+    o.bodyRadius = bodyRadius;
     o.dt = dt;
     o.seconds = seconds;
     return o;
@@ -133,7 +147,7 @@ void runSimulate(const SimulateArgs& a) {
   crowd::SimulationSetup setup;
   setup.crowd = placed.crowd;
   const std::vector<uint32_t> assigned =
-      crowd::assignSources(sources, placed.speedRange, a.run.seed);
+      crowd::assignSources(sources, placed.speedRange, a.run.seed, a.trajectories);
   std::vector<float> maxSpeed;
   for (const crowd::SpeedRange& r : placed.speedRange)
     maxSpeed.push_back(std::max(1.0f, 1.25f * r.max));
@@ -193,10 +207,12 @@ void runMetrics(MetricsArgs a) {
   for (const std::string& file : a.trajectories) {
     const crowd::Trajectories tracks = crowd::loadTrajectories(file, a.run.trajectoryOptions());
     const std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(tracks);
-    crowd::SimulationSetup setup = crowd::replaySetup(sources);
+    crowd::SimulationSetup setup = crowd::replaySetup(sources, file);
     uint32_t span = 0;
     for (uint32_t last : setup.paths.lastSecond) span = std::max(span, last);
-    const crowd::CrowdMetrics real = crowd::trajectoryMetrics(tracks, a.run.radius);
+    a.run.checkRadii();
+    const crowd::CrowdMetrics real =
+        crowd::trajectoryMetrics(tracks, a.run.radius, a.run.bodyRadius);
     nlohmann::json entry;
     entry["file"] = file;
     entry["people"] = tracks.tracks.size();

@@ -113,7 +113,7 @@ render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
   const size_t n = placed.crowd.size();
 
   const std::vector<uint32_t> assigned =
-      crowd::assignSources(sources, placed.speedRange, o.scenario.seed);
+      crowd::assignSources(sources, placed.speedRange, o.scenario.seed, s.trajectories);
   render::SteeredCrowdSetup setup;
   setup.paths = crowd::followSources(placed.crowd, sources, assigned, std::vector<float>(n, 1.0f));
   std::vector<uint32_t> pairOf(n, 0);

@@ -75,28 +75,39 @@ void CollisionCounter::addStep(std::span<const glm::vec4> placement,
   for (uint8_t o : overlapping) overlapAgentSteps_ += o;
 }
 
-CrowdMetrics trajectoryMetrics(const Trajectories& trajectories, float radius) {
+void setContactMetrics(CrowdMetrics& m, const CollisionCounter& body, float bodyRadius,
+                       const CollisionCounter& safe, float safeRadius) {
+  m.bodyRadius = bodyRadius;
+  m.safeRadius = safeRadius;
+  m.agentSeconds = body.agentSeconds();
+  m.collisions = body.collisions();
+  m.collisionsPerAgentSecond = body.perAgentSecond();
+  m.overlapShare = body.overlapShare();
+  m.safeIntrusions = safe.collisions();
+  m.safeIntrusionsPerAgentSecond = safe.perAgentSecond();
+  m.peakDensity = std::max(body.peakDensity(), safe.peakDensity());
+}
+
+CrowdMetrics trajectoryMetrics(const Trajectories& trajectories, float safeRadius,
+                               float bodyRadius) {
   // Every annotated frame as one step of the real crowd.
-  std::map<long, std::vector<glm::vec2>> frames;
+  std::map<long long, std::vector<glm::vec2>> frames;
   const double spf = trajectories.secondsPerFrame;
   for (const Track& track : trajectories.tracks)
     for (const TrackPoint& p : track.points)
-      frames[std::lround(double(p.time) / spf)].push_back(p.position);
-  CollisionCounter counter(radius);
+      frames[std::llround(p.time / spf)].push_back(p.position);
+  CollisionCounter body(bodyRadius), safe(safeRadius);
   for (const auto& [frame, positions] : frames) {
     std::vector<glm::vec4> placement;
     for (glm::vec2 p : positions) placement.push_back(glm::vec4(p.x, 0.0f, p.y, 0.0f));
     std::vector<uint8_t> active(placement.size(), 1);
-    counter.addStep(placement, active, trajectories.secondsPerStep);
+    body.addStep(placement, active, float(trajectories.secondsPerStep));
+    safe.addStep(placement, active, float(trajectories.secondsPerStep));
   }
   CrowdMetrics m;
   m.agents = trajectories.tracks.size();
   m.seconds = frames.empty() ? 0.0 : double(frames.rbegin()->first - frames.begin()->first) * spf;
-  m.agentSeconds = counter.agentSeconds();
-  m.collisions = counter.collisions();
-  m.collisionsPerAgentSecond = counter.perAgentSecond();
-  m.overlapShare = counter.overlapShare();
-  m.peakDensity = counter.peakDensity();
+  setContactMetrics(m, body, bodyRadius, safe, safeRadius);
   std::vector<float> speeds = pathSpeeds(resamplePathVectors(trajectories));
   m.speedSamples = speeds.size();
   double sum = 0.0;
@@ -107,17 +118,23 @@ CrowdMetrics trajectoryMetrics(const Trajectories& trajectories, float radius) {
 
 std::string formatMetrics(const std::string& label, const CrowdMetrics& m) {
   return concat(label, ": ", m.agents, " agents, ", m.seconds, " s, ", m.agentSeconds, " agent-s\n",
-                "  collisions per agent-second ", m.collisionsPerAgentSecond, " (", m.collisions,
-                " agent events), overlapping ", 100.0 * m.overlapShare, "% of agent-steps\n",
-                "  speed: mean ", m.meanSpeed, " m/s (sources ", m.sourceMeanSpeed,
-                " m/s), KS distance ", m.speedKs, " over ", m.speedSamples, " samples\n",
-                "  path error: mean ", m.meanPathError, " m, p95 ", m.p95PathError, " m, max ",
-                m.maxPathError, " m\n", "  peak density ", m.peakDensity, " agents/m^2\n");
+                "  collisions per agent-second ", m.collisionsPerAgentSecond, " at body radius ",
+                m.bodyRadius, " m (", m.collisions, " agent events), overlapping ",
+                100.0 * m.overlapShare, "% of agent-steps\n", "  safe-radius (", m.safeRadius,
+                " m) intrusions per agent-second ", m.safeIntrusionsPerAgentSecond, " (",
+                m.safeIntrusions, " agent events)\n", "  speed: mean ", m.meanSpeed,
+                " m/s (sources ", m.sourceMeanSpeed, " m/s), KS distance ", m.speedKs, " over ",
+                m.speedSamples, " samples\n", "  path error: mean ", m.meanPathError, " m, p95 ",
+                m.p95PathError, " m, max ", m.maxPathError, " m\n", "  peak density ",
+                m.peakDensity, " agents/m^2\n");
 }
 
 std::string metricsJson(const CrowdMetrics& m) {
   return concat("{\"agents\":", m.agents, ",\"seconds\":", m.seconds,
-                ",\"agent_seconds\":", m.agentSeconds, ",\"collisions\":", m.collisions,
+                ",\"agent_seconds\":", m.agentSeconds, ",\"body_radius\":", m.bodyRadius,
+                ",\"safe_radius\":", m.safeRadius, ",\"collisions\":", m.collisions,
+                ",\"safe_intrusions\":", m.safeIntrusions,
+                ",\"safe_intrusions_per_agent_second\":", m.safeIntrusionsPerAgentSecond,
                 ",\"collisions_per_agent_second\":", m.collisionsPerAgentSecond,
                 ",\"overlap_share\":", m.overlapShare, ",\"speed_ks\":", m.speedKs,
                 ",\"mean_speed\":", m.meanSpeed, ",\"source_mean_speed\":", m.sourceMeanSpeed,

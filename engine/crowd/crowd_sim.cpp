@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "core/error.h"
@@ -46,6 +47,15 @@ struct GpuRun {
   }
 };
 
+// The first second at or after `s` in which some agent is active (UINT32_MAX: none).
+uint32_t nextArrival(const AgentPaths& paths, uint32_t s) {
+  uint32_t next = std::numeric_limits<uint32_t>::max();
+  for (size_t i = 0; i < paths.size(); ++i)
+    if (paths.lastSecond[i] > s && paths.lastSecond[i] > paths.firstSecond[i])
+      next = std::min(next, std::max(s, paths.firstSecond[i]));
+  return next;
+}
+
 }  // namespace
 
 std::vector<float> expectedSpeeds(const AgentPaths& paths, uint32_t seconds) {
@@ -58,8 +68,10 @@ std::vector<float> expectedSpeeds(const AgentPaths& paths, uint32_t seconds) {
   return speeds;
 }
 
-SimulationSetup replaySetup(std::span<const PathSource> sources) {
-  if (sources.empty()) fail("no tracked person spans two whole seconds: nothing to replay");
+SimulationSetup replaySetup(std::span<const PathSource> sources, std::string_view origin) {
+  if (sources.empty())
+    fail(origin, ": no tracked person spans two whole seconds (expected at least one track of ",
+         "two or more annotations two seconds apart): nothing to replay");
   glm::vec2 centre(0.0f);
   for (const PathSource& s : sources) centre += s.start;
   centre /= float(sources.size());
@@ -97,11 +109,18 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
   std::vector<uint8_t> active(n, 0);
   std::vector<glm::vec2> secondStart(n);
   std::vector<float> speeds, pathErrors;
-  CollisionCounter collisions(options.avoidance.radius);
+  if (!(options.bodyRadius > 0.0f && options.bodyRadius <= 10.0f))
+    fail("body radius ", options.bodyRadius, " m: expected 0 < radius <= 10 m");
+  CollisionCounter collisions(options.bodyRadius), intrusions(options.avoidance.radius);
   std::unique_ptr<GpuRun> gpuRun;
   const auto started = std::chrono::steady_clock::now();
 
   for (uint32_t s = 0; s < seconds; ++s) {
+    // Nobody on the scene and nobody due: skip to the next arrival (a file may have long gaps).
+    if (s > 0 && std::none_of(active.begin(), active.end(), [](uint8_t a) { return a != 0; })) {
+      s = std::min(seconds, nextArrival(paths, s));
+      if (s == seconds) break;
+    }
     // Agents appear at their start heading for their first waypoint, and leave when done.
     bool changed = s == 0;
     for (size_t i = 0; i < n; ++i) {
@@ -170,6 +189,7 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
         advanceCpu(crowd.placement, steer, goals, dt);
       }
       collisions.addStep(crowd.placement, active, dt);
+      intrusions.addStep(crowd.placement, active, dt);
       ++result.steps;
     }
     for (size_t i = 0; i < n; ++i) {
@@ -189,11 +209,7 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
   CrowdMetrics& m = result.metrics;
   m.seconds = seconds;
   m.agents = n;
-  m.agentSeconds = collisions.agentSeconds();
-  m.collisions = collisions.collisions();
-  m.collisionsPerAgentSecond = collisions.perAgentSecond();
-  m.overlapShare = collisions.overlapShare();
-  m.peakDensity = collisions.peakDensity();
+  setContactMetrics(m, collisions, options.bodyRadius, intrusions, options.avoidance.radius);
   const std::vector<float> reference = expectedSpeeds(paths, seconds);
   m.speedKs = ksDistance(speeds, reference);
   m.speedSamples = speeds.size();

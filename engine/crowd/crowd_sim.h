@@ -10,6 +10,7 @@
 // writes heading and wTarget, which the render path hands to the root-motion pass.
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "crowd/avoidance.h"
@@ -21,15 +22,17 @@
 namespace throng::crowd {
 
 struct SimulationSetup {
-  Crowd crowd;       // initial placement and motion (positions of agents not yet active are ignored)
+  Crowd crowd;  // initial placement and motion (positions of agents not yet active are ignored)
   AgentPaths paths;  // one per agent
 };
 
 struct SimulationOptions {
   AvoidanceParams avoidance;
-  float dt = 0.05f;       // must divide one second (1/dt steps per waypoint)
-  float seconds = 20.0f;  // whole seconds simulated (rounded down, at least 1)
-  float slowSpeed = 0.0f; // clip pair root speeds (speed → motion.z); 0, 0: leave motion.z
+  float dt = 0.05f;                // must divide one second (1/dt steps per waypoint)
+  float seconds = 20.0f;           // whole seconds simulated (rounded down, at least 1)
+  float bodyRadius = kBodyRadius;  // collisions are counted at this radius (m); intrusions at
+                                   // the avoidance's safe radius
+  float slowSpeed = 0.0f;  // clip pair root speeds (speed → motion.z); 0, 0: leave motion.z
   float fastSpeed = 0.0f;
 };
 
@@ -50,6 +53,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
 std::vector<float> expectedSpeeds(const AgentPaths& paths, uint32_t seconds);
 
 // A replay of the data: every source person is an agent, appearing at its own place and time.
-SimulationSetup replaySetup(std::span<const PathSource> sources);
+// Throws Error naming `origin` (the trajectory file) when there is no source.
+SimulationSetup replaySetup(std::span<const PathSource> sources,
+                            std::string_view origin = "the trajectories");
 
 }  // namespace throng::crowd

@@ -11,16 +11,19 @@ namespace throng::crowd {
 namespace {
 
 // Data (x, y) seen from above → world (x, z = −y), so a replay is not a mirror image.
-glm::vec2 toWorld(glm::vec2 p) { return {p.x, -p.y}; }
+glm::vec2 toWorld(glm::vec2 p) {
+  return {p.x, -p.y};
+}
 
-glm::vec2 positionAt(const Track& track, float time) {
+glm::vec2 positionAt(const Track& track, double time) {
   const auto& pts = track.points;
-  auto after = std::lower_bound(pts.begin(), pts.end(), time, [](const TrackPoint& p, float t) { return p.time < t; });
+  auto after = std::lower_bound(pts.begin(), pts.end(), time,
+                                [](const TrackPoint& p, double t) { return p.time < t; });
   if (after == pts.begin()) return pts.front().position;
   if (after == pts.end()) return pts.back().position;
   const TrackPoint& a = *(after - 1);
   const TrackPoint& b = *after;
-  float u = (time - a.time) / (b.time - a.time);
+  float u = float((time - a.time) / (b.time - a.time));
   return a.position + (b.position - a.position) * u;
 }
 
@@ -65,16 +68,19 @@ std::vector<PathSource> resamplePathVectors(const Trajectories& trajectories) {
   std::vector<PathSource> sources;
   for (const Track& track : trajectories.tracks) {
     if (track.points.size() < 2) continue;
-    long first = long(std::ceil(double(track.points.front().time) - t0 - eps));
-    long last = long(std::floor(double(track.points.back().time) - t0 + eps));
+    long first = long(std::ceil(track.points.front().time - t0 - eps));
+    long last = long(std::floor(track.points.back().time - t0 + eps));
     if (last - first < 1) continue;
+    if (last > long(std::numeric_limits<int32_t>::max()))
+      fail(trajectories.source, ": person ", track.id, " is annotated ", last,
+           " s after the file's first sample (expected under 2^31 s)");
     PathSource source;
     source.id = track.id;
     source.startSecond = uint32_t(std::max(0L, first));
-    glm::vec2 previous = toWorld(positionAt(track, float(t0 + double(first))));
+    glm::vec2 previous = toWorld(positionAt(track, t0 + double(first)));
     source.start = previous;
     for (long k = first + 1; k <= last; ++k) {
-      glm::vec2 p = toWorld(positionAt(track, float(t0 + double(k))));
+      glm::vec2 p = toWorld(positionAt(track, t0 + double(k)));
       source.vectors.push_back(p - previous);
       previous = p;
     }
@@ -90,13 +96,19 @@ std::vector<float> pathSpeeds(std::span<const PathSource> sources) {
   return speeds;
 }
 
-std::vector<uint32_t> assignSources(std::span<const PathSource> sources, std::span<const SpeedRange> agentRanges,
-                                    uint64_t seed) {
-  if (sources.empty()) fail("no tracked person to take path vectors from (every track spans less than 2 s)");
+std::vector<uint32_t> assignSources(std::span<const PathSource> sources,
+                                    std::span<const SpeedRange> agentRanges, uint64_t seed,
+                                    std::string_view origin) {
+  if (sources.empty())
+    fail(origin,
+         ": no tracked person to take path vectors from (expected a track spanning two whole "
+         "seconds)");
   std::vector<uint32_t> bySpeed(sources.size());
   std::vector<float> speeds(sources.size());
-  for (size_t k = 0; k < sources.size(); ++k) bySpeed[k] = uint32_t(k), speeds[k] = sources[k].meanSpeed();
-  std::stable_sort(bySpeed.begin(), bySpeed.end(), [&](uint32_t a, uint32_t b) { return speeds[a] < speeds[b]; });
+  for (size_t k = 0; k < sources.size(); ++k)
+    bySpeed[k] = uint32_t(k), speeds[k] = sources[k].meanSpeed();
+  std::stable_sort(bySpeed.begin(), bySpeed.end(),
+                   [&](uint32_t a, uint32_t b) { return speeds[a] < speeds[b]; });
   std::vector<float> sorted(sources.size());
   for (size_t k = 0; k < bySpeed.size(); ++k) sorted[k] = speeds[bySpeed[k]];
   Rng rng(seed, 0x9a7b);
@@ -110,7 +122,9 @@ std::vector<uint32_t> assignSources(std::span<const PathSource> sources, std::sp
       chosen[i] = bySpeed[lo + pick % (hi - lo)];
     } else {
       // No source in range: the slowest above it or the fastest below it, whichever is nearer.
-      size_t k = lo < sorted.size() && (lo == 0 || sorted[lo] - r.max < r.min - sorted[lo - 1]) ? lo : lo - 1;
+      size_t k = lo < sorted.size() && (lo == 0 || sorted[lo] - r.max < r.min - sorted[lo - 1])
+                     ? lo
+                     : lo - 1;
       chosen[i] = bySpeed[k];
     }
   }
@@ -119,7 +133,8 @@ std::vector<uint32_t> assignSources(std::span<const PathSource> sources, std::sp
 
 float clipRootSpeed(const anim::MotionTexture& clip) {
   float duration = clip.duration();
-  return duration > 0.0f ? glm::length(glm::vec2(clip.cycleTravel.x, clip.cycleTravel.z)) / duration : 0.0f;
+  return duration > 0.0f ? glm::length(glm::vec2(clip.cycleTravel.x, clip.cycleTravel.z)) / duration
+                         : 0.0f;
 }
 
 float speedWeight(float speed, float slowSpeed, float fastSpeed) {
@@ -134,10 +149,11 @@ glm::vec2 AgentPaths::waypoint(size_t agent, uint32_t j) const {
   return start[agent] + rotate(rotation[agent], offset);
 }
 
-AgentPaths followSources(const Crowd& crowd, std::span<const PathSource> sources, std::span<const uint32_t> source,
-                         std::span<const float> maxSpeed) {
+AgentPaths followSources(const Crowd& crowd, std::span<const PathSource> sources,
+                         std::span<const uint32_t> source, std::span<const float> maxSpeed) {
   if (source.size() != crowd.size() || maxSpeed.size() != crowd.size())
-    fail("followSources: ", crowd.size(), " agents but ", source.size(), " sources and ", maxSpeed.size(), " speeds");
+    fail("followSources: ", crowd.size(), " agents but ", source.size(), " sources and ",
+         maxSpeed.size(), " speeds");
   AgentPaths paths;
   for (const PathSource& s : sources) {
     if (s.vectors.empty()) fail("path source ", s.id, " has no path vector");
@@ -149,10 +165,12 @@ AgentPaths followSources(const Crowd& crowd, std::span<const PathSource> sources
   paths.firstSecond.assign(n, 0);
   paths.lastSecond.assign(n, std::numeric_limits<uint32_t>::max());
   for (size_t i = 0; i < n; ++i) {
-    if (source[i] >= sources.size()) fail("agent ", i, " follows source ", source[i], " of ", sources.size());
+    if (source[i] >= sources.size())
+      fail("agent ", i, " follows source ", source[i], " of ", sources.size());
     const glm::vec4 p = crowd.placement[i];
     paths.start.push_back({p.x, p.z});
-    paths.rotation.push_back(alignRotation(paths.cumulative[source[i]], {std::sin(p.w), std::cos(p.w)}));
+    paths.rotation.push_back(
+        alignRotation(paths.cumulative[source[i]], {std::sin(p.w), std::cos(p.w)}));
   }
   return paths;
 }

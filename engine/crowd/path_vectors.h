@@ -6,6 +6,7 @@
 // the agent goes). When the sequence ends it starts over from where the agent is.
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -38,9 +39,11 @@ struct SpeedRange {
 
 // For each agent, a source whose mean speed lies in the agent's range (its storyboard state:
 // strolling or hurried), chosen at random among them; when none does, the nearest in mean
-// speed. Deterministic per seed. Throws Error when there is no source.
-std::vector<uint32_t> assignSources(std::span<const PathSource> sources, std::span<const SpeedRange> agentRanges,
-                                    uint64_t seed);
+// speed. Deterministic per seed. Throws Error naming `origin` (the trajectory file) when there
+// is no source.
+std::vector<uint32_t> assignSources(std::span<const PathSource> sources,
+                                    std::span<const SpeedRange> agentRanges, uint64_t seed,
+                                    std::string_view origin = "the trajectories");
 
 // The root speed of a clip (cycle travel / cycle duration) and the speed weight w that makes
 // the blended cycle move at `speed`: slow speed → 0, fast speed → 1, clamped to [0, 1].
@@ -49,24 +52,27 @@ float speedWeight(float speed, float slowSpeed, float fastSpeed);
 
 // Every agent's path, as cumulative sums so a waypoint costs O(1).
 struct AgentPaths {
-  std::vector<std::vector<glm::vec2>> cumulative;  // per source: Σ_{k≤j} P_k, j = 0..n (entry 0 is 0)
-  std::vector<uint32_t> source;                    // per agent: index into cumulative
-  std::vector<glm::vec2> start;                    // per agent: world (x, z) at its first second
-  std::vector<glm::vec2> rotation;                 // per agent: (cos, sin) from the source's frame to world
-  std::vector<float> maxSpeed;                     // per agent: speed cap while catching up (m/s)
-  std::vector<uint32_t> firstSecond;               // per agent: simulation second it appears at
-  std::vector<uint32_t> lastSecond;                // per agent: second it leaves at (UINT32_MAX: never)
+  std::vector<std::vector<glm::vec2>>
+      cumulative;                     // per source: Σ_{k≤j} P_k, j = 0..n (entry 0 is 0)
+  std::vector<uint32_t> source;       // per agent: index into cumulative
+  std::vector<glm::vec2> start;       // per agent: world (x, z) at its first second
+  std::vector<glm::vec2> rotation;    // per agent: (cos, sin) from the source's frame to world
+  std::vector<float> maxSpeed;        // per agent: speed cap while catching up (m/s)
+  std::vector<uint32_t> firstSecond;  // per agent: simulation second it appears at
+  std::vector<uint32_t> lastSecond;   // per agent: second it leaves at (UINT32_MAX: never)
 
   size_t size() const { return source.size(); }
-  bool active(size_t agent, uint32_t second) const { return second >= firstSecond[agent] && second < lastSecond[agent]; }
+  bool active(size_t agent, uint32_t second) const {
+    return second >= firstSecond[agent] && second < lastSecond[agent];
+  }
   // Where the agent is due at the end of its `j`-th second (j = 0: its start).
   glm::vec2 waypoint(size_t agent, uint32_t j) const;
 };
 
 // Storyboard agents: each starts where the crowd places it at second 0, follows source
 // `source[i]` turned onto its heading (placement.w) and loops it forever.
-AgentPaths followSources(const Crowd& crowd, std::span<const PathSource> sources, std::span<const uint32_t> source,
-                         std::span<const float> maxSpeed);
+AgentPaths followSources(const Crowd& crowd, std::span<const PathSource> sources,
+                         std::span<const uint32_t> source, std::span<const float> maxSpeed);
 // Replay of the data: agent i is source i at its own place and time, unturned, leaving when
 // its vectors end. `origin` is subtracted from positions (data plane → world x, z).
 AgentPaths replaySources(std::span<const PathSource> sources, glm::vec2 origin, float maxSpeed);

@@ -12,8 +12,12 @@
 namespace throng::crowd {
 namespace {
 
+// Frame numbers up to 1e12: times (frame · seconds per frame, in double) keep sub-millisecond
+// resolution there.
+constexpr double kMaxFrameNumber = 1e12;
+
 struct Sample {
-  long frame;
+  long long frame;
   int ped;
   glm::vec2 position;
   size_t line;
@@ -44,35 +48,41 @@ const char* columnsText(TrajectoryFormat format) {
 
 class LineParser {
  public:
-  LineParser(const std::string& source, TrajectoryFormat format) : source_(source), format_(format) {}
+  LineParser(const std::string& source, TrajectoryFormat format)
+      : source_(source), format_(format) {}
 
   Sample parse(std::string_view text, size_t line) const {
     std::vector<std::string_view> fields = splitFields(text);
     const size_t want = format_ == TrajectoryFormat::EthObsmat ? 8 : 4;
     if (fields.size() != want)
-      fail(source_, ":", line, ": expected ", columnsText(format_), ", got ", fields.size(), " field",
-           fields.size() == 1 ? "" : "s");
+      fail(source_, ":", line, ": expected ", columnsText(format_), ", got ", fields.size(),
+           " field", fields.size() == 1 ? "" : "s");
     double v[8] = {};
     for (size_t k = 0; k < want; ++k)
       if (!parseNumber(fields[k], v[k]))
-        fail(source_, ":", line, ": field ", k + 1, " '", fields[k], "' is not a finite number (expected ",
-             columnsText(format_), ")");
-    Sample s{integer(v[0], "frame number", line), int(integer(v[1], "person id", line)), {}, line};
+        fail(source_, ":", line, ": field ", k + 1, " '", fields[k],
+             "' is not a finite number (expected ", columnsText(format_), ")");
+    Sample s{integer(v[0], "frame number", kMaxFrameNumber, line),
+             int(integer(v[1], "person id", 1e9, line)),
+             {},
+             line};
     if (s.frame < 0) fail(source_, ":", line, ": frame number ", s.frame, " is negative");
     // obsmat: x, z (height, unused), y; the ground plane is (x, y).
-    s.position = format_ == TrajectoryFormat::EthObsmat ? glm::vec2(v[2], v[4]) : glm::vec2(v[2], v[3]);
-    if (!std::isfinite(s.position.x) || !std::isfinite(s.position.y) || std::abs(s.position.x) > 1e6f ||
-        std::abs(s.position.y) > 1e6f)
-      fail(source_, ":", line, ": position (", v[2], ", ", v[format_ == TrajectoryFormat::EthObsmat ? 4 : 3],
-           ") is not within 1e6 metres");
+    s.position =
+        format_ == TrajectoryFormat::EthObsmat ? glm::vec2(v[2], v[4]) : glm::vec2(v[2], v[3]);
+    if (!std::isfinite(s.position.x) || !std::isfinite(s.position.y) ||
+        std::abs(s.position.x) > 1e6f || std::abs(s.position.y) > 1e6f)
+      fail(source_, ":", line, ": position (", v[2], ", ",
+           v[format_ == TrajectoryFormat::EthObsmat ? 4 : 3], ") is not within 1e6 metres");
     return s;
   }
 
  private:
-  long integer(double value, const char* what, size_t line) const {
-    if (value != std::floor(value) || std::abs(value) > 1e9)
-      fail(source_, ":", line, ": ", what, " ", value, " is not an integer (expected ", columnsText(format_), ")");
-    return long(value);
+  long long integer(double value, const char* what, double limit, size_t line) const {
+    if (value != std::floor(value) || std::abs(value) > limit)
+      fail(source_, ":", line, ": ", what, " ", value, " is not an integer within +-", limit,
+           " (expected ", columnsText(format_), ")");
+    return (long long)value;
   }
 
   const std::string& source_;
@@ -101,20 +111,38 @@ TrajectoryFormat detectFormat(const std::string& source, std::string_view firstL
   size_t fields = splitFields(firstLine).size();
   if (fields == 4) return TrajectoryFormat::FramePedXY;
   if (fields == 8) return TrajectoryFormat::EthObsmat;
-  fail(source, ":", line, ": expected 4 numbers 'frame ped_id x y' or 8 (ETH obsmat 'frame ped x z y vx vz vy'), got ",
+  fail(source, ":", line,
+       ": expected 4 numbers 'frame ped_id x y' or 8 (ETH obsmat 'frame ped x z y vx vz vy'), got ",
        fields, " fields");
 }
 
 // The most common difference between consecutive annotated frames of one person.
-int modalFrameStep(const std::map<int, std::vector<Sample>>& byPerson) {
-  std::map<long, size_t> histogram;
+long long modalFrameStep(const std::map<int, std::vector<Sample>>& byPerson) {
+  std::map<long long, size_t> histogram;
   for (const auto& [ped, samples] : byPerson)
-    for (size_t k = 1; k < samples.size(); ++k) ++histogram[samples[k].frame - samples[k - 1].frame];
-  long best = 1;
+    for (size_t k = 1; k < samples.size(); ++k)
+      ++histogram[samples[k].frame - samples[k - 1].frame];
+  long long best = 1;
   size_t bestCount = 0;
   for (auto [step, count] : histogram)
     if (count > bestCount) best = step, bestCount = count;
-  return int(best);
+  return best;
+}
+
+// One person's samples as tracks, a new one after each absence longer than kMaxTrackGapSeconds.
+void splitTrack(int ped, const std::vector<Sample>& samples, Trajectories& out) {
+  Track track;
+  track.id = ped;
+  for (const Sample& s : samples) {
+    const double time = double(s.frame) * out.secondsPerFrame;
+    if (!track.points.empty() && time - track.points.back().time > kMaxTrackGapSeconds) {
+      out.tracks.push_back(std::move(track));
+      track = Track{ped, {}};
+      ++out.gapSplits;
+    }
+    track.points.push_back({time, s.position});
+  }
+  out.tracks.push_back(std::move(track));
 }
 
 }  // namespace
@@ -124,22 +152,26 @@ float defaultSecondsPerStep(const std::string& source) {
   return name.find("biwi_eth") != std::string::npos ? 0.667f : 0.4f;
 }
 
-float Trajectories::startTime() const {
-  float t = std::numeric_limits<float>::infinity();
+double Trajectories::startTime() const {
+  double t = std::numeric_limits<double>::infinity();
   for (const Track& track : tracks)
     if (!track.points.empty()) t = std::min(t, track.points.front().time);
-  return std::isfinite(t) ? t : 0.0f;
+  return std::isfinite(t) ? t : 0.0;
 }
 
-Trajectories parseTrajectories(std::string_view text, const std::string& source, const TrajectoryOptions& options) {
+Trajectories parseTrajectories(std::string_view text, const std::string& source,
+                               const TrajectoryOptions& options) {
   if (!(options.secondsPerStep >= 0.0f) || options.secondsPerStep > 60.0f)
-    fail(source, ": seconds per step ", options.secondsPerStep, ": expected 0 (by dataset) or a positive time up to 60 s");
+    fail(source, ": seconds per step ", options.secondsPerStep,
+         ": expected 0 (by dataset) or a positive time up to 60 s");
   const auto lines = dataLines(text);
-  if (lines.empty()) fail(source, ": no trajectory samples (expected lines of 'frame ped_id x y' or ETH obsmat)");
+  if (lines.empty())
+    fail(source, ": no trajectory samples (expected lines of 'frame ped_id x y' or ETH obsmat)");
   Trajectories out;
   out.source = source;
-  out.format = options.format != TrajectoryFormat::Auto ? options.format
-                                                        : detectFormat(source, lines[0].first, lines[0].second);
+  out.format = options.format != TrajectoryFormat::Auto
+                   ? options.format
+                   : detectFormat(source, lines[0].first, lines[0].second);
   LineParser parser(source, out.format);
   std::map<int, std::vector<Sample>> byPerson;
   for (auto [line, number] : lines) {
@@ -148,22 +180,24 @@ Trajectories parseTrajectories(std::string_view text, const std::string& source,
   }
   out.sampleCount = lines.size();
   for (auto& [ped, samples] : byPerson) {
-    std::stable_sort(samples.begin(), samples.end(), [](const Sample& a, const Sample& b) { return a.frame < b.frame; });
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const Sample& a, const Sample& b) { return a.frame < b.frame; });
     for (size_t k = 1; k < samples.size(); ++k)
       if (samples[k].frame == samples[k - 1].frame)
-        fail(source, ":", std::max(samples[k].line, samples[k - 1].line), ": person ", ped, " appears twice in frame ",
-             samples[k].frame, " (first on line ", std::min(samples[k].line, samples[k - 1].line),
+        fail(source, ":", std::max(samples[k].line, samples[k - 1].line), ": person ", ped,
+             " appears twice in frame ", samples[k].frame, " (first on line ",
+             std::min(samples[k].line, samples[k - 1].line),
              "); expected one position per person per frame");
   }
-  out.frameStep = modalFrameStep(byPerson);
-  out.secondsPerStep = options.secondsPerStep > 0.0f ? options.secondsPerStep : defaultSecondsPerStep(source);
-  out.secondsPerFrame = out.secondsPerStep / float(out.frameStep);
-  for (const auto& [ped, samples] : byPerson) {
-    Track track;
-    track.id = ped;
-    for (const Sample& s : samples) track.points.push_back({float(double(s.frame) * out.secondsPerFrame), s.position});
-    out.tracks.push_back(std::move(track));
-  }
+  const long long step = modalFrameStep(byPerson);
+  if (step > std::numeric_limits<int>::max())
+    fail(source, ": the most common step between a person's annotated frames is ", step,
+         " frames (expected at most ", std::numeric_limits<int>::max(), ")");
+  out.frameStep = int(step);
+  out.secondsPerStep = double(options.secondsPerStep > 0.0f ? options.secondsPerStep
+                                                            : defaultSecondsPerStep(source));
+  out.secondsPerFrame = out.secondsPerStep / double(out.frameStep);
+  for (const auto& [ped, samples] : byPerson) splitTrack(ped, samples, out);
   return out;
 }
 

@@ -6,7 +6,11 @@
 //     one step is 0.4 s, except biwi_eth whose step is 0.667 s.
 //   * ETH's obsmat.txt: "frame ped x z y vx vz vy" in scientific notation (z unused), one
 //     annotation every 0.4 s (the frame step differs per sequence: 6 for seq_eth, 10 for hotel).
-// Time of a sample = frame · secondsPerFrame, secondsPerFrame = step time / modal frame step.
+// Time of a sample = frame · secondsPerFrame, secondsPerFrame = step time / modal frame step,
+// in double: frame numbers up to 1e9 (≈ 4e7 s) keep their 0.04 s steps apart (a float's step
+// there is 4 s). A person's annotations more than kMaxTrackGapSeconds apart are two tracks:
+// nobody is interpolated across a long absence, and a file's time span cannot make the
+// per-second resampling unbounded.
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -24,32 +28,39 @@ struct TrajectoryOptions {
   float secondsPerStep = 0.0f;
 };
 
+inline constexpr double kMaxTrackGapSeconds = 10.0;
+
 struct TrackPoint {
-  float time = 0.0f;      // seconds
+  double time = 0.0;      // seconds
   glm::vec2 position{0};  // metres on the ground plane (data x, data y)
 };
 
 struct Track {
-  int id = 0;
-  std::vector<TrackPoint> points;  // increasing time
-  float duration() const { return points.empty() ? 0.0f : points.back().time - points.front().time; }
+  int id = 0;                      // the person (split tracks of one person share it)
+  std::vector<TrackPoint> points;  // increasing time, consecutive ones ≤ kMaxTrackGapSeconds apart
+  double duration() const {
+    return points.empty() ? 0.0 : points.back().time - points.front().time;
+  }
 };
 
 struct Trajectories {
-  std::string source;           // file name, for messages
+  std::string source;  // file name, for messages
   TrajectoryFormat format = TrajectoryFormat::FramePedXY;
   int frameStep = 0;            // modal difference between consecutive annotated frame numbers
-  float secondsPerStep = 0.0f;  // seconds per annotation step
-  float secondsPerFrame = 0.0f;
-  size_t sampleCount = 0;       // data lines read
-  std::vector<Track> tracks;    // by increasing id
-  float startTime() const;      // earliest sample time
+  double secondsPerStep = 0.0;  // seconds per annotation step
+  double secondsPerFrame = 0.0;
+  size_t sampleCount = 0;     // data lines read
+  size_t gapSplits = 0;       // tracks split at an absence longer than kMaxTrackGapSeconds
+  std::vector<Track> tracks;  // by increasing id, a split person's tracks in time order
+  double startTime() const;   // earliest sample time
 };
 
 // Throws Error "<source>:<line>: ..." naming what was expected for a malformed line, a
 // duplicate (frame, person) pair or a file without samples.
-Trajectories parseTrajectories(std::string_view text, const std::string& source, const TrajectoryOptions& options = {});
-Trajectories loadTrajectories(const std::filesystem::path& path, const TrajectoryOptions& options = {});
+Trajectories parseTrajectories(std::string_view text, const std::string& source,
+                               const TrajectoryOptions& options = {});
+Trajectories loadTrajectories(const std::filesystem::path& path,
+                              const TrajectoryOptions& options = {});
 
 // Step time a dataset's file name implies (0.667 s for biwi_eth, else 0.4 s).
 float defaultSecondsPerStep(const std::string& source);

@@ -55,6 +55,8 @@ TEST_CASE("throng crowd metrics: replays the people with the CPU twin") {
         std::string::npos);
   CHECK(r.output.find("real people: 2 agents") != std::string::npos);
   CHECK(r.output.find("policy ttc: 2 agents, 12 s") != std::string::npos);
+  CHECK(r.output.find("at body radius 0.2 m") != std::string::npos);
+  CHECK(r.output.find("safe-radius (0.3 m) intrusions per agent-second") != std::string::npos);
 }
 
 TEST_CASE("throng crowd: bad input is reported, not crashed on") {
@@ -81,6 +83,11 @@ TEST_CASE("throng crowd: bad input is reported, not crashed on") {
   std::ofstream(dir / "bad.txt") << "0\t1\t0\t0\n10\t1\tx\t0\n";
   expectError("crowd metrics --trajectories " + (dir / "bad.txt").string(),
               (dir / "bad.txt").string() + ":2: field 3 'x' is not a finite number");
+  std::ofstream(dir / "lonely.txt") << "0\t1\t0\t0\n1000000000\t1\t5\t5\n";
+  expectError("crowd metrics --cpu --trajectories " + (dir / "lonely.txt").string(),
+              (dir / "lonely.txt").string() + ": no tracked person spans two whole seconds");
+  expectError("crowd metrics --cpu --body-radius 0 --trajectories " + tracks.string(),
+              "--body-radius 0: expected 0 < metres <= 10");
   expectError("crowd bench --agents 0", "--agents: each count must be 1..1000000, got 0");
   expectError("crowd bench --numbering sideways",
               "--numbering: expected grid or random, got 'sideways'");

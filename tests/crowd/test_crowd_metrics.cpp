@@ -10,7 +10,8 @@ using namespace throng;
 TEST_CASE("metrics: KS distance of known samples") {
   std::vector<float> a = {1, 2, 3, 4};
   CHECK(crowd::ksDistance(a, a) == 0.0);
-  std::vector<float> shuffled = {4, 1, 3, 2, 2, 1, 4, 3};  // the same distribution, twice the samples
+  std::vector<float> shuffled = {4, 1, 3, 2,
+                                 2, 1, 4, 3};  // the same distribution, twice the samples
   CHECK(crowd::ksDistance(a, shuffled) == 0.0);
   CHECK(crowd::ksDistance(a, std::vector<float>{3, 4, 5, 6}) == doctest::Approx(0.5));
   CHECK(crowd::ksDistance(a, std::vector<float>{10, 11}) == 1.0);
@@ -50,9 +51,11 @@ TEST_CASE("metrics: collisions count overlap onsets per agent, over agent-second
   CHECK(other.agentSeconds() == doctest::Approx(0.5));
 }
 
-TEST_CASE("metrics: a replay without avoidance reproduces the real people (path error 0, same speeds)") {
+TEST_CASE(
+    "metrics: a replay without avoidance reproduces the real people (path error 0, same speeds)") {
   if (!test::haveSharedData("trajectories/sgan_format/crowds_zara01.txt")) return;
-  crowd::Trajectories t = crowd::loadTrajectories(test::sharedDataDir() / "trajectories/sgan_format/crowds_zara01.txt");
+  crowd::Trajectories t =
+      crowd::loadTrajectories(test::sharedDataDir() / "trajectories/sgan_format/crowds_zara01.txt");
   std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(t);
   crowd::SimulationSetup setup = crowd::replaySetup(sources);
   crowd::SimulationOptions options;
@@ -61,8 +64,9 @@ TEST_CASE("metrics: a replay without avoidance reproduces the real people (path 
   options.dt = 0.1f;
   crowd::SimulationResult r = crowd::simulateCrowd(nullptr, setup, options);
   const crowd::CrowdMetrics real = crowd::trajectoryMetrics(t, 0.3f);
-  MESSAGE("zara01 real: ", real.collisionsPerAgentSecond, " collisions/agent-s; replay (none): ",
-          r.metrics.collisionsPerAgentSecond, ", KS ", r.metrics.speedKs, ", path error ", r.metrics.maxPathError);
+  MESSAGE("zara01 real: ", real.collisionsPerAgentSecond,
+          " collisions/agent-s; replay (none): ", r.metrics.collisionsPerAgentSecond, ", KS ",
+          r.metrics.speedKs, ", path error ", r.metrics.maxPathError);
   CHECK(r.metrics.maxPathError < 1e-3);
   CHECK(r.metrics.speedKs < 0.02);  // float rounding only
   CHECK(r.metrics.meanSpeed == doctest::Approx(r.metrics.sourceMeanSpeed).epsilon(1e-3));
@@ -70,4 +74,30 @@ TEST_CASE("metrics: a replay without avoidance reproduces the real people (path 
   CHECK(real.agentSeconds > 1000.0);
   CHECK(real.speedSamples > 1000);
   CHECK(real.peakDensity > 0.0);
+}
+
+TEST_CASE("metrics: collisions at the body radius, safe-radius intrusions apart") {
+  // Two people side by side 0.7 m apart, then 0.5 m apart: neither touches a 0.2 m body
+  // (0.4 m), both come inside the 0.3 m safe radius (0.6 m) once.
+  std::string text;
+  for (int k = 0; k <= 20; ++k) {
+    const float gap = k < 10 ? 0.7f : 0.5f;
+    text += std::to_string(10 * k) + " 1 " + std::to_string(0.5f * float(k)) + " 0\n";
+    text += std::to_string(10 * k) + " 2 " + std::to_string(0.5f * float(k)) + " " +
+            std::to_string(gap) + "\n";
+  }
+  const crowd::Trajectories t = crowd::parseTrajectories(text, "side.txt");
+  const crowd::CrowdMetrics m = crowd::trajectoryMetrics(t, 0.3f);
+  CHECK(m.bodyRadius == doctest::Approx(crowd::kBodyRadius));
+  CHECK(m.safeRadius == doctest::Approx(0.3f));
+  CHECK(m.collisions == 0);
+  CHECK(m.collisionsPerAgentSecond == 0.0);
+  CHECK(m.safeIntrusions == 2);
+  CHECK(m.safeIntrusionsPerAgentSecond == doctest::Approx(2.0 / m.agentSeconds));
+  const crowd::CrowdMetrics wide = crowd::trajectoryMetrics(t, 0.3f, 0.26f);
+  CHECK(wide.collisions == 2);  // 0.5 m < 2 × 0.26 m
+  const std::string json = crowd::metricsJson(m);
+  CHECK(json.find("\"safe_intrusions\":2") != std::string::npos);
+  CHECK(crowd::formatMetrics("real", m).find("safe-radius (0.3 m) intrusions") !=
+        std::string::npos);
 }
