@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 // Motion cache, step 4 (one invocation per character of a chunk). A character whose bucket is
-// resident gets its poseSource: the cache entry of its (slow frame, fast frame) segment, from
-// which the renderer composes A = M · P, so synthesis writes nothing per joint for it. The
+// resident gets its poseSource: the row of its cache entry nearest its phase (rows are dense
+// enough for smooth playback, synth::cacheRowCount says why), from which the renderer composes
+// A = M · P, so synthesis writes nothing per joint for it. The
 // others are listed for the full pose pass (dispatched indirectly over just them, since
 // lavapipe would execute both sides of a divergent branch).
 #include "shared_types.h"
@@ -25,9 +26,10 @@ void main() {
   vec4 m = motion[i];
   int slot = bucketSlot[speedBucket(m.y, push.bucketWidth, uint(bucketSlot.length()))];
   if (slot >= 0) {
-    // fs + ff names the (slow frame, fast frame) segment: it grows at every frame boundary.
-    uint segment = frameAt(m.x, push.slowFrames) + frameAt(m.x, push.fastFrames);
-    poseSource[i] = (uint(slot) * push.segmentCount + segment) * push.jointCount;
+    // The nearest row; phase · R rounding up to R is row 0 again. Mirrors synth::cacheRow.
+    uint row = uint(m.x * float(push.rowCount) + 0.5);
+    if (row >= push.rowCount) row = 0u;
+    poseSource[i] = (uint(slot) * push.rowCount + row) * push.jointCount;
     return;
   }
   poseSource[i] = kPoseInJoints;

@@ -2,9 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-// Motion cache, step 3 (an indirect dispatch, one invocation per fresh slot × segment): synthesize
+// Motion cache, step 3 (an indirect dispatch, one invocation per fresh slot × row): synthesize
 // the character-space pose of every entry inserted this frame at its bucket's speed, once for
-// all characters that share it.
+// all characters that share it; row r at phase r / R, sampled continuously like the pose pass.
+// CPU twin: synth::MotionCacheCpu::update.
 #include "shared_types.h"
 #include "motion_common.glsl"
 #include "cache_common.glsl"
@@ -15,7 +16,6 @@ layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
 layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = 7) readonly buffer SlotBucket { int slotBucket[]; };
 layout(std430, binding = 8) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
-layout(std430, binding = 9) readonly buffer SegmentFrames { ivec2 segmentFrames[]; };
 layout(std430, binding = 10) writeonly buffer CacheData { JointMatrix joints[]; };
 void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
   joints[index].row0 = row0;
@@ -28,12 +28,11 @@ layout(push_constant) uniform Push { CachePush push; };
 
 void main() {
   uint id = gl_GlobalInvocationID.x;
-  if (id >= freshSlots[0] * push.segmentCount) return;
-  uint slot = freshSlots[1u + id / push.segmentCount], segment = id % push.segmentCount;
-  ivec2 frames = segmentFrames[segment];
-  if (frames.x < 0) return;
+  if (id >= freshSlots[0] * push.rowCount) return;
+  uint slot = freshSlots[1u + id / push.rowCount], row = id % push.rowCount;
   float w = bucketSpeed(uint(slotBucket[slot]), push.bucketWidth);
-  uint base = (slot * push.segmentCount + segment) * uint(kJointCount);
-  composePose(base, frames.x * 2 * kJointCount, frames.y * 2 * kJointCount, w,
+  float phase = float(row) / float(push.rowCount);  // synth::cacheRowPhase
+  uint base = (slot * push.rowCount + row) * uint(kJointCount);
+  composePose(base, clipSample(phase, push.slowFrames), clipSample(phase, push.fastFrames), w,
               vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0, uvec2(0xFFFFFFFFu));
 }

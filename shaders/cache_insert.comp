@@ -45,7 +45,7 @@ void main() {
   // A slot refilled twice in one frame (more misses than capacity) is listed twice; both fills
   // write the same entry for its final bucket.
   freshSlots[0] = fresh;
-  fillArgs[0] = (fresh * push.segmentCount + 63u) / 64u;
+  fillArgs[0] = (fresh * push.rowCount + 63u) / 64u;
   fillArgs[1] = 1u;
   fillArgs[2] = 1u;
 }

@@ -96,6 +96,21 @@ float retargetSpeed(uint character, uint epoch, uint seed, float lo, float hi) {
   return lo + (hi - lo) * float(h >> 8) * (1.0 / 16777216.0);
 }
 
-uint frameAt(float phase, uint frames) { return min(uint(phase * float(frames)), frames - 1u); }
+// Where a clip is sampled at a phase in [0, 1): between rows `row` and `next` at fraction t (the
+// row after the last is row 0: clips are cycles). Mirrors anim::clipSample.
+struct ClipSample {
+  int row;
+  int next;
+  float t;
+};
+
+ClipSample clipSample(float phase, uint frames) {
+  float x = phase * float(frames);
+  ClipSample s;
+  s.row = int(min(uint(x), frames - 1u));
+  s.next = s.row + 1 == int(frames) ? 0 : s.row + 1;
+  s.t = min(x - float(s.row), 1.0);  // phase just below 1 may round x up to F
+  return s;
+}
 
 #endif

@@ -167,6 +167,13 @@ int parentOf(int j) {
   }
   return -1;
 }
+// An animated offset: each clip's lerped between its two rows, then the two blended by w.
+vec3 animatedOffset(int slowRow, int slowNext, float ts, int fastRow, int fastNext, float tf, int j, float w) {
+  vec3 slow = slowTexel(slowRow + 2 * j + 1).xyz * (1.0 - ts) + slowTexel(slowNext + 2 * j + 1).xyz * ts;
+  vec3 fast = fastTexel(fastRow + 2 * j + 1).xyz * (1.0 - tf) + fastTexel(fastNext + 2 * j + 1).xyz * tf;
+  return slow * (1.0 - w) + fast * w;
+}
+
 vec3 globalPosition[64];
 vec4 globalRotation[64];
 
@@ -180,15 +187,19 @@ void writeRows(uint index, vec4 q, vec3 scale, vec3 t) {
   storeJoint(index, row0, row1, row2);
 }
 
-// Writes the kJointCount draw matrices of one character at joints[base …]: frames fs/ff of the
-// slow/fast clips (their texel rows start at slowRow/fastRow), blended by w, placed by
-// M = T(origin)·R(yaw)·S(scale). With yaw = identity, origin = 0, scale = 1 this is the
+// Writes the kJointCount draw matrices of one character at joints[base …]: each clip sampled
+// between its two rows (slerped rotations, lerped offsets; anim::clipSample), the two clips
+// blended by w, placed by M = T(origin)·R(yaw)·S(scale). With yaw = identity, origin = 0, scale = 1 this is the
 // character-space pose the motion cache stores.
 // Joints whose bit is clear in `activeJoints` (the coverage LOD mask) are neither blended nor written;
 // their children are never activeJoints (the mask keeps parents before children).
-void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 origin, float scale,
+void composePose(uint base, ClipSample slow, ClipSample fast, float w, vec4 yaw, vec3 origin, float scale,
                  uvec2 activeJoints) {
   SlerpWeights weights = makeSlerpWeights(w);
+  SlerpWeights slowWeights = makeSlerpWeights(slow.t), fastWeights = makeSlerpWeights(fast.t);
+  // Row starts in the motion textures (texel (x, f) is element f·2J + x).
+  int slowRow = slow.row * 2 * kJointCount, slowNext = slow.next * 2 * kJointCount;
+  int fastRow = fast.row * 2 * kJointCount, fastNext = fast.next * 2 * kJointCount;
   // The hierarchy is composed directly in world space (root = M · root pose), which saves a
   // quaternion product and a rotation per joint over composing in character space first.
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
@@ -198,11 +209,12 @@ void composePose(uint base, int slowRow, int fastRow, float w, vec4 yaw, vec3 or
     // subgroupAny is a loop over the lanes, and 100k characters with LOD took 6% longer.)
     bool jointNeeded = !kUseMasks || ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
     if (!jointNeeded) continue;
-    vec4 q = slerpFast(slowTexel(slowRow + 2 * j), fastTexel(fastRow + 2 * j), weights);
+    vec4 qSlow = slerpFast(slowTexel(slowRow + 2 * j), slowTexel(slowNext + 2 * j), slowWeights);
+    vec4 qFast = slerpFast(fastTexel(fastRow + 2 * j), fastTexel(fastNext + 2 * j), fastWeights);
+    vec4 q = slerpFast(qSlow, qFast, weights);
     vec3 o = boneFixed(j) ? fixedBoneOffset(j)
-             : offsetAnimated(j)
-                 ? slowTexel(slowRow + 2 * j + 1).xyz * (1.0 - w) + fastTexel(fastRow + 2 * j + 1).xyz * w
-                 : constantOffsets[2 * j].xyz * (1.0 - w) + constantOffsets[2 * j + 1].xyz * w;
+             : offsetAnimated(j) ? animatedOffset(slowRow, slowNext, slow.t, fastRow, fastNext, fast.t, j, w)
+                                 : constantOffsets[2 * j].xyz * (1.0 - w) + constantOffsets[2 * j + 1].xyz * w;
     int p = parentOf(j);
     float radius = jointRadius[j];
     vec3 start;

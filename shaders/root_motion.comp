@@ -3,7 +3,8 @@
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Root motion (DESIGN eq. 10), one invocation per character: advance the phase, move the root by
-// the blended per-frame displacement rotated by the heading and scaled; w changes to wTarget
+// the blended displacement between the two phases (each clip's root lerped between its rows, so
+// the step is continuous in the phase) rotated by the heading and scaled; w changes to wTarget
 // only when the cycle ends. CPU twin: anim::stepCharacter.
 #include "shared_types.h"
 #include "motion_common.glsl"
@@ -17,12 +18,21 @@ layout(std430, binding = 2) buffer Placement { vec4 placement[]; };
 layout(std430, binding = 3) buffer Motion { vec4 motion[]; };
 layout(push_constant) uniform Push { RootMotionPush push; };
 
-// Root position at an unwrapped frame index k ≥ 0 (k ≥ F continues into the next cycle).
-vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, int k) {
+// Root position at row k ≥ 0 counted on from the cycle start (k ≥ F continues into the next
+// cycle, moved on by the cycle's travel).
+vec3 rootRow(bool fast, uint frames, vec3 cycleTravel, int k) {
   int cycles = k / int(frames);
   int frame = k - cycles * int(frames);
   int texel = frame * 2 * kJointCount + 1;
   return (fast ? fastTexel(texel) : slowTexel(texel)).xyz + float(cycles) * cycleTravel;
+}
+
+// Root position at a continuous row u = phase · F ≥ 0: lerp of the rows on either side (row F is
+// row 0 plus the cycle's travel, so the loop seam is smooth too). Mirrors anim's rootAt.
+vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, float u) {
+  int k = int(u);
+  float t = u - float(k);
+  return rootRow(fast, frames, cycleTravel, k) * (1.0 - t) + rootRow(fast, frames, cycleTravel, k + 1) * t;
 }
 
 void main() {
@@ -34,10 +44,10 @@ void main() {
   float duration = push.slowDuration * (1.0 - w) + push.fastDuration * w;
   float phase0 = m.x;
   float phase1 = phase0 + push.dt / duration;
-  vec3 dSlow = rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, int(phase1 * float(push.slowFrames))) -
-               rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, int(phase0 * float(push.slowFrames)));
-  vec3 dFast = rootAt(true, push.fastFrames, push.fastCycleTravel.xyz, int(phase1 * float(push.fastFrames))) -
-               rootAt(true, push.fastFrames, push.fastCycleTravel.xyz, int(phase0 * float(push.fastFrames)));
+  vec3 dSlow = rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, phase1 * float(push.slowFrames)) -
+               rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, phase0 * float(push.slowFrames));
+  vec3 dFast = rootAt(true, push.fastFrames, push.fastCycleTravel.xyz, phase1 * float(push.fastFrames)) -
+               rootAt(true, push.fastFrames, push.fastCycleTravel.xyz, phase0 * float(push.fastFrames));
   vec3 d = dSlow * (1.0 - w) + dFast * w;
   if (push.steering == 1u) place.w = atan(-place.z, place.x);
   float c = cos(place.w), s = sin(place.w);

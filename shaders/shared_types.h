@@ -55,7 +55,7 @@ THRONG_STRUCT(PosePush) {
   uint fromList;          // 1: invocation k poses characterList[listBase + k], k < listCounts[countIndex]
   uint listBase;
   uint countIndex;
-  uint segmentCount;      // cache entries hold one pose per (slow frame, fast frame) segment
+  uint cacheRowCount;     // poses per motion-cache entry (not read by the pose passes)
   float bucketWidth;      // speed-weight bucket width of the cache
   uint flags;             // kPoseUseMasks: skip the joints a character's LOD mask leaves out
   uint pad1;
@@ -78,14 +78,14 @@ THRONG_STRUCT(CacheCounters) {
 // Push constants of the cache passes.
 THRONG_STRUCT(CachePush) {
   uint characterCount;    // classify: characters of this chunk
-  uint segmentCount;
-  uint slotCount;         // capacity (fill pass: slots × segments invocations)
+  uint rowCount;          // poses per entry, at phases r / rowCount (synth::cacheRowCount)
+  uint slotCount;         // capacity (fill pass: slots × rows invocations)
   float bucketWidth;
   uint firstCharacter;    // classify: the chunk
   uint chunk;             // classify: the chunk's uncached count is at listCounts[chunk]
   uint pad2;
   uint jointCount;        // classify: cached pose entries are jointCount matrices apart
-  uint slowFrames;        // classify: frames of the slow and fast clips name the segment
+  uint slowFrames;        // fill: rows of the slow and fast motion textures
   uint fastFrames;
   uint pad0;
   uint pad1;

@@ -2,9 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-// Pose pass, one invocation per character: per joint slerp of the slow and fast motion textures
-// by w (shortest arc), hierarchy composition down the parent array, and the joint draw matrices
-// A = M·O·F (DESIGN eq. 11). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
+// Pose pass, one invocation per character: per joint, each motion texture slerped between the
+// two rows on either side of the phase (continuous sampling, no judder), then slow and fast
+// slerped by w (shortest arc); hierarchy composition down the parent array, and the joint draw
+// matrices A = M·O·F (DESIGN eq. 11). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
 // the motion cache skip all of that in synth_pose_cached.comp.
 #include "shared_types.h"
 #include "motion_common.glsl"
@@ -48,11 +49,8 @@ void main() {
   vec4 place = fromWords(placement[i]);
   vec4 m = fromWords(motion[i]);
   float phase = m.x, w = m.y, scale = m.w;
-  int fs = int(frameAt(phase, push.slowFrames));
-  int ff = int(frameAt(phase, push.fastFrames));
   uint base = local * uint(kJointCount);
-  // Row starts of this frame in the motion textures (texel (x, f) is element f·2J + x).
   uvec2 activeJoints = kUseMasks ? unpackUint2x32(masks[i].x) : uvec2(0xFFFFFFFFu);
-  composePose(base, fs * 2 * kJointCount, ff * 2 * kJointCount, w, yawQuat(place.w), place.xyz,
-              scale, activeJoints);
+  composePose(base, clipSample(phase, push.slowFrames), clipSample(phase, push.fastFrames), w, yawQuat(place.w),
+              place.xyz, scale, activeJoints);
 }

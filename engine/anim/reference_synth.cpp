@@ -9,28 +9,76 @@
 namespace throng::anim {
 namespace {
 
-// Frame index of a phase in [0,1): the pose shown is the motion texture's row at that frame.
-int frameAt(float phase, int frames) { return std::min(static_cast<int>(phase * float(frames)), frames - 1); }
+glm::vec3 mixVec(glm::vec3 a, glm::vec3 b, float w) {
+  return a * (1.0f - w) + b * w;
+}
 
-// Root position at an unwrapped frame index k ≥ 0 (k ≥ F continues into the next cycle).
-glm::vec3 rootAt(const MotionTexture& tex, int k) {
+// Root position at row k ≥ 0 counted on from the cycle start (k ≥ F continues into the next
+// cycle, moved on by the cycle's travel).
+glm::vec3 rootRow(const MotionTexture& tex, int k) {
   int cycles = k / tex.frameCount;
   int frame = k - cycles * tex.frameCount;
   return tex.offset(frame, 0) + float(cycles) * tex.cycleTravel;
 }
 
-glm::vec3 mixVec(glm::vec3 a, glm::vec3 b, float w) { return a * (1.0f - w) + b * w; }
+// Root position at a continuous row u = phase · F ≥ 0: lerp of the rows on either side, so the
+// displacement between two phases has no step at row boundaries (and none at the loop seam,
+// where row F is row 0 plus the cycle's travel).
+glm::vec3 rootAt(const MotionTexture& tex, float u) {
+  int k = static_cast<int>(u);
+  return mixVec(rootRow(tex, k), rootRow(tex, k + 1), u - float(k));
+}
+
+// Both clips sampled at one phase, with the slerp weights of their row fractions and of w:
+// what every joint of a character shares.
+struct PhaseSampling {
+  ClipSample slow, fast;
+  SlerpWeights slowWeights, fastWeights, speedWeights;
+  float w;
+};
+
+PhaseSampling samplePhase(const MotionPair& pair, float phase, float w) {
+  ClipSample slow = clipSample(phase, pair.slow.frameCount),
+             fast = clipSample(phase, pair.fast.frameCount);
+  return {slow, fast, makeSlerpWeights(slow.t), makeSlerpWeights(fast.t), makeSlerpWeights(w), w};
+}
+
+// Joint j's local rotation and offset: each clip interpolated between its two rows, then slow
+// and fast blended by w (the GPU pass does the same, operation for operation).
+void blendJoint(const MotionPair& pair, const PhaseSampling& p, int j, glm::vec4& q, glm::vec3& o) {
+  const MotionTexture &slow = pair.slow, &fast = pair.fast;
+  glm::vec4 qSlow =
+      slerpFast(slow.rotation(p.slow.row, j), slow.rotation(p.slow.next, j), p.slowWeights);
+  glm::vec4 qFast =
+      slerpFast(fast.rotation(p.fast.row, j), fast.rotation(p.fast.next, j), p.fastWeights);
+  q = slerpFast(qSlow, qFast, p.speedWeights);
+  glm::vec3 oSlow = mixVec(slow.offset(p.slow.row, j), slow.offset(p.slow.next, j), p.slow.t);
+  glm::vec3 oFast = mixVec(fast.offset(p.fast.row, j), fast.offset(p.fast.next, j), p.fast.t);
+  o = mixVec(oSlow, oFast, p.w);
+}
 
 void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
   float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
   float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
   float wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-  rows[0] = glm::vec4((1.0f - 2.0f * (yy + zz)) * scale.x, 2.0f * (xy - wz) * scale.y, 2.0f * (xz + wy) * scale.z, t.x);
-  rows[1] = glm::vec4(2.0f * (xy + wz) * scale.x, (1.0f - 2.0f * (xx + zz)) * scale.y, 2.0f * (yz - wx) * scale.z, t.y);
-  rows[2] = glm::vec4(2.0f * (xz - wy) * scale.x, 2.0f * (yz + wx) * scale.y, (1.0f - 2.0f * (xx + yy)) * scale.z, t.z);
+  rows[0] = glm::vec4((1.0f - 2.0f * (yy + zz)) * scale.x, 2.0f * (xy - wz) * scale.y,
+                      2.0f * (xz + wy) * scale.z, t.x);
+  rows[1] = glm::vec4(2.0f * (xy + wz) * scale.x, (1.0f - 2.0f * (xx + zz)) * scale.y,
+                      2.0f * (yz - wx) * scale.z, t.y);
+  rows[2] = glm::vec4(2.0f * (xz - wy) * scale.x, 2.0f * (yz + wx) * scale.y,
+                      (1.0f - 2.0f * (xx + yy)) * scale.z, t.z);
 }
 
 }  // namespace
+
+ClipSample clipSample(float phase, int frames) {
+  float x = phase * float(frames);
+  ClipSample s;
+  s.row = std::min(static_cast<int>(x), frames - 1);
+  s.next = s.row + 1 == frames ? 0 : s.row + 1;
+  s.t = std::min(x - float(s.row), 1.0f);  // phase just below 1 may round x up to F
+  return s;
+}
 
 float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo, float hi) {
   uint32_t h = character * 747796405u + epoch * 2891336453u + seed * 1181783497u + 12345u;
@@ -42,7 +90,9 @@ float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo,
 void applyRetarget(uint32_t character, const SpeedRetarget& r, glm::vec4& motion) {
   if (r.epoch == 0) return;
   float target = retargetSpeed(character, r.epoch, r.seed, r.lo, r.hi);
-  motion.z = r.bucketWidth > 0.0f ? std::min(std::floor(target / r.bucketWidth + 0.5f) * r.bucketWidth, 1.0f) : target;
+  motion.z = r.bucketWidth > 0.0f
+                 ? std::min(std::floor(target / r.bucketWidth + 0.5f) * r.bucketWidth, 1.0f)
+                 : target;
 }
 
 float circleHeading(glm::vec2 p) {
@@ -63,10 +113,13 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
   float duration = slow.duration() * (1.0f - w) + fast.duration() * w;
   float phase0 = motion.x;
   float phase1 = phase0 + dt / duration;
-  glm::vec3 dSlow = rootAt(slow, int(phase1 * float(slow.frameCount))) - rootAt(slow, int(phase0 * float(slow.frameCount)));
-  glm::vec3 dFast = rootAt(fast, int(phase1 * float(fast.frameCount))) - rootAt(fast, int(phase0 * float(fast.frameCount)));
+  glm::vec3 dSlow =
+      rootAt(slow, phase1 * float(slow.frameCount)) - rootAt(slow, phase0 * float(slow.frameCount));
+  glm::vec3 dFast =
+      rootAt(fast, phase1 * float(fast.frameCount)) - rootAt(fast, phase0 * float(fast.frameCount));
   glm::vec3 d = mixVec(dSlow, dFast, w);
-  if (steering == Steering::Circle) placement.w = circleHeading(glm::vec2(placement.x, placement.z));
+  if (steering == Steering::Circle)
+    placement.w = circleHeading(glm::vec2(placement.x, placement.z));
   float c = std::cos(placement.w), s = std::sin(placement.w);
   float scale = motion.w;
   placement.x += scale * (d.x * c + d.z * s);
@@ -80,11 +133,11 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
 void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out) {
   const int joints = pair.jointCount();
   THRONG_CHECK(static_cast<int>(out.size()) >= joints, "pose output too small");
-  int fs = frameAt(phase, pair.slow.frameCount);
-  int ff = frameAt(phase, pair.fast.frameCount);
+  const PhaseSampling sampling = samplePhase(pair, phase, w);
   for (int j = 0; j < joints; ++j) {
-    glm::vec4 q = slerpFast(pair.slow.rotation(fs, j), pair.fast.rotation(ff, j), w);
-    glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), w);
+    glm::vec4 q;
+    glm::vec3 o;
+    blendJoint(pair, sampling, j, q, o);
     int p = pair.parents[j];
     if (p < 0) {
       out[j] = {glm::vec3(0.0f, o.y, 0.0f), q};
@@ -94,18 +147,19 @@ void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<
   }
 }
 
-void poseCharacterFrames(const MotionPair& pair, int fs, int ff, float w, float heading, glm::vec3 origin,
-                         float scale, std::span<glm::vec4> out) {
+void poseCharacterAt(const MotionPair& pair, float phase, float w, float heading, glm::vec3 origin,
+                     float scale, std::span<glm::vec4> out) {
   const int joints = pair.jointCount();
   THRONG_CHECK(static_cast<int>(out.size()) >= 3 * joints, "joint matrix output too small");
   thread_local std::vector<PoseJoint> world;
   world.resize(joints);
   const glm::vec4 yaw = yawQuat(heading);
-  const SlerpWeights weights = makeSlerpWeights(w);
+  const PhaseSampling sampling = samplePhase(pair, phase, w);
   // Composed directly in world space, like the GPU pass (root = M · root pose).
   for (int j = 0; j < joints; ++j) {
-    glm::vec4 q = slerpFast(pair.slow.rotation(fs, j), pair.fast.rotation(ff, j), weights);
-    glm::vec3 o = mixVec(pair.slow.offset(fs, j), pair.fast.offset(ff, j), w);
+    glm::vec4 q;
+    glm::vec3 o;
+    blendJoint(pair, sampling, j, q, o);
     int p = pair.parents[j];
     float radius = pair.jointRadius[j];
     glm::vec3 start;
@@ -115,7 +169,8 @@ void poseCharacterFrames(const MotionPair& pair, int fs, int ff, float w, float 
       // The root is drawn as a sphere around it: a vertical "bone" of length 2r.
       world[j].rotation = quatMul(yaw, q);
       world[j].position = origin + glm::vec3(0.0f, scale * o.y, 0.0f);
-      start = world[j].position + quatRotate(world[j].rotation, glm::vec3(0.0f, -scale * radius, 0.0f));
+      start =
+          world[j].position + quatRotate(world[j].rotation, glm::vec3(0.0f, -scale * radius, 0.0f));
       orientation = world[j].rotation;
       length = 2.0f * radius;
     } else {
@@ -133,14 +188,12 @@ void poseCharacterFrames(const MotionPair& pair, int fs, int ff, float w, float 
 
 void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
                    std::span<glm::vec4> out) {
-  poseCharacterFrames(pair, frameAt(motion.x, pair.slow.frameCount), frameAt(motion.x, pair.fast.frameCount), motion.y,
-                      placement.w, glm::vec3(placement), motion.w, out);
+  poseCharacterAt(pair, motion.x, motion.y, placement.w, glm::vec3(placement), motion.w, out);
 }
 
-int poseFrame(float phase, int frames) { return frameAt(phase, frames); }
-
 glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p) {
-  return glm::vec3(glm::dot(glm::vec3(rows[0]), p) + rows[0].w, glm::dot(glm::vec3(rows[1]), p) + rows[1].w,
+  return glm::vec3(glm::dot(glm::vec3(rows[0]), p) + rows[0].w,
+                   glm::dot(glm::vec3(rows[1]), p) + rows[1].w,
                    glm::dot(glm::vec3(rows[2]), p) + rows[2].w);
 }
 

@@ -10,7 +10,8 @@
 
 namespace throng::anim {
 
-// Mirrors shaders/shared_types.h: placement = (x, y, z, heading), motion = (phase, w, wTarget, scale).
+// Mirrors shaders/shared_types.h: placement = (x, y, z, heading), motion = (phase, w, wTarget,
+// scale).
 struct CharacterRef {
   glm::vec4& placement;
   glm::vec4& motion;
@@ -18,8 +19,9 @@ struct CharacterRef {
 
 enum class Steering : uint32_t { KeepHeading = 0, Circle = 1 };
 
-// Eq. 10: advances the phase by dt, moves the root by the blended per-frame displacement
-// rotated by the heading and scaled, and switches w to wTarget only when a cycle ends.
+// Eq. 10: advances the phase by dt, moves the root by the blended displacement between the two
+// phases (each clip's root interpolated between its rows, so the step is continuous in the
+// phase) rotated by the heading and scaled, and switches w to wTarget only when a cycle ends.
 struct SpeedRetarget;
 void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
                    Steering steering);
@@ -32,13 +34,20 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
 void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
                    std::span<glm::vec4> out);
 
-// The same at explicit slow/fast frames and speed weight, placed by heading, origin and scale;
-// heading 0, origin 0, scale 1 gives the character-space pose the motion cache stores.
-void poseCharacterFrames(const MotionPair& pair, int slowFrame, int fastFrame, float w, float heading,
-                         glm::vec3 origin, float scale, std::span<glm::vec4> out);
+// Where a clip is sampled at a phase in [0, 1): between rows `row` and `next` (the row after
+// the last is row 0: clips are cycles) at fraction t. Rotations are slerped and offsets lerped
+// between the two rows, so the pose moves continuously with the phase.
+struct ClipSample {
+  int row = 0;
+  int next = 0;
+  float t = 0.0f;
+};
+ClipSample clipSample(float phase, int frames);
 
-// The frame of a clip shown at a phase in [0, 1) (what the pose pass samples).
-int poseFrame(float phase, int frames);
+// The pose at a phase of both clips and speed weight w, placed by heading, origin and scale;
+// heading 0, origin 0, scale 1 gives the character-space pose the motion cache stores.
+void poseCharacterAt(const MotionPair& pair, float phase, float w, float heading, glm::vec3 origin,
+                     float scale, std::span<glm::vec4> out);
 
 // Character-space joint positions and global rotations (for tests and metrics).
 struct PoseJoint {

@@ -10,15 +10,17 @@
 
 namespace throng::synth {
 
-void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton, const CoverageThresholds& thresholds) {
+void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton,
+                      const CoverageThresholds& thresholds) {
   BodyParts parts = describeBodyParts(skeleton);
   setMeanCentres(parts, *synth.pair);
   CoverageParts uniform = makeCoverageParts(parts, thresholds);
   std::memcpy(synth.coverageParts.mapped(), &uniform, sizeof(uniform));
 }
 
-CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd,
-                          const MotionCacheOptions& cache, const LodOptions& lod) {
+CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair,
+                          const crowd::Crowd& crowd, const MotionCacheOptions& cache,
+                          const LodOptions& lod) {
   CrowdSynth synth;
   synth.pair = &pair;
   synth.motion = uploadMotionPair(context, pair);
@@ -30,8 +32,9 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
   if (lod.enabled) {
     if (!lod.skeleton) fail("LOD needs the skeleton to find the body parts");
     synth.lod = true;
-    synth.coverageParts = gpu::Buffer(context, sizeof(CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                      gpu::MemoryUse::HostVisible);
+    synth.coverageParts =
+        gpu::Buffer(context, sizeof(CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                    gpu::MemoryUse::HostVisible);
     setLodThresholds(synth, *lod.skeleton, lod.thresholds);
     std::vector<CoverageMask> none(std::max<size_t>(crowd.size(), 1), CoverageMask{});
     synth.masks = gpu::makeStorageBuffer<CoverageMask>(context, none);
@@ -41,10 +44,12 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
     VkDeviceSize n = std::max<VkDeviceSize>(crowd.size(), 1);
     std::vector<uint32_t> inJoints(n, gpu_types::kPoseInJoints);
     synth.poseSource = gpu::makeStorageBuffer<uint32_t>(context, inJoints);
-    synth.characterLists = gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    synth.characterLists =
+        gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
     synth.listCounts = gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-    synth.dispatchArgs = gpu::Buffer(context, n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                                     gpu::MemoryUse::DeviceLocal);
+    synth.dispatchArgs =
+        gpu::Buffer(context, n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    gpu::MemoryUse::DeviceLocal);
   }
   return synth;
 }
@@ -60,8 +65,8 @@ anim::SpeedRetarget SpeedSchedule::advance(float dt) {
   return retarget;
 }
 
-void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
-                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget,
+void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
+                     float dt, VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget,
                      const CoverageCamera* lodCamera) {
   RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering, retarget};
   root.record(cmd, programs);
@@ -70,15 +75,16 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
   if (lod) {
     // Sphere centres estimated from placement and the clip's mean pose: no dependency on
     // this frame's pose pass, which the masks then trim.
-    CoverageJob coverage{&synth.crowd, &synth.coverageParts, nullptr, &synth.masks, nullptr, *lodCamera,
-                         synth.jointCount()};
+    CoverageJob coverage{&synth.crowd, &synth.coverageParts, nullptr,           &synth.masks,
+                         nullptr,      *lodCamera,           synth.jointCount()};
     coverage.record(cmd, programs.coverage);
     gpu::computeToComputeBarrier(cmd);
   }
   const bool cached = synth.cache.options.enabled;
   const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
   // Also bounded by 65535 workgroups of 64 per dispatch.
-  const uint32_t chunk = static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
+  const uint32_t chunk =
+      static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
   const uint32_t chunks = (synth.crowd.count + chunk - 1) / chunk;
   if (cached) {
     CacheJob{&synth.motion, &synth.crowd, &synth.cache}.record(cmd, programs);
@@ -88,27 +94,32 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
       uint32_t first = c * chunk;
       CachePush push{};
       push.characterCount = std::min(chunk, synth.crowd.count - first);
-      push.segmentCount = synth.cache.segmentCount;
+      push.rowCount = synth.cache.rowCount;
       push.bucketWidth = synth.cache.options.bucketWidth;
       push.firstCharacter = first;
       push.chunk = c;
       push.jointCount = synth.jointCount();
-      push.slowFrames = synth.motion.slowFrames;
-      push.fastFrames = synth.motion.fastFrames;
-      gpu::Binding bindings[] = {gpu::storageBinding(0, synth.crowd.motion), gpu::storageBinding(3, synth.cache.bucketSlot),
-                                 gpu::storageBinding(6, synth.characterLists), gpu::storageBinding(7, synth.listCounts),
+      gpu::Binding bindings[] = {gpu::storageBinding(0, synth.crowd.motion),
+                                 gpu::storageBinding(3, synth.cache.bucketSlot),
+                                 gpu::storageBinding(6, synth.characterLists),
+                                 gpu::storageBinding(7, synth.listCounts),
                                  gpu::storageBinding(9, synth.poseSource)};
       gpu::dispatch(cmd, programs.cacheClassify, bindings, push, push.characterCount);
     }
     gpu::computeToComputeBarrier(cmd);
-    gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts), gpu::storageBinding(8, synth.dispatchArgs)};
+    gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts),
+                                  gpu::storageBinding(8, synth.dispatchArgs)};
     gpu::dispatch(cmd, programs.cacheArgs, argBindings, chunks, chunks);
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
   }
   for (uint32_t c = 0; c < chunks; ++c) {
     uint32_t first = c * chunk;
-    PoseJob pose{&synth.motion, &synth.crowd, &synth.joints, first, std::min(chunk, synth.crowd.count - first),
+    PoseJob pose{&synth.motion,
+                 &synth.crowd,
+                 &synth.joints,
+                 first,
+                 std::min(chunk, synth.crowd.count - first),
                  VkDeviceSize(first) * perCharacter};
     pose.masks = lod ? &synth.masks : nullptr;
     if (!cached) {
@@ -124,17 +135,24 @@ void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const C
     pose.record(cmd, programs);
   }
   // The cache counters are read on the host after the frame.
-  if (cached) gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+  if (cached)
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
 }
 
-void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
-                                  VkDeviceSize maxBindingBytes) {
+void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs,
+                                  const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
   if (!synth.cache.options.enabled) return;
   const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
-  const uint32_t chunk = static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
+  const uint32_t chunk =
+      static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
   for (uint32_t first = 0; first < synth.crowd.count; first += chunk) {
-    MaterializeCachedJob job{&synth.crowd, &synth.cache, &synth.poseSource, &synth.joints, first,
-                             std::min(chunk, synth.crowd.count - first), VkDeviceSize(first) * perCharacter,
+    MaterializeCachedJob job{&synth.crowd,
+                             &synth.cache,
+                             &synth.poseSource,
+                             &synth.joints,
+                             first,
+                             std::min(chunk, synth.crowd.count - first),
+                             VkDeviceSize(first) * perCharacter,
                              synth.lod ? &synth.masks : nullptr};
     job.record(cmd, programs);
   }

@@ -10,32 +10,35 @@
 
 namespace throng::synth {
 
-uint32_t speedBucketCount(float bucketWidth) { return static_cast<uint32_t>(std::lround(1.0f / bucketWidth)) + 1u; }
+uint32_t speedBucketCount(float bucketWidth) {
+  return static_cast<uint32_t>(std::lround(1.0f / bucketWidth)) + 1u;
+}
 
 uint32_t speedBucket(float w, float bucketWidth, uint32_t bucketCount) {
   return std::min(static_cast<uint32_t>(w / bucketWidth + 0.5f), bucketCount - 1u);
 }
 
-float bucketSpeed(uint32_t bucket, float bucketWidth) { return std::min(float(bucket) * bucketWidth, 1.0f); }
+float bucketSpeed(uint32_t bucket, float bucketWidth) {
+  return std::min(float(bucket) * bucketWidth, 1.0f);
+}
 
 float quantizeSpeed(float w, float bucketWidth) {
   return bucketSpeed(speedBucket(w, bucketWidth, speedBucketCount(bucketWidth)), bucketWidth);
 }
 
-std::vector<glm::ivec2> cacheSegments(int slowFrames, int fastFrames) {
-  std::vector<glm::ivec2> segments(size_t(slowFrames + fastFrames - 1), glm::ivec2(-1));
-  // Every frame boundary of either clip is a breakpoint; sample each interval in its middle.
-  std::vector<float> cuts{0.0f, 1.0f};
-  for (int k = 1; k < slowFrames; ++k) cuts.push_back(float(k) / float(slowFrames));
-  for (int k = 1; k < fastFrames; ++k) cuts.push_back(float(k) / float(fastFrames));
-  std::sort(cuts.begin(), cuts.end());
-  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-    if (cuts[i + 1] - cuts[i] <= 1e-7f) continue;
-    float mid = 0.5f * (cuts[i] + cuts[i + 1]);
-    glm::ivec2 frames(anim::poseFrame(mid, slowFrames), anim::poseFrame(mid, fastFrames));
-    segments[size_t(frames.x + frames.y)] = frames;
-  }
-  return segments;
+uint32_t cacheRowCount(const anim::MotionPair& pair) {
+  const float longest = std::max(pair.slow.duration(), pair.fast.duration());
+  const auto dense = static_cast<uint32_t>(std::ceil(kCacheRowsPerSecond * longest));
+  return std::max({dense, uint32_t(pair.slow.frameCount), uint32_t(pair.fast.frameCount), 1u});
+}
+
+uint32_t cacheRow(float phase, uint32_t rows) {
+  auto row = static_cast<uint32_t>(phase * float(rows) + 0.5f);
+  return row >= rows ? 0u : row;
+}
+
+float cacheRowPhase(uint32_t row, uint32_t rows) {
+  return float(row) / float(rows);
 }
 
 void validateCacheOptions(const MotionCacheOptions& o) {
@@ -59,14 +62,15 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
   cache.options = options;
   cache.jointCount = static_cast<uint32_t>(pair.jointCount());
   cache.bucketCount = speedBucketCount(options.bucketWidth);
-  std::vector<glm::ivec2> segments = cacheSegments(pair.slow.frameCount, pair.fast.frameCount);
-  cache.segmentCount = static_cast<uint32_t>(segments.size());
-  cache.entryBytes = uint64_t(cache.segmentCount) * cache.jointCount * sizeof(JointMatrix);
-  cache.capacity = options.enabled ? static_cast<uint32_t>(options.budgetBytes / cache.entryBytes) : 0u;
+  cache.rowCount = cacheRowCount(pair);
+  cache.entryBytes = uint64_t(cache.rowCount) * cache.jointCount * sizeof(JointMatrix);
+  cache.capacity =
+      options.enabled ? static_cast<uint32_t>(options.budgetBytes / cache.entryBytes) : 0u;
   gpu_types::CacheCounters counters{};
   counters.capacity = cache.capacity;
   counters.bucketCount = cache.bucketCount;
-  cache.counters = gpu::Buffer(context, sizeof(counters), gpu::kStorageUsage, gpu::MemoryUse::HostVisible);
+  cache.counters =
+      gpu::Buffer(context, sizeof(counters), gpu::kStorageUsage, gpu::MemoryUse::HostVisible);
   std::memcpy(cache.counters.mapped(), &counters, sizeof(counters));
   cache.requested = filled<uint32_t>(context, cache.bucketCount, 0u);
   cache.bucketSlot = filled<int32_t>(context, cache.bucketCount, -1);
@@ -74,16 +78,20 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
   // Up to one entry per requested bucket is inserted in a frame, so bucketCount bounds the list.
   cache.freshSlots = filled<uint32_t>(context, size_t(cache.bucketCount) + 1, 0u);
   cache.fillArgs = filled<uint32_t>(context, 3, 0u, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-  cache.data = gpu::Buffer(context, std::max<uint64_t>(16 * 48, uint64_t(cache.capacity) * cache.entryBytes),
-                           gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  cache.segmentFrames = gpu::makeStorageBuffer<glm::ivec2>(context, segments);
+  cache.data =
+      gpu::Buffer(context, std::max<uint64_t>(16 * 48, uint64_t(cache.capacity) * cache.entryBytes),
+                  gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   return cache;
 }
 
 MotionCacheStats readCacheStats(const GpuMotionCache& cache) {
   gpu_types::CacheCounters c;
   std::memcpy(&c, cache.counters.mapped(), sizeof(c));
-  MotionCacheStats stats{c.hits, c.misses, c.evictions, c.entries, uint64_t(c.entries) * cache.entryBytes,
+  MotionCacheStats stats{c.hits,
+                         c.misses,
+                         c.evictions,
+                         c.entries,
+                         uint64_t(c.entries) * cache.entryBytes,
                          cache.options.budgetBytes};
   return stats;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // The motion cache of DESIGN §3.4, resident on the GPU: key = speed weight quantized to a
-// bucket, data = the synthesized character-space clip at that speed (one pose per segment of
-// the slow/fast frame grid, all joints). Lookup before synthesis, a miss synthesizes and
+// bucket, data = the synthesized character-space clip at that speed (cacheRowCount poses evenly
+// spaced in phase, all joints). Lookup before synthesis, a miss synthesizes and
 // inserts, FIFO eviction of the oldest entry when the byte budget is full. A character whose
 // bucket is resident does no blending and no hierarchy: A = M · cached pose.
 #include <cstdint>
@@ -20,8 +20,8 @@ namespace throng::synth {
 
 struct MotionCacheOptions {
   bool enabled = false;
-  float bucketWidth = 0.05f;               // in speed-weight units (w ∈ [0, 1])
-  uint64_t budgetBytes = 20ull << 20;      // paper: 20 MB
+  float bucketWidth = 0.05f;           // in speed-weight units (w ∈ [0, 1])
+  uint64_t budgetBytes = 20ull << 20;  // paper: 20 MB
 };
 
 struct MotionCacheStats {
@@ -35,25 +35,39 @@ float bucketSpeed(uint32_t bucket, float bucketWidth);
 // w rounded to its bucket's speed (what the cached pose is synthesized at).
 float quantizeSpeed(float w, float bucketWidth);
 
-// Segment k = slow frame + fast frame; each (slow, fast) frame pair met while the phase sweeps
-// one cycle has its own k. Unused k hold (-1, -1).
-std::vector<glm::ivec2> cacheSegments(int slowFrames, int fastFrames);
+// Rows per cache entry: row r is the pose at phase r / R, sampled like the pose pass samples
+// (continuously between motion-texture rows), and a cached character shows the row nearest its
+// phase. Why dense rows and not interpolation between rows at playback: the renderer composes a
+// cached character's joints straight from one entry (A = M · P, shaders/joint_fetch.glsl), and
+// interpolating two draw matrices is no rigid motion (lerped rotations shrink the bones), while
+// slerping would need the quaternions and the hierarchy again, the work the cache exists to
+// skip. So R = ⌈kCacheRowsPerSecond × the longer cycle⌉ (at least the clips' own row counts):
+// the row shown is within 1/960 s of the character's phase at any speed, so the pose advanced
+// per frame varies by at most ±1/16 of a 30 fps frame's advance (±1/8 at 60 fps), well inside
+// the gait's own variation (test_motion_continuity.cpp measures cached against uncached). The
+// price is memory: a 0.8 s cycle of 31 joints is 0.55 MB per bucket, 21 buckets of width 0.05
+// 11.5 MB of the 20 MB budget.
+constexpr float kCacheRowsPerSecond = 480.0f;
+uint32_t cacheRowCount(const anim::MotionPair& pair);
+// The row nearest a phase in [0, 1) (R wraps to row 0), and a row's phase; mirror
+// cache_classify.comp and cache_fill.comp.
+uint32_t cacheRow(float phase, uint32_t rows);
+float cacheRowPhase(uint32_t row, uint32_t rows);
 
 // Throws Error on a bucket width outside (0, 1] or an entry larger than the budget allows at 0.
 void validateCacheOptions(const MotionCacheOptions& options);
 
 struct GpuMotionCache {
   MotionCacheOptions options;
-  uint32_t bucketCount = 0, segmentCount = 0, capacity = 0, jointCount = 0;
+  uint32_t bucketCount = 0, rowCount = 0, capacity = 0, jointCount = 0;
   uint64_t entryBytes = 0;
-  gpu::Buffer counters;       // CacheCounters, host-visible (read back every frame)
-  gpu::Buffer requested;      // uint per bucket
-  gpu::Buffer bucketSlot;     // int per bucket, −1 when not resident
-  gpu::Buffer slotBucket;     // int per slot, −1 when empty
-  gpu::Buffer freshSlots;     // [0] count, then the slots inserted this frame (to synthesize)
-  gpu::Buffer fillArgs;       // VkDispatchIndirectCommand of the fill pass
-  gpu::Buffer data;           // capacity × segments × joints JointMatrix (the SSBO ring)
-  gpu::Buffer segmentFrames;  // ivec2 per segment
+  gpu::Buffer counters;    // CacheCounters, host-visible (read back every frame)
+  gpu::Buffer requested;   // uint per bucket
+  gpu::Buffer bucketSlot;  // int per bucket, −1 when not resident
+  gpu::Buffer slotBucket;  // int per slot, −1 when empty
+  gpu::Buffer freshSlots;  // [0] count, then the slots inserted this frame (to synthesize)
+  gpu::Buffer fillArgs;    // VkDispatchIndirectCommand of the fill pass
+  gpu::Buffer data;        // capacity × rows × joints JointMatrix (the SSBO ring)
 };
 
 // A disabled cache still gets small buffers so the pose pass always has its bindings.

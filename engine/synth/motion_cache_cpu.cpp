@@ -12,8 +12,8 @@ MotionCacheCpu::MotionCacheCpu(const anim::MotionPair& pair, const MotionCacheOp
     : pair_(&pair), options_(options) {
   validateCacheOptions(options);
   bucketCount_ = speedBucketCount(options.bucketWidth);
-  segments_ = cacheSegments(pair.slow.frameCount, pair.fast.frameCount);
-  entryBytes_ = uint64_t(segments_.size()) * pair.jointCount() * sizeof(JointMatrix);
+  rows_ = cacheRowCount(pair);
+  entryBytes_ = uint64_t(rows_) * pair.jointCount() * sizeof(JointMatrix);
   capacity_ = options.enabled ? static_cast<uint32_t>(options.budgetBytes / entryBytes_) : 0u;
   bucketSlot_.assign(bucketCount_, -1);
   slotBucket_.assign(capacity_, -1);
@@ -23,7 +23,8 @@ MotionCacheCpu::MotionCacheCpu(const anim::MotionPair& pair, const MotionCacheOp
 
 void MotionCacheCpu::update(const crowd::Crowd& crowd) {
   std::vector<bool> requested(bucketCount_, false);
-  for (const glm::vec4& m : crowd.motion) requested[speedBucket(m.y, options_.bucketWidth, bucketCount_)] = true;
+  for (const glm::vec4& m : crowd.motion)
+    requested[speedBucket(m.y, options_.bucketWidth, bucketCount_)] = true;
   std::vector<uint32_t> fresh;
   for (uint32_t b = 0; b < bucketCount_; ++b) {
     if (!requested[b]) continue;
@@ -51,24 +52,23 @@ void MotionCacheCpu::update(const crowd::Crowd& crowd) {
     if (slotBucket_[slot] < 0) continue;
     float w = bucketSpeed(static_cast<uint32_t>(slotBucket_[slot]), options_.bucketWidth);
     std::vector<JointMatrix>& entry = entries_[slot];
-    entry.assign(segments_.size() * joints, JointMatrix{});
-    for (size_t k = 0; k < segments_.size(); ++k) {
-      if (segments_[k].x < 0) continue;
-      auto* rows = reinterpret_cast<glm::vec4*>(&entry[k * joints]);
-      anim::poseCharacterFrames(*pair_, segments_[k].x, segments_[k].y, w, 0.0f, glm::vec3(0.0f), 1.0f,
-                                std::span<glm::vec4>(rows, 3 * joints));
+    entry.assign(size_t(rows_) * joints, JointMatrix{});
+    for (uint32_t r = 0; r < rows_; ++r) {
+      auto* rows = reinterpret_cast<glm::vec4*>(&entry[r * joints]);
+      anim::poseCharacterAt(*pair_, cacheRowPhase(r, rows_), w, 0.0f, glm::vec3(0.0f), 1.0f,
+                            std::span<glm::vec4>(rows, 3 * joints));
     }
   }
   stats_.bytesUsed = uint64_t(stats_.entries) * entryBytes_;
 }
 
-bool MotionCacheCpu::pose(const glm::vec4& placement, const glm::vec4& motion, std::span<JointMatrix> out) const {
+bool MotionCacheCpu::pose(const glm::vec4& placement, const glm::vec4& motion,
+                          std::span<JointMatrix> out) const {
   if (capacity_ == 0) return false;
   int32_t slot = bucketSlot_[speedBucket(motion.y, options_.bucketWidth, bucketCount_)];
   if (slot < 0) return false;
   const size_t joints = static_cast<size_t>(pair_->jointCount());
-  int segment = anim::poseFrame(motion.x, pair_->slow.frameCount) + anim::poseFrame(motion.x, pair_->fast.frameCount);
-  const JointMatrix* cached = &entries_[slot][size_t(segment) * joints];
+  const JointMatrix* cached = &entries_[slot][size_t(cacheRow(motion.x, rows_)) * joints];
   float c = std::cos(placement.w), s = std::sin(placement.w), scale = motion.w;
   for (size_t j = 0; j < joints; ++j) {
     const JointMatrix& p = cached[j];
@@ -79,18 +79,21 @@ bool MotionCacheCpu::pose(const glm::vec4& placement, const glm::vec4& motion, s
   return true;
 }
 
-MotionCacheStats MotionCacheCpu::stats() const { return stats_; }
+MotionCacheStats MotionCacheCpu::stats() const {
+  return stats_;
+}
 
-void poseCrowdCpuCached(const anim::MotionPair& pair, const MotionCacheCpu& cache, const crowd::Crowd& crowd,
-                        std::span<JointMatrix> out, unsigned threads) {
+void poseCrowdCpuCached(const anim::MotionPair& pair, const MotionCacheCpu& cache,
+                        const crowd::Crowd& crowd, std::span<JointMatrix> out, unsigned threads) {
   const size_t joints = static_cast<size_t>(pair.jointCount());
   THRONG_CHECK(out.size() >= crowd.size() * joints, "joint matrix output too small");
   parallelFor(crowd.size(), threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       std::span<JointMatrix> mine = out.subspan(i * joints, joints);
       if (cache.pose(crowd.placement[i], crowd.motion[i], mine)) continue;
-      anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i],
-                          std::span<glm::vec4>(reinterpret_cast<glm::vec4*>(mine.data()), 3 * joints));
+      anim::poseCharacter(
+          pair, crowd.placement[i], crowd.motion[i],
+          std::span<glm::vec4>(reinterpret_cast<glm::vec4*>(mine.data()), 3 * joints));
     }
   });
 }

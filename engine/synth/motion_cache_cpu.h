@@ -21,20 +21,22 @@ class MotionCacheCpu {
   bool pose(const glm::vec4& placement, const glm::vec4& motion, std::span<JointMatrix> out) const;
   MotionCacheStats stats() const;
   uint32_t capacity() const { return capacity_; }
+  uint32_t rows() const { return rows_; }
 
  private:
   const anim::MotionPair* pair_;
   MotionCacheOptions options_;
   uint32_t bucketCount_ = 0, capacity_ = 0, head_ = 0;
   uint64_t entryBytes_ = 0;
-  std::vector<glm::ivec2> segments_;
+  uint32_t rows_ = 0;
   std::vector<int32_t> bucketSlot_, slotBucket_;
-  std::vector<std::vector<JointMatrix>> entries_;  // per slot: segments × joints
+  std::vector<std::vector<JointMatrix>> entries_;  // per slot: rows × joints
   MotionCacheStats stats_;
 };
 
 // The CPU path for a crowd with a cache: cached characters from the cache, others synthesized.
-void poseCrowdCpuCached(const anim::MotionPair& pair, const MotionCacheCpu& cache, const crowd::Crowd& crowd,
-                        std::span<JointMatrix> out, unsigned threads = 1);
+void poseCrowdCpuCached(const anim::MotionPair& pair, const MotionCacheCpu& cache,
+                        const crowd::Crowd& crowd, std::span<JointMatrix> out,
+                        unsigned threads = 1);
 
 }  // namespace throng::synth

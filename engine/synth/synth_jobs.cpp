@@ -23,7 +23,8 @@ namespace {
 // [68], [69] the bit mask of fixed bones (synth::fixedBones), and from 70 + 8j joint j's fixed
 // bone: offset xyz, length, and the rotation aligning +y with it (xyzw), as float bits; [582]
 // the texels per uniform block, [583] whether the texels are read from the uniform buffers.
-std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity, bool useMasks = false) {
+std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity,
+                                         bool useMasks = false) {
   const std::vector<int32_t>& parents = pair.parents;
   if (parents.empty() || parents.size() > 64)
     fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
@@ -44,14 +45,16 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t 
     float length = glm::length(offset);
     glm::vec4 align = alignYTo(length > 1e-6f ? offset / length : glm::vec3(0.0f, 1.0f, 0.0f));
     float bone[8] = {offset.x, offset.y, offset.z, length, align.x, align.y, align.z, align.w};
-    for (int c = 0; c < 8; ++c) values[70 + 8 * j + size_t(c)] = fixed[j] ? std::bit_cast<uint32_t>(bone[c]) : 0u;
+    for (int c = 0; c < 8; ++c)
+      values[70 + 8 * j + size_t(c)] = fixed[j] ? std::bit_cast<uint32_t>(bone[c]) : 0u;
     if (fixed[j]) values[68 + j / 32] |= 1u << (j % 32);
   }
   return values;
 }
 // Specialization constants of root_motion.comp: [0] joint count (the texel row width), and
 // [582], [583] as for the pose pass (where the texels are read).
-std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity) {
+std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair,
+                                               uint32_t uniformCapacity) {
   std::vector<uint32_t> values = poseSpecialization(pair, uniformCapacity);
   values[0] = uint32_t(pair.jointCount());
   return values;
@@ -59,15 +62,19 @@ std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair, uin
 }  // namespace
 
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
-    : rootMotion(context, "root_motion.comp", rootMotionSpecialization(pair, uniformTexelCapacity(context))),
+    : rootMotion(context, "root_motion.comp",
+                 rootMotionSpecialization(pair, uniformTexelCapacity(context))),
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
-      poseMasked(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context), true)),
+      poseMasked(context, "synth_pose.comp",
+                 poseSpecialization(pair, uniformTexelCapacity(context), true)),
       cacheLookup(context, "cache_lookup.comp"),
       cacheInsert(context, "cache_insert.comp"),
-      cacheFill(context, "cache_fill.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
+      cacheFill(context, "cache_fill.comp",
+                poseSpecialization(pair, uniformTexelCapacity(context))),
       cacheClassify(context, "cache_classify.comp"),
       cacheArgs(context, "cache_dispatch_args.comp"),
-      poseCached(context, "synth_pose_cached.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
+      poseCached(context, "synth_pose_cached.comp",
+                 poseSpecialization(pair, uniformTexelCapacity(context))),
       coverage(makeCoverageProgram(context)),
       poseParents(pair.parents),
       poseAnimatedOffsets(pair.animatedOffset),
@@ -82,31 +89,39 @@ std::vector<std::string> CacheJob::validate() const {
   if (!cache) problems.push_back("input/output 'cache' is missing");
   if (cache && !cache->options.enabled) problems.push_back("the cache is disabled");
   if (cache && motion && cache->jointCount != motion->jointCount)
-    problems.push_back(concat("the cache holds ", cache->jointCount, " joints per pose, the motion pair has ",
-                              motion->jointCount));
+    problems.push_back(concat("the cache holds ", cache->jointCount,
+                              " joints per pose, the motion pair has ", motion->jointCount));
   return problems;
 }
 
 void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("CacheJob", validate());
-  CachePush push{crowd->count, cache->segmentCount, cache->capacity, cache->options.bucketWidth};
-  gpu::Binding lookup[] = {gpu::storageBinding(0, crowd->motion), gpu::storageBinding(1, cache->counters),
+  CachePush push{crowd->count, cache->rowCount, cache->capacity, cache->options.bucketWidth};
+  push.slowFrames = motion->slowFrames;
+  push.fastFrames = motion->fastFrames;
+  gpu::Binding lookup[] = {gpu::storageBinding(0, crowd->motion),
+                           gpu::storageBinding(1, cache->counters),
                            gpu::storageBinding(2, cache->requested)};
   gpu::dispatch(cmd, programs.cacheLookup, lookup, push, crowd->count);
   gpu::computeToComputeBarrier(cmd);
-  gpu::Binding insert[] = {gpu::storageBinding(1, cache->counters), gpu::storageBinding(2, cache->requested),
-                           gpu::storageBinding(3, cache->bucketSlot), gpu::storageBinding(4, cache->slotBucket),
-                           gpu::storageBinding(5, cache->freshSlots), gpu::storageBinding(8, cache->fillArgs)};
+  gpu::Binding insert[] = {
+      gpu::storageBinding(1, cache->counters),   gpu::storageBinding(2, cache->requested),
+      gpu::storageBinding(3, cache->bucketSlot), gpu::storageBinding(4, cache->slotBucket),
+      gpu::storageBinding(5, cache->freshSlots), gpu::storageBinding(8, cache->fillArgs)};
   gpu::dispatch(cmd, programs.cacheInsert, insert, push, 1);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
   if (cache->capacity > 0) {
     // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
-    gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels), gpu::storageBinding(1, motion->fastTexels),
-                           gpu::uniformBinding(12, motion->slowUniformTexels), gpu::uniformBinding(13, motion->fastUniformTexels),
-                           gpu::storageBinding(2, motion->jointRadius), gpu::uniformBinding(6, motion->constantOffsets),
-                           gpu::storageBinding(7, cache->slotBucket), gpu::storageBinding(8, cache->freshSlots),
-                           gpu::storageBinding(9, cache->segmentFrames), gpu::storageBinding(10, cache->data)};
+    gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels),
+                           gpu::storageBinding(1, motion->fastTexels),
+                           gpu::uniformBinding(12, motion->slowUniformTexels),
+                           gpu::uniformBinding(13, motion->fastUniformTexels),
+                           gpu::storageBinding(2, motion->jointRadius),
+                           gpu::uniformBinding(6, motion->constantOffsets),
+                           gpu::storageBinding(7, cache->slotBucket),
+                           gpu::storageBinding(8, cache->freshSlots),
+                           gpu::storageBinding(10, cache->data)};
     gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
     gpu::computeToComputeBarrier(cmd);
   }
@@ -117,7 +132,8 @@ std::vector<std::string> RootMotionJob::validate() const {
   if (!motion) problems.push_back("input 'motion' (GPU motion textures) is missing");
   if (!clips) problems.push_back("input 'clips' (motion pair) is missing");
   if (!crowd) problems.push_back("input/output 'crowd' buffers are missing");
-  if (crowd && (!crowd->placement || !crowd->motion)) problems.push_back("crowd buffers are not allocated");
+  if (crowd && (!crowd->placement || !crowd->motion))
+    problems.push_back("crowd buffers are not allocated");
   if (!(dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", dt));
   if (clips && (clips->slow.duration() <= 0.0f || clips->fast.duration() <= 0.0f))
     problems.push_back("clip durations must be positive");
@@ -128,8 +144,9 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
   throwIfInvalid("RootMotionJob", validate());
   if (programs.poseParents.size() != motion->jointCount ||  // the texel row width is baked in
       programs.poseTexelsInUniform != motion->texelsInUniform)
-    fail("RootMotionJob: the programs were built for another motion pair (", programs.poseParents.size(),
-         " joints, texels in ", programs.poseTexelsInUniform ? "uniform" : "storage", " buffers) than this one (",
+    fail("RootMotionJob: the programs were built for another motion pair (",
+         programs.poseParents.size(), " joints, texels in ",
+         programs.poseTexelsInUniform ? "uniform" : "storage", " buffers) than this one (",
          motion->jointCount, " joints, ", motion->texelsInUniform ? "uniform" : "storage", ")");
   RootMotionPush push{};
   push.characterCount = crowd->count;
@@ -163,25 +180,30 @@ std::vector<std::string> PoseJob::validate() const {
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
   if (!joints || !*joints) problems.push_back("output 'joints' buffer is missing");
   if (motion && crowd && joints && *joints) {
-    if (firstCharacter > crowd->count) problems.push_back("firstCharacter is past the end of the crowd");
-    uint32_t count = characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
-    if (firstCharacter + count > crowd->count) problems.push_back("chunk runs past the end of the crowd");
+    if (firstCharacter > crowd->count)
+      problems.push_back("firstCharacter is past the end of the crowd");
+    uint32_t count =
+        characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
+    if (firstCharacter + count > crowd->count)
+      problems.push_back("chunk runs past the end of the crowd");
     if (characterList && (!listCounts || !dispatchArgs))
       problems.push_back("a 'characterList' needs its 'listCounts' and 'dispatchArgs'");
     VkDeviceSize need = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
     if (jointsOffset + need > joints->size())
-      problems.push_back(concat("output 'joints' holds ", joints->size(), " bytes, the chunk needs ", need,
-                                " at offset ", jointsOffset));
+      problems.push_back(concat("output 'joints' holds ", joints->size(),
+                                " bytes, the chunk needs ", need, " at offset ", jointsOffset));
   }
   return problems;
 }
 
 void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   throwIfInvalid("PoseJob", validate());
-  if (programs.poseParents != motion->parentsHost || programs.poseAnimatedOffsets != motion->animatedOffset ||
+  if (programs.poseParents != motion->parentsHost ||
+      programs.poseAnimatedOffsets != motion->animatedOffset ||
       programs.poseTexelsInUniform != motion->texelsInUniform)
-    fail("PoseJob: the pose program was specialized for another skeleton (", programs.poseParents.size(),
-         " joints) than the motion pair's (", motion->parentsHost.size(), " joints)");
+    fail("PoseJob: the pose program was specialized for another skeleton (",
+         programs.poseParents.size(), " joints) than the motion pair's (",
+         motion->parentsHost.size(), " joints)");
   uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
   PosePush push{};
   push.characterCount = count;
@@ -232,8 +254,10 @@ std::vector<std::string> MaterializeCachedJob::validate() const {
   if (crowd && firstCharacter + characterCount > crowd->count)
     problems.push_back("chunk runs past the end of the crowd");
   if (cache && joints && *joints &&
-      jointsOffset + VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix) > joints->size())
-    problems.push_back(concat("output 'joints' holds ", joints->size(), " bytes, too few for the chunk"));
+      jointsOffset + VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix) >
+          joints->size())
+    problems.push_back(
+        concat("output 'joints' holds ", joints->size(), " bytes, too few for the chunk"));
   return problems;
 }
 
@@ -247,9 +271,12 @@ void MaterializeCachedJob::record(VkCommandBuffer cmd, const SynthPrograms& prog
   push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
   VkDeviceSize bytes = VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix);
   gpu::Binding bindings[] = {
-      gpu::storageBinding(3, crowd->placement), gpu::storageBinding(4, crowd->motion),
-      gpu::storageBinding(5, *joints, jointsOffset, bytes), gpu::storageBinding(9, *poseSource),
-      gpu::storageBinding(10, cache->data), gpu::storageBinding(11, masks ? *masks : programs.noList),
+      gpu::storageBinding(3, crowd->placement),
+      gpu::storageBinding(4, crowd->motion),
+      gpu::storageBinding(5, *joints, jointsOffset, bytes),
+      gpu::storageBinding(9, *poseSource),
+      gpu::storageBinding(10, cache->data),
+      gpu::storageBinding(11, masks ? *masks : programs.noList),
   };
   gpu::dispatch(cmd, programs.poseCached, bindings, push, characterCount);
 }

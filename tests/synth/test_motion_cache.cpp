@@ -1,5 +1,6 @@
-// The motion cache: validity, segments, FIFO decisions and counters on a scripted sequence of
-// speeds (CPU twin and GPU, frame by frame), and cached output equal to synthesized output.
+// The motion cache: validity, rows, FIFO decisions and counters on a scripted sequence of
+// speeds (CPU twin and GPU, frame by frame), and cached output equal to synthesis at the cache
+// rows.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -45,26 +46,41 @@ TEST_CASE("CacheJob: validity") {
   job.cache = &disabled;
   problems = job.validate();
   CHECK(std::find(problems.begin(), problems.end(), "the cache is disabled") != problems.end());
-  CHECK_THROWS_WITH_AS(synth::validateCacheOptions({true, 0.0f, 1}), doctest::Contains("--bucket-width"), Error);
+  CHECK_THROWS_WITH_AS(synth::validateCacheOptions({true, 0.0f, 1}),
+                       doctest::Contains("--bucket-width"), Error);
 }
 
-TEST_CASE("cache segments: every (slow frame, fast frame) pair of a cycle has its own slot") {
-  for (auto [fs, ff] : {std::pair{23, 20}, std::pair{21, 21}, std::pair{30, 24}}) {
-    auto segments = synth::cacheSegments(fs, ff);
-    std::set<std::pair<int, int>> seen;
-    for (int k = 0; k < 4000; ++k) {
-      float phase = (k + 0.5f) / 4000.0f;
-      int a = anim::poseFrame(phase, fs), b = anim::poseFrame(phase, ff);
-      REQUIRE(segments[size_t(a + b)] == glm::ivec2(a, b));
-      seen.insert({a, b});
-    }
-    size_t used = 0;
-    for (auto& s : segments) used += s.x >= 0;
-    CHECK(used == seen.size());
+TEST_CASE(
+    "cache rows: dense in time, the nearest row within half a row of the phase, wrapping at 1") {
+  anim::MotionPair pair = builtInPair();
+  const uint32_t rows = synth::cacheRowCount(pair);
+  const float longest = std::max(pair.slow.duration(), pair.fast.duration());
+  CHECK(float(rows) >= synth::kCacheRowsPerSecond * longest);
+  CHECK(rows >= uint32_t(std::max(pair.slow.frameCount, pair.fast.frameCount)));
+  float worst = 0.0f;
+  for (int k = 0; k < 4000; ++k) {
+    float phase = (k + 0.37f) / 4000.0f;
+    uint32_t row = synth::cacheRow(phase, rows);
+    REQUIRE(row < rows);
+    float gap = std::abs(synth::cacheRowPhase(row, rows) - phase);
+    worst = std::max(worst, std::min(gap, 1.0f - gap));  // row 0 is also phase 1
   }
+  CHECK(worst <= 0.5f / float(rows) + 1e-6f);
+  CHECK(synth::cacheRow(0.9999999f, rows) == 0u);
+  CHECK(synth::cacheRow(0.0f, rows) == 0u);
 }
 
-TEST_CASE("motion cache: FIFO order, budget and exact counters on a scripted sequence (CPU twin and GPU)") {
+namespace {
+// The crowd with each phase moved to the phase of its nearest cache row: what the cache shows.
+crowd::Crowd atCacheRows(crowd::Crowd crowd, uint32_t rows) {
+  for (glm::vec4& m : crowd.motion) m.x = synth::cacheRowPhase(synth::cacheRow(m.x, rows), rows);
+  return crowd;
+}
+}  // namespace
+
+TEST_CASE(
+    "motion cache: FIFO order, budget and exact counters on a scripted sequence (CPU twin and "
+    "GPU)") {
   gpu::Context& ctx = test::gpuContext();
   anim::MotionPair pair = builtInPair();
   synth::MotionCacheOptions options;
@@ -95,8 +111,12 @@ TEST_CASE("motion cache: FIFO order, budget and exact counters on a scripted seq
   std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
   for (const Step& step : script) {
     crowd = crowdAt(step.speeds, 64);
-    gpu::uploadBytes(ctx, gpu.crowd.motion, {reinterpret_cast<const uint8_t*>(crowd.motion.data()), crowd.motion.size() * 16});
-    gpu::uploadBytes(ctx, gpu.crowd.placement, {reinterpret_cast<const uint8_t*>(crowd.placement.data()), crowd.placement.size() * 16});
+    gpu::uploadBytes(
+        ctx, gpu.crowd.motion,
+        {reinterpret_cast<const uint8_t*>(crowd.motion.data()), crowd.motion.size() * 16});
+    gpu::uploadBytes(
+        ctx, gpu.crowd.placement,
+        {reinterpret_cast<const uint8_t*>(crowd.placement.data()), crowd.placement.size() * 16});
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       synth::recordSynthesis(cmd, programs, gpu, 0.0f, 1u << 27);
       synth::recordMaterializeCachedPoses(cmd, programs, gpu, 1u << 27);
@@ -111,18 +131,23 @@ TEST_CASE("motion cache: FIFO order, budget and exact counters on a scripted seq
     CHECK(g.evictions == c.evictions);
     CHECK(g.entries == c.entries);
     CHECK(g.bytesUsed <= options.budgetBytes);
-    // Cached output: GPU equals the CPU twin, and both equal plain synthesis at that speed.
+    // Cached output: GPU equals the CPU twin, and both equal plain synthesis at that speed and
+    // the phase of the cache row shown.
     synth::poseCrowdCpuCached(pair, cpu, crowd, cpuJoints, 2);
     std::vector<synth::JointMatrix> direct(cpuJoints.size());
-    synth::poseCrowdCpu(pair, crowd, direct, 2);
+    synth::poseCrowdCpu(pair, atCacheRows(crowd, cpu.rows()), direct, 2);
     auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpu.joints, cpuJoints.size());
-    CHECK(test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12) <= 1e-4f);
-    CHECK(test::maxAbsDifference(&direct[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12) <= 1e-4f);
+    CHECK(test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x,
+                                 cpuJoints.size() * 12) <= 1e-4f);
+    CHECK(test::maxAbsDifference(&direct[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12) <=
+          1e-4f);
   }
   CHECK(ctx.validationMessageCount() == 0);
 }
 
-TEST_CASE("motion cache: a crowd over many frames matches the uncached path at bucketed speeds") {
+TEST_CASE(
+    "motion cache: a crowd over many frames shows synthesis at its rows, close to the uncached "
+    "path") {
   gpu::Context& ctx = test::gpuContext();
   anim::MotionPair pair = builtInPair();
   synth::MotionCacheOptions options;
@@ -145,15 +170,26 @@ TEST_CASE("motion cache: a crowd over many frames matches the uncached path at b
   // each points at its cache entry.
   auto sources = gpu::readback<uint32_t>(ctx, cached.poseSource, crowd.size());
   CHECK(std::count(sources.begin(), sources.end(), gpu_types::kPoseInJoints) == 0);
-  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordMaterializeCachedPoses(cmd, programs, cached, 1u << 27); });
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    synth::recordMaterializeCachedPoses(cmd, programs, cached, 1u << 27);
+  });
   size_t n = crowd.size() * pair.jointCount();
   auto a = gpu::readback<synth::JointMatrix>(ctx, cached.joints, n);
   auto b = gpu::readback<synth::JointMatrix>(ctx, plain.joints, n);
-  float worst = test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12);
+  // The cache shows the row nearest each phase: equal to the CPU twin synthesizing at that
+  // row's phase, and within half a row's motion (1/960 s) of the continuous pose.
+  crowd::Crowd state;
+  crowd::downloadCrowd(ctx, cached.crowd, state);
+  std::vector<synth::JointMatrix> atRows(n);
+  synth::poseCrowdCpu(pair, atCacheRows(state, cached.cache.rowCount), atRows, 2);
+  float worst = test::maxAbsDifference(&a[0].row0.x, &atRows[0].row0.x, n * 12);
+  float offRow = test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12);
   synth::MotionCacheStats stats = synth::readCacheStats(cached.cache);
-  MESSAGE("cache vs no cache over 5 frames: max diff ", worst, "; hits ", stats.hits, " misses ", stats.misses,
+  MESSAGE("cache vs synthesis at the cache rows over 5 frames: max diff ", worst,
+          "; vs the continuous phase ", offRow, "; hits ", stats.hits, " misses ", stats.misses,
           " entries ", stats.entries, " bytes ", stats.bytesUsed);
   CHECK(worst <= 1e-4f);
+  CHECK(offRow <= 0.03f);
   CHECK(stats.misses == 21);  // every bucket of width 0.05 once
   CHECK(stats.hits == 4 * 21);
   CHECK(stats.bytesUsed <= stats.budgetBytes);

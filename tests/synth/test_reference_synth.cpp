@@ -13,15 +13,19 @@
 using namespace throng;
 
 namespace {
-float quatDistance(glm::vec4 a, glm::vec4 b) { return std::min(glm::length(a - b), glm::length(a + b)); }
+float quatDistance(glm::vec4 a, glm::vec4 b) {
+  return std::min(glm::length(a - b), glm::length(a + b));
+}
 }  // namespace
 
 TEST_CASE("series slerp stays within 1e-5 of true slerp and keeps slerp's properties") {
   Rng rng(3);
   float worst = 0.0f;
   for (int i = 0; i < 20000; ++i) {
-    glm::vec4 a = glm::normalize(glm::vec4(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
-    glm::vec4 b = glm::normalize(glm::vec4(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+    glm::vec4 a = glm::normalize(
+        glm::vec4(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
+    glm::vec4 b = glm::normalize(
+        glm::vec4(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1)));
     float t = rng.uniform();
     worst = std::max(worst, glm::length(slerpFast(a, b, t) - slerpShortest(a, b, t)));
     REQUIRE(quatDistance(slerpFast(a, b, 0.0f), a) < 1e-6f);
@@ -36,26 +40,42 @@ TEST_CASE("series slerp stays within 1e-5 of true slerp and keeps slerp's proper
   CHECK(quatDistance(mid, glm::normalize(glm::vec4(0, std::sin(0.1f), 0, std::cos(0.1f)))) < 1e-5f);
   // Constant angular speed: the angle to a grows linearly with t.
   glm::vec4 c = glm::normalize(glm::vec4(std::sin(1.0f), 0, 0, std::cos(1.0f)));
-  for (float t : {0.25f, 0.5f, 0.75f}) CHECK(2.0f * std::acos(slerpFast(glm::vec4(0, 0, 0, 1), c, t).w) == doctest::Approx(2.0f * t).epsilon(1e-4));
+  for (float t : {0.25f, 0.5f, 0.75f})
+    CHECK(2.0f * std::acos(slerpFast(glm::vec4(0, 0, 0, 1), c, t).w) ==
+          doctest::Approx(2.0f * t).epsilon(1e-4));
 }
 
-TEST_CASE("w = 0 and w = 1 reproduce the slow and fast clips exactly") {
+namespace {
+// Joint j's local rotation recovered from a character-space pose.
+glm::vec4 localRotation(const anim::MotionPair& pair, const std::vector<anim::PoseJoint>& pose,
+                        int j) {
+  int p = pair.parents[size_t(j)];
+  if (p < 0) return pose[size_t(j)].rotation;
+  glm::vec4 parent = pose[size_t(p)].rotation;
+  return quatMul(glm::vec4(-glm::vec3(parent), parent.w), pose[size_t(j)].rotation);
+}
+}  // namespace
+
+TEST_CASE("w = 0 and w = 1 reproduce the slow and fast clips: their rows, and slerp between rows") {
   anim::MotionPair pair = test::syntheticPair(10, 20, 16, 9);
   std::vector<anim::PoseJoint> pose(10);
-  for (int f : {0, 5, 13}) {
-    float phase = (f + 0.5f) / 20.0f;
-    anim::poseCharacterSpace(pair, phase, 0.0f, pose);
-    for (int j = 0; j < 10; ++j) {
-      int p = pair.parents[j];
-      glm::vec4 local = p < 0 ? pose[j].rotation : quatMul(glm::vec4(-glm::vec3(pose[p].rotation), pose[p].rotation.w), pose[j].rotation);
-      REQUIRE(quatDistance(local, pair.slow.rotation(f, j)) < 1e-5f);
-    }
-    int ff = static_cast<int>(phase * 16);
-    anim::poseCharacterSpace(pair, phase, 1.0f, pose);
-    for (int j = 0; j < 10; ++j) {
-      int p = pair.parents[j];
-      glm::vec4 local = p < 0 ? pose[j].rotation : quatMul(glm::vec4(-glm::vec3(pose[p].rotation), pose[p].rotation.w), pose[j].rotation);
-      REQUIRE(quatDistance(local, pair.fast.rotation(ff, j)) < 1e-5f);
+  for (float w : {0.0f, 1.0f}) {
+    const anim::MotionTexture& clip = w == 0.0f ? pair.slow : pair.fast;
+    const int frames = clip.frameCount;
+    for (int f : {0, 5, 13, frames - 1}) {
+      CAPTURE(w);
+      CAPTURE(f);
+      // On a row the pose is that row; half way to the next (row 0 after the last: the clip is
+      // a cycle) it is the slerp of the two.
+      anim::poseCharacterSpace(pair, float(f) / float(frames), w, pose);
+      for (int j = 0; j < 10; ++j)
+        REQUIRE(quatDistance(localRotation(pair, pose, j), clip.rotation(f, j)) < 1e-5f);
+      anim::poseCharacterSpace(pair, (float(f) + 0.5f) / float(frames), w, pose);
+      const int next = (f + 1) % frames;
+      for (int j = 0; j < 10; ++j) {
+        glm::vec4 half = slerpShortest(clip.rotation(f, j), clip.rotation(next, j), 0.5f);
+        REQUIRE(quatDistance(localRotation(pair, pose, j), half) < 2e-5f);
+      }
     }
   }
 }
@@ -70,7 +90,8 @@ TEST_CASE("root motion: one cycle travels the blended distance along the heading
       // A hair over one cycle, so float rounding cannot leave the phase just short of the wrap.
       int steps = 60;
       for (int s = 0; s < steps; ++s)
-        anim::stepCharacter(pair, placement, motion, 1.0001f * duration / steps, anim::Steering::KeepHeading);
+        anim::stepCharacter(pair, placement, motion, 1.0001f * duration / steps,
+                            anim::Steering::KeepHeading);
       glm::vec3 travel = pair.slow.cycleTravel * (1 - w) + pair.fast.cycleTravel * w;
       glm::vec2 expected(travel.z * std::sin(heading), travel.z * std::cos(heading));
       CHECK(placement.x == doctest::Approx(expected.x).epsilon(0.02).scale(1.0));
@@ -104,7 +125,8 @@ TEST_CASE("root motion: scale multiplies the displacement; circle steering keeps
   }
   CHECK(large.z == doctest::Approx(1.2f * small.z).epsilon(1e-4));
   glm::vec4 runner(20.0f, 0, 0, 0), m(0, 1.0f, 1.0f, 1.0f);
-  for (int s = 0; s < 600; ++s) anim::stepCharacter(pair, runner, m, 1 / 30.0f, anim::Steering::Circle);
+  for (int s = 0; s < 600; ++s)
+    anim::stepCharacter(pair, runner, m, 1 / 30.0f, anim::Steering::Circle);
   CHECK(std::hypot(runner.x, runner.z) == doctest::Approx(20.0f).epsilon(0.03));
 }
 
@@ -124,7 +146,8 @@ TEST_CASE("no foot skate: with w fixed the planted foot stays put (built-in run)
       anim::poseCharacterSpace(pair, motion.x, motion.y, pose);
       glm::vec3 local = pose[toe].position;
       float c = std::cos(placement.w), sn = std::sin(placement.w);
-      toeWorld.push_back(glm::vec3(placement.x + local.x * c + local.z * sn, local.y, placement.z - local.x * sn + local.z * c));
+      toeWorld.push_back(glm::vec3(placement.x + local.x * c + local.z * sn, local.y,
+                                   placement.z - local.x * sn + local.z * c));
     }
     float lowest = 1e9f;
     for (auto& p : toeWorld) lowest = std::min(lowest, p.y);
@@ -134,10 +157,13 @@ TEST_CASE("no foot skate: with w fixed the planted foot stays put (built-in run)
     for (size_t s = 1; s < toeWorld.size(); ++s) {
       if (toeWorld[s].y < lowest + 0.01f && toeWorld[s - 1].y < lowest + 0.01f) {
         ++planted;
-        worstDrift = std::max(worstDrift, glm::length(glm::vec2(toeWorld[s].x - toeWorld[s - 1].x, toeWorld[s].z - toeWorld[s - 1].z)));
+        worstDrift =
+            std::max(worstDrift, glm::length(glm::vec2(toeWorld[s].x - toeWorld[s - 1].x,
+                                                       toeWorld[s].z - toeWorld[s - 1].z)));
       }
     }
-    MESSAGE("w = ", w, ": ", planted, " planted frame pairs, worst toe drift per frame ", worstDrift * 100.0f, " cm");
+    MESSAGE("w = ", w, ": ", planted, " planted frame pairs, worst toe drift per frame ",
+            worstDrift * 100.0f, " cm");
     CHECK(planted >= 2);
     CHECK(worstDrift < 0.03f);
   }
