@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fresh machine → all tests: installs the packages, builds, runs every suite (GPU suites on
-# lavapipe with two threads and the Khronos validation layer), then the CPU suites again under
-# AddressSanitizer + UndefinedBehaviorSanitizer.
+# lavapipe with two threads, the Khronos validation layer and a random test order), then the CPU
+# suites again under AddressSanitizer + UndefinedBehaviorSanitizer, then every libFuzzer harness
+# for THRONG_FUZZ_SECONDS (default 30) seconds each: any finding fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -12,3 +13,4 @@ ctest --preset release -j1
 cmake --preset asan
 cmake --build --preset asan -j"$jobs" --target throng $(ctest --test-dir build-asan -N -L cpu 2>/dev/null | sed -n 's/^ *Test *#[0-9]*: *//p')
 ctest --preset asan-cpu -j1
+./scripts/fuzz.sh "${THRONG_FUZZ_SECONDS:-30}"
