@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
+#include "gpu/limits.h"
 #include "gpu/vk_check.h"
 
 namespace throng::gpu {
@@ -24,7 +25,7 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
       use == MemoryUse::HostVisible
           ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
           : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  memory_ = context.allocateMemory(requirements, flags);
+  memory_ = context.allocateMemory(requirements, flags, concat("a buffer of ", size, " bytes"));
   VK_CHECK(vkBindBufferMemory(device, buffer, memory_, 0));
   if (use == MemoryUse::HostVisible)
     VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
@@ -51,9 +52,8 @@ VkDeviceSize texelBytes(VkFormat format) {
 Handle<VkBufferView> makeBufferView(const Context& context, const Buffer& buffer, VkFormat format) {
   VkDevice device = context.device();
   const VkDeviceSize texels = buffer.size() / texelBytes(format);
-  if (texels > context.info().maxTexelBufferElements)
-    fail("a buffer of ", texels, " texels exceeds ", context.info().name, "'s limit of ",
-         context.info().maxTexelBufferElements, " texels per texel buffer");
+  checkLimit(context, concat("a texel buffer view of ", buffer.size(), " bytes"),
+             "maxTexelBufferElements", texels, context.info().maxTexelBufferElements, "texels");
   VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
   info.buffer = buffer.get();
   info.format = format;

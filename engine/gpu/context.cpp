@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "gpu/limits.h"
 #include "gpu/vk_check.h"
 
 namespace throng::gpu {
@@ -20,7 +21,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFl
                                                    const VkDebugUtilsMessengerCallbackDataEXT* data,
                                                    void* user) {
   if (severity < VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) return VK_FALSE;
-  static_cast<std::atomic<uint32_t>*>(user)->fetch_add(1);
+  static_cast<ValidationLog*>(user)->add(data->pMessageIdName);
   std::fprintf(stderr, "vulkan validation: %s\n", data->pMessage);
   return VK_FALSE;
 }
@@ -40,17 +41,23 @@ bool layerAvailable(const char* name) {
   VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
   std::vector<VkLayerProperties> layers(count);
   VK_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
-  return std::any_of(layers.begin(), layers.end(),
-                     [&](const VkLayerProperties& l) { return std::strcmp(l.layerName, name) == 0; });
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, name) == 0;
+  });
 }
 
 int typeRank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-    default: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 1;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 3;
+    default:
+      return 4;
   }
 }
 
@@ -58,18 +65,30 @@ struct Candidate {
   VkPhysicalDevice device;
   VkPhysicalDeviceProperties properties;
   VkPhysicalDeviceDriverProperties driver;
+  VkPhysicalDeviceMaintenance3Properties maintenance3;
 };
 
-std::vector<Candidate> enumerateCandidates(VkInstance instance) {
+// The instance functions device enumeration needs: volk's for a context's own instance, the
+// temporary instance's own for listDevices().
+struct InstanceFunctions {
+  PFN_vkEnumeratePhysicalDevices enumeratePhysicalDevices;
+  PFN_vkGetPhysicalDeviceProperties2 getPhysicalDeviceProperties2;
+};
+
+std::vector<Candidate> enumerateCandidates(VkInstance instance, const InstanceFunctions& vk) {
   uint32_t count = 0;
-  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  VK_CHECK(vk.enumeratePhysicalDevices(instance, &count, nullptr));
   std::vector<VkPhysicalDevice> devices(count);
-  VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, devices.data()));
+  VK_CHECK(vk.enumeratePhysicalDevices(instance, &count, devices.data()));
   std::vector<Candidate> result;
   for (VkPhysicalDevice d : devices) {
-    Candidate c{d, {}, {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES}};
+    Candidate c{d,
+                {},
+                {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES},
+                {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES}};
+    c.driver.pNext = &c.maintenance3;
     VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &c.driver};
-    vkGetPhysicalDeviceProperties2(d, &props);
+    vk.getPhysicalDeviceProperties2(d, &props);
     c.properties = props.properties;
     if (c.properties.apiVersion < VK_API_VERSION_1_2) continue;
     result.push_back(c);
@@ -78,7 +97,8 @@ std::vector<Candidate> enumerateCandidates(VkInstance instance) {
 }
 
 const Candidate& chooseDevice(const std::vector<Candidate>& candidates, const std::string& wanted) {
-  if (candidates.empty()) fail("no Vulkan 1.2 device found (install mesa-vulkan-drivers for lavapipe)");
+  if (candidates.empty())
+    fail("no Vulkan 1.2 device found (install mesa-vulkan-drivers for lavapipe)");
   if (!wanted.empty()) {
     char* end = nullptr;
     long index = std::strtol(wanted.c_str(), &end, 10);
@@ -94,9 +114,10 @@ const Candidate& chooseDevice(const std::vector<Candidate>& candidates, const st
     for (const Candidate& c : candidates) names += concat("\n  ", c.properties.deviceName);
     fail("no Vulkan device matches '", wanted, "'; available:", names);
   }
-  return *std::min_element(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    return typeRank(a.properties.deviceType) < typeRank(b.properties.deviceType);
-  });
+  return *std::min_element(
+      candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+        return typeRank(a.properties.deviceType) < typeRank(b.properties.deviceType);
+      });
 }
 
 void loadVolk() {
@@ -106,31 +127,90 @@ void loadVolk() {
   loaded = true;
 }
 
+bool layerHasExtension(const char* layer, const char* extension) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateInstanceExtensionProperties(layer, &count, nullptr));
+  std::vector<VkExtensionProperties> extensions(count);
+  VK_CHECK(vkEnumerateInstanceExtensionProperties(layer, &count, extensions.data()));
+  return std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, extension) == 0;
+  });
+}
+
+template <typename Pfn>
+Pfn instanceFunction(VkInstance instance, const char* name) {
+  auto function = reinterpret_cast<Pfn>(vkGetInstanceProcAddr(instance, name));
+  if (!function) fail("the Vulkan loader has no ", name);
+  return function;
+}
+
 }  // namespace
 
+void ValidationLog::add(const char* id) {
+  count_.fetch_add(1);
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (ids_.size() < kKeptIds) ids_.emplace_back(id ? id : "");
+}
+
+std::vector<std::string> ValidationLog::ids() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return ids_;
+}
+
 Context::Context(const ContextOptions& options)
-    : validationMessages_(std::make_unique<std::atomic<uint32_t>>(0)) {
+    : validationLog_(std::make_unique<ValidationLog>()) {
   loadVolk();
+  try {
+    createInstance(options);
+    choosePhysicalDevice(options);
+    createDevice(options);
+  } catch (...) {
+    destroy();  // a failed constructor runs no destructor
+    throw;
+  }
+  if (!options.quiet) {
+    logInfo(concat("vulkan device: ", info_.name, " (driver ", info_.driver, ")",
+                   validation_ ? (syncValidation_ ? ", validation on (with synchronization)"
+                                                  : ", validation on")
+                               : ""));
+  }
+}
+
+void Context::createInstance(const ContextOptions& options) {
   validation_ = options.validation || envFlag("THRONG_VALIDATION");
   if (validation_ && !layerAvailable(kValidationLayer))
-    fail("validation requested but ", kValidationLayer, " is not installed (vulkan-validationlayers)");
+    fail("validation requested but ", kValidationLayer,
+         " is not installed (vulkan-validationlayers)");
+  const char* syncEnv = std::getenv("THRONG_SYNC_VALIDATION");
+  syncValidation_ = validation_ && options.syncValidation &&
+                    !(syncEnv && std::strcmp(syncEnv, "0") == 0) &&
+                    layerHasExtension(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
 
   std::vector<const char*> extensions;
   for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
   if (validation_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  if (syncValidation_) extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
 
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = "throng";
   app.pEngineName = "throng";
   app.apiVersion = VK_API_VERSION_1_2;
-  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
   messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
                                   VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
   messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
                               VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                               VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
   messengerInfo.pfnUserCallback = onValidationMessage;
-  messengerInfo.pUserData = validationMessages_.get();
+  messengerInfo.pUserData = validationLog_.get();
+  // The installed layer ignores VK_KHRONOS_VALIDATION_VALIDATE_SYNC; the feature struct works.
+  const VkValidationFeatureEnableEXT syncFeature =
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = &syncFeature;
+  if (syncValidation_) messengerInfo.pNext = &features;
 
   VkInstanceCreateInfo instanceInfo{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   instanceInfo.pApplicationInfo = &app;
@@ -142,28 +222,47 @@ Context::Context(const ContextOptions& options)
     instanceInfo.pNext = &messengerInfo;  // also catches instance creation messages
   }
   VK_CHECK(vkCreateInstance(&instanceInfo, nullptr, &instance_));
-  volkLoadInstanceOnly(instance_);
-  if (validation_) VK_CHECK(vkCreateDebugUtilsMessengerEXT(instance_, &messengerInfo, nullptr, &messenger_));
+  // Instance and device functions through the loader's trampolines, which dispatch on the
+  // handle: correct for every live context, unlike one device's direct pointers.
+  volkLoadInstance(instance_);
+  if (validation_) {
+    auto create = instanceFunction<PFN_vkCreateDebugUtilsMessengerEXT>(
+        instance_, "vkCreateDebugUtilsMessengerEXT");
+    destroyMessenger_ = instanceFunction<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        instance_, "vkDestroyDebugUtilsMessengerEXT");
+    messengerInfo.pNext = nullptr;
+    VK_CHECK(create(instance_, &messengerInfo, nullptr, &messenger_));
+  }
+}
 
+void Context::choosePhysicalDevice(const ContextOptions& options) {
   std::string wanted = options.device;
   if (wanted.empty() && std::getenv("THRONG_DEVICE")) wanted = std::getenv("THRONG_DEVICE");
-  std::vector<Candidate> candidates = enumerateCandidates(instance_);
+  std::vector<Candidate> candidates =
+      enumerateCandidates(instance_, {vkEnumeratePhysicalDevices, vkGetPhysicalDeviceProperties2});
   const Candidate& chosen = chooseDevice(candidates, wanted);
   physical_ = chosen.device;
+  const VkPhysicalDeviceLimits& limits = chosen.properties.limits;
   info_.name = chosen.properties.deviceName;
   info_.driver = concat(chosen.driver.driverName, " ", chosen.driver.driverInfo);
   info_.type = chosen.properties.deviceType;
-  info_.timestampPeriodNs = chosen.properties.limits.timestampPeriod;
-  info_.maxStorageBufferRange = chosen.properties.limits.maxStorageBufferRange;
-  info_.maxUniformBufferRange = chosen.properties.limits.maxUniformBufferRange;
-  info_.maxTexelBufferElements = chosen.properties.limits.maxTexelBufferElements;
-  VkPhysicalDeviceMemoryProperties memory{};
-  vkGetPhysicalDeviceMemoryProperties(physical_, &memory);
-  for (uint32_t h = 0; h < memory.memoryHeapCount; ++h)
-    if (memory.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
-      info_.deviceLocalBytes = std::max<uint64_t>(info_.deviceLocalBytes, memory.memoryHeaps[h].size);
+  info_.timestampPeriodNs = limits.timestampPeriod;
+  info_.maxStorageBufferRange = limits.maxStorageBufferRange;
+  info_.maxUniformBufferRange = limits.maxUniformBufferRange;
+  info_.maxTexelBufferElements = limits.maxTexelBufferElements;
+  info_.maxImageDimension2D = limits.maxImageDimension2D;
+  info_.maxFramebufferWidth = limits.maxFramebufferWidth;
+  info_.maxFramebufferHeight = limits.maxFramebufferHeight;
+  for (int i = 0; i < 3; ++i)
+    info_.maxComputeWorkGroupCount[i] = limits.maxComputeWorkGroupCount[i];
+  info_.maxMemoryAllocationSize = chosen.maintenance3.maxMemoryAllocationSize;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
-  VkPhysicalDeviceVulkan12Features supported12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  for (uint32_t h = 0; h < memory_.memoryHeapCount; ++h)
+    if (memory_.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+      info_.deviceLocalBytes =
+          std::max<uint64_t>(info_.deviceLocalBytes, memory_.memoryHeaps[h].size);
+  VkPhysicalDeviceVulkan12Features supported12{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
   VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
   vkGetPhysicalDeviceFeatures2(physical_, &supported);
   info_.int64Atomics = supported.features.shaderInt64 && supported12.shaderBufferInt64Atomics;
@@ -180,8 +279,11 @@ Context::Context(const ContextOptions& options)
       break;
     }
   }
-  if (queueFamily_ == UINT32_MAX) fail(info_.name, ": no queue family with graphics, compute and timestamps");
+  if (queueFamily_ == UINT32_MAX)
+    fail(info_.name, ": no queue family with graphics, compute and timestamps");
+}
 
+void Context::createDevice(const ContextOptions& options) {
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queueInfo.queueFamilyIndex = queueFamily_;
@@ -210,43 +312,60 @@ Context::Context(const ContextOptions& options)
   deviceInfo.enabledExtensionCount = static_cast<uint32_t>(deviceExtensions.size());
   deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
   VK_CHECK(vkCreateDevice(physical_, &deviceInfo, nullptr, &device_));
-  volkLoadDevice(device_);
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-
-  if (!options.quiet) {
-    logInfo(concat("vulkan device: ", info_.name, " (driver ", info_.driver, ")",
-                   validation_ ? ", validation on" : ""));
-  }
 }
 
-Context::~Context() {
+void Context::destroy() {
   if (device_) {
     vkDeviceWaitIdle(device_);
     vkDestroyDevice(device_, nullptr);
+    device_ = VK_NULL_HANDLE;
   }
-  if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (messenger_) destroyMessenger_(instance_, messenger_, nullptr);
+  messenger_ = VK_NULL_HANDLE;
   if (instance_) vkDestroyInstance(instance_, nullptr);
+  instance_ = VK_NULL_HANDLE;
+}
+
+Context::~Context() {
+  destroy();
 }
 
 uint32_t Context::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags wanted) const {
   for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
-    if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+    if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & wanted) == wanted)
+      return i;
   }
-  fail("no Vulkan memory type with flags ", wanted, " for type bits ", typeBits, " on ", info_.name);
+  fail("no Vulkan memory type with flags ", wanted, " for type bits ", typeBits, " on ",
+       info_.name);
 }
 
 Handle<VkDeviceMemory> Context::allocateMemory(const VkMemoryRequirements& requirements,
-                                              VkMemoryPropertyFlags wanted) const {
+                                               VkMemoryPropertyFlags wanted,
+                                               const std::string& what) const {
   VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   alloc.allocationSize = requirements.size;
   alloc.memoryTypeIndex = findMemoryType(requirements.memoryTypeBits, wanted);
+  const uint32_t heap = memory_.memoryTypes[alloc.memoryTypeIndex].heapIndex;
+  checkLimit(*this, what, "maxMemoryAllocationSize", requirements.size,
+             info_.maxMemoryAllocationSize);
+  checkLimit(*this, what, concat("memory heap ", heap, " size"), requirements.size,
+             memory_.memoryHeaps[heap].size);
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory));
+  VkResult result = vkAllocateMemory(device_, &alloc, nullptr, &memory);
+  if (result == VK_ERROR_OUT_OF_DEVICE_MEMORY || result == VK_ERROR_OUT_OF_HOST_MEMORY)
+    throw LimitError(concat(what, " (", vkResultName(result), ")"),
+                     concat("free memory in heap ", heap), requirements.size,
+                     memory_.memoryHeaps[heap].size, "bytes", info_.name);
+  VK_CHECK(result);
   VkDevice device = device_;
-  return Handle<VkDeviceMemory>(memory, [device](VkDeviceMemory m) { vkFreeMemory(device, m, nullptr); });
+  return Handle<VkDeviceMemory>(memory,
+                                [device](VkDeviceMemory m) { vkFreeMemory(device, m, nullptr); });
 }
 
-void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+void Context::waitIdle() const {
+  VK_CHECK(vkDeviceWaitIdle(device_));
+}
 
 std::vector<std::string> listDevices() {
   loadVolk();
@@ -256,12 +375,24 @@ std::vector<std::string> listDevices() {
   info.pApplicationInfo = &app;
   VkInstance instance = VK_NULL_HANDLE;
   VK_CHECK(vkCreateInstance(&info, nullptr, &instance));
-  volkLoadInstanceOnly(instance);
+  // This instance's entry points, not volk's globals: loading them would replace the pointers
+  // every live context uses (a null vkDestroyDebugUtilsMessengerEXT among them).
+  auto destroyInstance = instanceFunction<PFN_vkDestroyInstance>(instance, "vkDestroyInstance");
   std::vector<std::string> names;
-  int index = 0;
-  for (const Candidate& c : enumerateCandidates(instance))
-    names.push_back(concat(index++, ": ", c.properties.deviceName, " (", c.driver.driverName, ")"));
-  vkDestroyInstance(instance, nullptr);
+  try {
+    InstanceFunctions functions{
+        instanceFunction<PFN_vkEnumeratePhysicalDevices>(instance, "vkEnumeratePhysicalDevices"),
+        instanceFunction<PFN_vkGetPhysicalDeviceProperties2>(instance,
+                                                             "vkGetPhysicalDeviceProperties2")};
+    int index = 0;
+    for (const Candidate& c : enumerateCandidates(instance, functions))
+      names.push_back(
+          concat(index++, ": ", c.properties.deviceName, " (", c.driver.driverName, ")"));
+  } catch (...) {
+    destroyInstance(instance, nullptr);
+    throw;
+  }
+  destroyInstance(instance, nullptr);
   return names;
 }
 

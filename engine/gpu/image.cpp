@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "gpu/buffer.h"
 #include "gpu/commands.h"
+#include "gpu/limits.h"
 #include "gpu/vk_check.h"
 
 namespace throng::gpu {
@@ -13,6 +14,9 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
                  VkImageUsageFlags usage, VkImageAspectFlags aspect)
     : format_(format), width_(width), height_(height), aspect_(aspect) {
   THRONG_CHECK(width > 0 && height > 0, "image size must be positive, got ", width, "x", height);
+  const bool attachment = (usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) != 0;
+  checkImageSize(context, concat("a ", width, "x", height, " image"), width, height, attachment);
   VkDevice device = context.device();
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
@@ -30,7 +34,8 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
 
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(device, image, &requirements);
-  memory_ = context.allocateMemory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  memory_ = context.allocateMemory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                                   concat("a ", width, "x", height, " image"));
   VK_CHECK(vkBindImageMemory(device, image, memory_, 0));
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -40,12 +45,14 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
   viewInfo.subresourceRange = {aspect, 0, 1, 0, 1};
   VkImageView view = VK_NULL_HANDLE;
   VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
-  view_ = Handle<VkImageView>(view, [device](VkImageView v) { vkDestroyImageView(device, v, nullptr); });
+  view_ = Handle<VkImageView>(view,
+                              [device](VkImageView v) { vkDestroyImageView(device, v, nullptr); });
 }
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                      VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
-                     VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+                     VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                     VkAccessFlags dstAccess) {
   VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
   barrier.srcAccessMask = srcAccess;
   barrier.dstAccessMask = dstAccess;
@@ -68,7 +75,8 @@ void uploadImage(const Context& context, const Image2D& image, std::span<const u
     VkBufferImageCopy region{};
     region.imageSubresource = {image.aspect(), 0, 0, 1};
     region.imageExtent = {image.width(), image.height(), 1};
-    vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region);
     transitionImage(cmd, image.get(), image.aspect(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                     VK_ACCESS_TRANSFER_WRITE_BIT,
@@ -87,7 +95,8 @@ Handle<VkSampler> makeNearestSampler(const Context& context) {
   VkDevice device = context.device();
   VkSampler sampler = VK_NULL_HANDLE;
   VK_CHECK(vkCreateSampler(device, &info, nullptr, &sampler));
-  return Handle<VkSampler>(sampler, [device](VkSampler s) { vkDestroySampler(device, s, nullptr); });
+  return Handle<VkSampler>(sampler,
+                           [device](VkSampler s) { vkDestroySampler(device, s, nullptr); });
 }
 
 }  // namespace throng::gpu

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "gpu/limits.h"
 #include "gpu/vk_check.h"
 #include "shaders/embedded.h"
 
@@ -14,6 +15,7 @@ Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset,
   b.slot = slot;
   b.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
   b.buffer = {buffer.get(), offset, range};
+  b.bufferSize = buffer.size();
   return b;
 }
 
@@ -54,6 +56,9 @@ Handle<VkShaderModule> makeShaderModule(const Context& context, std::span<const 
 PipelineLayout makePipelineLayout(const Context& context, std::span<const ShaderReflection> shaders,
                                   const std::string& name) {
   PipelineLayout out;
+  out.maxStorageBufferRange = context.info().maxStorageBufferRange;
+  out.maxUniformBufferRange = context.info().maxUniformBufferRange;
+  out.deviceName = context.info().name;
   for (const ShaderReflection& s : shaders) {
     out.stages |= s.stage;
     out.pushConstantSize = std::max(out.pushConstantSize, s.pushConstantSize);
@@ -94,6 +99,32 @@ PipelineLayout makePipelineLayout(const Context& context, std::span<const Shader
   return out;
 }
 
+namespace {
+// The range a buffer binding covers, against the device's limit for its descriptor type
+// (VUID-VkWriteDescriptorSet-descriptorType-00332/00333).
+void checkBufferRange(const PipelineLayout& layout, const Binding& given, VkDescriptorType type,
+                      const std::string& name) {
+  const VkDescriptorBufferInfo& b = given.buffer;
+  VkDeviceSize range = b.range;
+  if (range == VK_WHOLE_SIZE) {
+    if (given.bufferSize == 0) return;  // a raw VkBuffer of unknown size
+    if (b.offset >= given.bufferSize)
+      fail(name, ": binding ", given.slot, " starts at ", b.offset, ", past its buffer of ",
+           given.bufferSize, " bytes");
+    range = given.bufferSize - b.offset;
+  } else if (given.bufferSize > 0 && b.offset + range > given.bufferSize) {
+    fail(name, ": binding ", given.slot, " range ", b.offset, "+", range,
+         " overflows its buffer of ", given.bufferSize, " bytes");
+  }
+  const bool storage = type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const uint64_t limit = storage ? layout.maxStorageBufferRange : layout.maxUniformBufferRange;
+  if (range > limit)
+    throw LimitError(concat(name, " binding ", given.slot),
+                     storage ? "maxStorageBufferRange" : "maxUniformBufferRange", range, limit,
+                     "bytes", layout.deviceName);
+}
+}  // namespace
+
 void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const PipelineLayout& layout,
                   std::span<const Binding> bindings, const std::string& name) {
   std::vector<VkWriteDescriptorSet> writes;
@@ -113,6 +144,7 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
         declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
       if (given->buffer.buffer == VK_NULL_HANDLE)
         fail(name, ": binding ", declared.binding, " has a null buffer");
+      checkBufferRange(layout, *given, declared.type, name);
       write.pBufferInfo = &given->buffer;
     } else if (declared.type == VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER ||
                declared.type == VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER) {
@@ -132,7 +164,7 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
 
 ComputeProgram::ComputeProgram(const Context& context, const std::string& shaderFile,
                                std::span<const uint32_t> specialization)
-    : name_(shaderFile) {
+    : name_(shaderFile), maxGroupsX_(context.info().maxComputeWorkGroupCount[0]) {
   std::span<const uint32_t> words = shaders::embeddedSpirv(shaderFile);
   if (words.empty()) fail("shader ", shaderFile, " is not embedded in this build");
   reflection_ = reflectSpirv(words, shaderFile);
@@ -191,9 +223,12 @@ void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<cons
     fail(name, ": push constants of ", pushSize, " bytes given, shader declares ",
          program.layout().pushConstantSize);
   if (threadCount == 0) return;
-  uint32_t groups = (threadCount + program.localSizeX() - 1) / program.localSizeX();
-  if (groups > 65535u)
-    fail(name, ": ", groups, " workgroups exceed the 65535 limit; dispatch in chunks");
+  const uint32_t groups = static_cast<uint32_t>((uint64_t(threadCount) + program.localSizeX() - 1) /
+                                                program.localSizeX());
+  if (groups > program.maxGroupsX())
+    throw LimitError(concat(name, " dispatch of ", threadCount, " threads"),
+                     "maxComputeWorkGroupCount[0]", groups, program.maxGroupsX(), "workgroups",
+                     program.layout().deviceName);
   bindForDispatch(cmd, program, bindings, pushConstants, pushSize);
   vkCmdDispatch(cmd, groups, 1, 1);
 }

@@ -19,6 +19,7 @@ struct Binding {
   VkDescriptorBufferInfo buffer{};
   VkDescriptorImageInfo image{};
   VkBufferView texelView = VK_NULL_HANDLE;
+  VkDeviceSize bufferSize = 0;  // the whole buffer's size: the range a VK_WHOLE_SIZE binding has
 };
 
 Binding storageBinding(uint32_t slot, const Buffer& buffer, VkDeviceSize offset = 0,
@@ -35,12 +36,17 @@ struct PipelineLayout {
   std::vector<ReflectedBinding> bindings;
   uint32_t pushConstantSize = 0;
   VkShaderStageFlags stages = 0;
+  uint32_t maxStorageBufferRange = 0;  // the device's, checked for every binding pushed
+  uint32_t maxUniformBufferRange = 0;
+  std::string deviceName;  // for LimitError's message
 };
 PipelineLayout makePipelineLayout(const Context& context, std::span<const ShaderReflection> shaders,
                                   const std::string& name);
 Handle<VkShaderModule> makeShaderModule(const Context& context, std::span<const uint32_t> words);
 
-// Pushes the descriptors after checking every declared binding is given with its type.
+// Pushes the descriptors after checking every declared binding is given with its type, and
+// that each buffer range fits the device's maxStorageBufferRange / maxUniformBufferRange
+// (LimitError otherwise).
 void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const PipelineLayout& layout,
                   std::span<const Binding> bindings, const std::string& name);
 
@@ -57,17 +63,19 @@ class ComputeProgram {
   const PipelineLayout& layout() const { return layout_; }
   VkPipeline pipeline() const { return pipeline_; }
   uint32_t localSizeX() const { return reflection_.localSize[0]; }
+  uint32_t maxGroupsX() const { return maxGroupsX_; }  // the device's maxComputeWorkGroupCount[0]
 
  private:
   std::string name_;
   ShaderReflection reflection_;
   PipelineLayout layout_;
   Handle<VkPipeline> pipeline_;
+  uint32_t maxGroupsX_ = 0;
 };
 
 // Dispatches ceil(threadCount / localSizeX) groups. Throws when a binding is missing or of the
-// wrong type, when the push-constant size differs from the shader's, or when the group count
-// exceeds the device limit.
+// wrong type, when the push-constant size differs from the shader's, and LimitError when the
+// group count exceeds the device's maxComputeWorkGroupCount or a range its binding limit.
 void dispatch(VkCommandBuffer cmd, const ComputeProgram& program, std::span<const Binding> bindings,
               const void* pushConstants, size_t pushSize, uint32_t threadCount);
 

@@ -27,6 +27,52 @@ TEST_CASE("context: an unknown device name is a clear error") {
   CHECK_THROWS_WITH_AS(gpu::Context{options}, doctest::Contains("no Vulkan device matches"), Error);
 }
 
+namespace {
+// A small upload, dispatch-free round trip that touches device, queue and command functions.
+void checkRoundTrip(gpu::Context& ctx) {
+  std::vector<uint32_t> data(256);
+  std::iota(data.begin(), data.end(), 11u);
+  gpu::Buffer buffer = gpu::makeStorageBuffer<uint32_t>(ctx, data);
+  CHECK(gpu::readback<uint32_t>(ctx, buffer, data.size()) == data);
+}
+
+gpu::ContextOptions ownContextOptions(bool validation) {
+  gpu::ContextOptions options;
+  options.validation = validation;
+  options.quiet = true;
+  return options;
+}
+}  // namespace
+
+// listDevices() makes a temporary instance without the debug-utils extension; loading volk's
+// global pointers from it left vkDestroyDebugUtilsMessengerEXT null for every live context.
+TEST_CASE("context: listDevices leaves a live context's entry points intact") {
+  {
+    gpu::Context ctx(ownContextOptions(true));
+    REQUIRE(ctx.validationEnabled());
+    const PFN_vkDestroyDebugUtilsMessengerEXT before = vkDestroyDebugUtilsMessengerEXT;
+    REQUIRE((before != nullptr));
+    CHECK(!gpu::listDevices().empty());
+    CHECK((vkDestroyDebugUtilsMessengerEXT == before));
+    checkRoundTrip(ctx);
+    CHECK(ctx.validationMessageCount() == 0);
+  }  // ~Context destroys its debug messenger here
+  checkRoundTrip(test::gpuContext());
+  CHECK(test::gpuContext().validationMessageCount() == 0);
+}
+
+TEST_CASE("context: contexts made and destroyed beside the shared one leave it working") {
+  {
+    gpu::Context withoutValidation(ownContextOptions(false));
+    checkRoundTrip(withoutValidation);
+  }
+  gpu::ContextOptions unknown = ownContextOptions(true);
+  unknown.device = "no-such-gpu-xyz";
+  CHECK_THROWS_AS(gpu::Context{unknown}, Error);  // fails after its instance exists
+  checkRoundTrip(test::gpuContext());
+  CHECK(test::gpuContext().validationMessageCount() == 0);
+}
+
 TEST_CASE("buffer: device-local round trip through staging") {
   gpu::Context& ctx = test::gpuContext();
   std::vector<uint32_t> data(10000);
