@@ -13,6 +13,7 @@
 #include "anim/bvh_channels.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/log.h"
 
 namespace throng::anim {
 namespace {
@@ -40,7 +41,9 @@ std::vector<Line> splitLines(std::string_view text) {
   return lines;
 }
 
-bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\v' || c == '\f';
+}
 
 bool isBlank(std::string_view s) {
   for (char c : s) {
@@ -170,7 +173,8 @@ class Parser {
     Token t = next(what);
     float value = 0.0f;
     switch (parseFloat(t.text, value)) {
-      case NumberStatus::Ok: return value;
+      case NumberStatus::Ok:
+        return value;
       case NumberStatus::NotFinite:
         failAt(t.line, "expected a finite number for ", what, ", found ", quoted(t.text));
       case NumberStatus::NotANumber:
@@ -274,7 +278,8 @@ class Parser {
     if (!skipToToken()) failAt(lastLine(), "expected a MOTION section, found end of file");
     Token motion = take();
     if (motion.text == "ROOT") failAt(motion.line, "expected MOTION (only one ROOT is supported)");
-    if (motion.text != "MOTION") failAt(motion.line, "expected MOTION, found ", quoted(motion.text));
+    if (motion.text != "MOTION")
+      failAt(motion.line, "expected MOTION, found ", quoted(motion.text));
     Token frames = expectLabel("Frames", "'Frames:'");
     Token countToken = nextOnLine(frames.line, "a frame count");
     long long frameCount = 0;
@@ -309,8 +314,9 @@ class Parser {
       bytes += lines_[i].text.size() + 1;
     }
     if (frameCount > available || frameCount > std::numeric_limits<int>::max()) {
-      failAt(framesLine, "Frames: ", frameCount, " but only ", available,
-             " frame lines follow (truncated file?)");
+      // Named at the line where the data runs out: that is where the file was cut.
+      failAt(lastDataLine(first), "the motion data ends after ", available, " of the ", frameCount,
+             " frames that Frames: on line ", framesLine, " declares (truncated file?)");
     }
     // Each value needs at least one character and a separator.
     const long long channels = clip.channelCount;
@@ -336,8 +342,7 @@ class Parser {
         float value = 0.0f;
         NumberStatus status = parseFloat(token, value);
         if (status == NumberStatus::NotFinite) {
-          failAt(line, "expected a finite number on frame ", frame + 1, ", found ",
-                 quoted(token));
+          failAt(line, "expected a finite number on frame ", frame + 1, ", found ", quoted(token));
         }
         if (status == NumberStatus::NotANumber) {
           failAt(line, "expected a number on frame ", frame + 1, ", found ", quoted(token));
@@ -346,24 +351,50 @@ class Parser {
       }
       ++frame;
     }
-    for (; i < lines_.size(); ++i) {
-      if (!isBlank(lines_[i].text)) {
-        failAt(lines_[i].number, "expected end of file after ", frameCount,
-               " frames (Frames: on line ", framesLine, "), found more values");
+    // More motion lines than declared (assimp's Boxing_Toes.bvh: 3,070 under Frames: 3069):
+    // other readers load such files, so the declared frames are kept and the rest ignored.
+    const long long extra = available - frameCount;
+    if (extra > 0) {
+      for (; i < lines_.size() && isBlank(lines_[i].text); ++i) {
       }
+      warnings_.push_back(concat(source_, ":", lines_[i].number, ": ", extra, " motion line",
+                                 extra == 1 ? "" : "s", " after the ", frameCount,
+                                 " frames that Frames: on line ", framesLine,
+                                 " declares; using the declared frames"));
     }
   }
 
+  // Number of the last non-blank line from index `first` on (the last line when all are blank).
+  int lastDataLine(size_t first) const {
+    for (size_t i = lines_.size(); i > first; --i)
+      if (!isBlank(lines_[i - 1].text)) return lines_[i - 1].number;
+    return first > 0 ? lines_[first - 1].number : lastLine();
+  }
+
+ public:
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
   const std::string& source_;
   std::vector<Line> lines_;
   size_t lineIndex_ = 0;
   size_t column_ = 0;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace
 
-RawClip parseBvh(std::string_view text, const std::string& sourceName) {
-  return Parser(text, sourceName).parse();
+RawClip parseBvh(std::string_view text, const std::string& sourceName,
+                 std::vector<std::string>* warnings) {
+  Parser parser(text, sourceName);
+  RawClip clip = parser.parse();
+  for (const std::string& w : parser.warnings()) {
+    if (warnings)
+      warnings->push_back(w);
+    else
+      logWarning(w);
+  }
+  return clip;
 }
 
 RawClip loadBvh(const std::filesystem::path& path) {

@@ -122,7 +122,7 @@ Clip wholeCycle(const Clip& clip, int first, LoopCut& cut) {
   return out;
 }
 
-Clip prepareOne(const RawClip& raw, const PairOptions& options, LoopCut& cut) {
+Clip prepareClip(const RawClip& raw, const PairOptions& options, LoopCut& cut) {
   Clip clip = toClip(raw);
   float metresPerUnit = options.metresPerUnit > 0.0f ? options.metresPerUnit
                                                      : detectUnits(clip.skeleton).metresPerUnit;
@@ -138,6 +138,24 @@ Clip prepareOne(const RawClip& raw, const PairOptions& options, LoopCut& cut) {
     clip = closeSeam(clip, cut);
   }
   return faceForwardZ(clip);
+}
+
+// prepareClip with every error naming the file the clip came from (Clip keeps only its stem).
+Clip prepareOne(const RawClip& raw, const PairOptions& options, LoopCut& cut) {
+  try {
+    return prepareClip(raw, options, cut);
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    if (message.rfind(raw.sourceName, 0) == 0) throw;
+    fail(raw.sourceName, ": ", message);
+  }
+}
+
+void checkPoseJoints(const RawClip& raw) {
+  const int joints = raw.skeleton.jointCount();
+  if (joints < 1 || joints > kMaxPoseJoints)
+    fail(raw.sourceName, ": ", joints, " joints; the pose pass supports 1..", kMaxPoseJoints,
+         " joints (a skeleton with fewer joints is needed)");
 }
 
 void checkPairTopology(const Skeleton& slow, const std::string& slowName, const Skeleton& fast,
@@ -318,6 +336,8 @@ Clip faceForwardZ(const Clip& clip) {
 }
 
 PreparedPair preparePair(const RawClip& slow, const RawClip& fast, const PairOptions& options) {
+  checkPoseJoints(slow);
+  checkPoseJoints(fast);
   checkPairTopology(slow.skeleton, slow.sourceName, fast.skeleton, fast.sourceName);
   if (!(options.frameTime > 0.0f))
     fail("preparePair: the frame time must be positive, got ", options.frameTime);

@@ -27,9 +27,9 @@ Clip resample(const Clip& clip, float frameTime);
 Clip resampleFrames(const Clip& clip, int frameCount, bool cyclic);
 
 struct LoopCut {
-  int start = 0;   // first frame of the cycle
-  int end = 0;     // one past the last frame: frame `end` ≈ frame `start`
-  float error = 0; // pose + velocity distance between start and end (radians-ish, per joint)
+  int start = 0;    // first frame of the cycle
+  int end = 0;      // one past the last frame: frame `end` ≈ frame `start`
+  float error = 0;  // pose + velocity distance between start and end (radians-ish, per joint)
   int length() const { return end - start; }
 };
 // Best cycle in [minFrames, maxFrames] frames by pose and velocity similarity (root
@@ -59,7 +59,7 @@ int alignPhases(const Clip& slow, Clip& fast);
 struct PairOptions {
   float metresPerUnit = 0.0f;  // 0: detect from the skeleton height
   float frameTime = 1.0f / 30.0f;
-  bool cutLoops = true;        // false for clips that are already cycles
+  bool cutLoops = true;  // false for clips that are already cycles
 };
 struct PreparedPair {
   Clip slow;
@@ -67,7 +67,12 @@ struct PreparedPair {
   LoopCut slowLoop;
   LoopCut fastLoop;
 };
-// The whole preparation for a slow/fast pair; a topology mismatch is a clear Error. Each clip:
+// The most joints a skeleton may have for the synthesis passes (synth's pose pass keeps a
+// joint's parent chain in 64-bit masks); preparePair refuses more, naming the file.
+inline constexpr int kMaxPoseJoints = 64;
+
+// The whole preparation for a slow/fast pair; a topology mismatch is a clear Error, and every
+// Error names the BVH file (RawClip::sourceName) it concerns. Each clip:
 // toClip, metres, resample to options.frameTime, best loop of 0.4–1.6 s (closeSeam; a clip
 // too short for that, or cutLoops false, is one whole cycle whose travel is the mean root
 // velocity × duration), faceForwardZ; then both get the mean of the two cycle lengths in
