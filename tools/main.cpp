@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "cli_errors.h"
 #include "command.h"
 #include "core/error.h"
 
@@ -39,18 +40,28 @@ CLI::App* commandGroup(CLI::App& app, const char* name, const char* description)
 int main(int argc, char** argv) {
   CLI::App app{"Throng: GPU crowd animation (motion synthesis, storyboards, secondary motion)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "throng " THRONG_VERSION);
   int exitCode = 0;
   throng::tools::addRegisteredCommands(app, exitCode);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Every other parse failure is a usage error: one style and one exit code, never CLI11's own.
+    std::fprintf(stderr, "error: %s\n",
+                 throng::tools::usageErrorMessage(app, e, argc, argv).c_str());
+    return throng::tools::kUsageExitCode;
   } catch (const throng::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
-    return 2;
+    return 1;
   }
   return exitCode;
 }

@@ -1,0 +1,27 @@
+#pragma once
+// Command-line mistakes in the project's error style: `error: what was wrong`, a "did you mean"
+// for mistyped commands and options, and where to find the right ones. Usage errors exit 2.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace throng::tools {
+
+inline constexpr int kUsageExitCode = 2;
+
+// The candidate closest to `word` by edit distance, or "" when none is close enough to be a
+// plausible typo (at most a third of the word's letters wrong).
+std::string closestName(const std::string& word, const std::vector<std::string>& candidates);
+
+// The message for a parse error of `root` given the command line it was parsing.
+std::string usageErrorMessage(const CLI::App& root, const CLI::ParseError& error, int argc,
+                              char** argv);
+
+// The deepest subcommand of `root` that the command line `argv` names (root when none).
+const CLI::App& commandNamedBy(const CLI::App& root, int argc, char** argv);
+
+// "throng render" for the render subcommand: the words a user types to reach `command`.
+std::string commandPath(const CLI::App& command);
+
+}  // namespace throng::tools
