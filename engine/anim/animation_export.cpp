@@ -1,0 +1,115 @@
+#include "anim/animation_export.h"
+
+#include <cmath>
+
+#include <glm/gtx/euler_angles.hpp>
+
+#include "core/error.h"
+
+namespace throng::anim {
+namespace {
+
+glm::quat toQuat(const glm::vec4& q) {
+  return glm::quat(q.w, q.x, q.y, q.z);
+}
+
+glm::quat yaw(float heading) {
+  return glm::angleAxis(heading, glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+// One frame: the pose in character space, made joint-local and placed in the world.
+void appendFrame(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
+                 std::vector<PoseJoint>& pose, JointAnimation& out) {
+  poseCharacterSpace(pair, motion.x, motion.y, pose);
+  const float scale = motion.w;
+  for (int j = 0; j < pair.jointCount(); ++j) {
+    const int p = pair.parents[size_t(j)];
+    const glm::quat rotation = toQuat(pose[size_t(j)].rotation);
+    if (p < 0) {
+      out.rotations.push_back(glm::normalize(yaw(placement.w) * rotation));
+      out.translations.push_back(glm::vec3(placement) + scale * pose[size_t(j)].position);
+    } else {
+      const glm::quat parentInverse = glm::inverse(toQuat(pose[size_t(p)].rotation));
+      out.rotations.push_back(glm::normalize(parentInverse * rotation));
+      out.translations.push_back(
+          scale * (parentInverse * (pose[size_t(j)].position - pose[size_t(p)].position)));
+    }
+  }
+}
+
+}  // namespace
+
+JointAnimation recordCharacter(const MotionPair& pair, const Skeleton& skeleton,
+                               glm::vec4 placement, glm::vec4 motion,
+                               const RecordOptions& options) {
+  if (skeleton.jointCount() != pair.jointCount())
+    fail("export: the skeleton has ", skeleton.jointCount(), " joints, the clip pair ",
+         pair.jointCount());
+  if (options.frames < 1 || !(options.dt > 0.0f)) fail("export: expected frames >= 1 and dt > 0");
+  JointAnimation out;
+  out.skeleton = skeleton;
+  out.frameTime = options.dt;
+  out.frameCount = options.frames;
+  out.rotations.reserve(size_t(options.frames) * size_t(pair.jointCount()));
+  out.translations.reserve(out.rotations.capacity());
+  std::vector<PoseJoint> pose(size_t(pair.jointCount()));
+  for (int f = 0; f < options.frames; ++f) {
+    appendFrame(pair, placement, motion, pose, out);
+    const SpeedRetarget retarget =
+        size_t(f) < options.retargets.size() ? options.retargets[size_t(f)] : SpeedRetarget{};
+    stepCharacter(pair, placement, motion, options.dt, options.steering, retarget,
+                  options.character);
+  }
+  // Rest offsets from the first frame; the root's is zero because BVH adds a root's position
+  // channels to its OFFSET (other joints' position channels replace it).
+  for (int j = 0; j < out.jointCount(); ++j)
+    out.skeleton.joints[size_t(j)].offset =
+        out.skeleton.joints[size_t(j)].parent < 0 ? glm::vec3(0.0f) : out.translation(0, j);
+  return out;
+}
+
+std::vector<glm::vec3> worldPositions(const JointAnimation& a, int frame) {
+  std::vector<glm::vec3> position(size_t(a.jointCount()));
+  std::vector<glm::quat> rotation(size_t(a.jointCount()));
+  for (int j = 0; j < a.jointCount(); ++j) {
+    const int p = a.skeleton.joints[size_t(j)].parent;
+    if (p < 0) {
+      position[size_t(j)] = a.translation(frame, j);
+      rotation[size_t(j)] = a.rotation(frame, j);
+    } else {
+      position[size_t(j)] = position[size_t(p)] + rotation[size_t(p)] * a.translation(frame, j);
+      rotation[size_t(j)] = rotation[size_t(p)] * a.rotation(frame, j);
+    }
+  }
+  return position;
+}
+
+glm::vec3 eulerZxyDegrees(const glm::quat& q) {
+  float z = 0, x = 0, y = 0;
+  glm::extractEulerAngleZXY(glm::mat4_cast(glm::normalize(q)), z, x, y);
+  return glm::degrees(glm::vec3(z, x, y));
+}
+
+RawClip toBvhClip(const JointAnimation& a) {
+  RawClip clip;
+  clip.sourceName = a.name;
+  clip.skeleton = a.skeleton;
+  clip.frameCount = a.frameCount;
+  clip.frameTime = a.frameTime;
+  const std::vector<Channel> channels = {Channel::Xposition, Channel::Yposition,
+                                         Channel::Zposition, Channel::Zrotation,
+                                         Channel::Xrotation, Channel::Yrotation};
+  for (Joint& joint : clip.skeleton.joints) joint.channels = channels;
+  clip.channelCount = 6 * a.jointCount();
+  clip.values.reserve(size_t(a.frameCount) * size_t(clip.channelCount));
+  for (int f = 0; f < a.frameCount; ++f) {
+    for (int j = 0; j < a.jointCount(); ++j) {
+      const glm::vec3 t = a.translation(f, j);
+      const glm::vec3 e = eulerZxyDegrees(a.rotation(f, j));
+      clip.values.insert(clip.values.end(), {t.x, t.y, t.z, e.x, e.y, e.z});
+    }
+  }
+  return clip;
+}
+
+}  // namespace throng::anim
