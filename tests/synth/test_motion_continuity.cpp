@@ -1,7 +1,7 @@
 // Continuous sampling between motion-texture rows: at 30 fps the per-frame root step and pose
 // change are smooth (no repeated or skipped rows) for the built-in, Bandai Namco and CMU pairs
-// at w = 0, 0.5 and 1, in the CPU twin (GPU = twin: test_synth_jobs.cpp), and the motion cache's
-// playback is as smooth as synthesis (GPU cache = twin: test_motion_cache.cpp).
+// at w = 0, 0.5 and 1, on the GPU and in its CPU twin alike, and the motion cache's playback is
+// as smooth as synthesis (GPU cache = twin: test_motion_cache.cpp).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -11,7 +11,12 @@
 #include "anim/default_clips.h"
 #include "anim/reference_synth.h"
 #include "core/math.h"
+#include "gpu/commands.h"
+#include "gpu_fixture.h"
+#include "synth/cpu_synth.h"
+#include "synth/crowd_synth.h"
 #include "synth/motion_cache_cpu.h"
+#include "synth_fixtures.h"
 #include "test_support.h"
 
 using namespace throng;
@@ -189,4 +194,57 @@ TEST_CASE(
       }
     }
   }
+}
+
+TEST_CASE(
+    "continuous sampling on the GPU: 5 s at w = 0, 0.5, 1 step and pose like the twin (built-in, "
+    "Bandai, CMU)") {
+  gpu::Context& ctx = test::gpuContext();
+  for (std::string name : {"built-in", "Bandai", "CMU"}) {
+    std::optional<NamedPair> named = loadPair(name);
+    if (!named) continue;
+    CAPTURE(name);
+    const anim::MotionPair& pair = named->pair;
+    crowd::Crowd cpu;
+    cpu.resize(3);
+    for (size_t i = 0; i < 3; ++i)
+      cpu.motion[i] = glm::vec4(0.0f, 0.5f * float(i), 0.5f * float(i), 1.0f);
+    synth::SynthPrograms programs(ctx, pair);
+    synth::CrowdSynth gpu = synth::makeCrowdSynth(ctx, pair, cpu);
+    const size_t n = cpu.size() * size_t(pair.jointCount());
+    std::vector<synth::JointMatrix> cpuJoints(n);
+    std::vector<std::vector<float>> gpuSteps(3);
+    crowd::Crowd before = cpu;
+    float worstJoints = 0.0f, worstPlacement = 0.0f;
+    for (int f = 0; f < kFrames; ++f) {
+      gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+        synth::recordSynthesis(cmd, programs, gpu, kDt, 1u << 27);
+      });
+      synth::stepCrowdCpu(pair, cpu, kDt, 1);
+      synth::poseCrowdCpu(pair, cpu, cpuJoints, 1);
+      crowd::Crowd now;
+      crowd::downloadCrowd(ctx, gpu.crowd, now);
+      auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpu.joints, n);
+      worstJoints = std::max(
+          worstJoints, test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, n * 12));
+      worstPlacement = std::max(
+          worstPlacement, test::maxAbsDifference(&now.placement[0].x, &cpu.placement[0].x, 12));
+      for (size_t i = 0; i < 3; ++i) {
+        glm::vec4 d = now.placement[i] - before.placement[i];
+        gpuSteps[i].push_back(glm::length(glm::vec2(d.x, d.z)));
+      }
+      before = now;
+    }
+    for (size_t i = 0; i < 3; ++i) {
+      Smoothness root = summarize(gpuSteps[i], 1e-5f);
+      CAPTURE(i);
+      CHECK(root.ratio() <= 1.3f);
+      CHECK(root.zeros == 0);
+    }
+    MESSAGE(name, ": over ", kFrames, " frames max |GPU - CPU| joints ", worstJoints,
+            ", placement ", worstPlacement);
+    CHECK(worstJoints <= 1e-4f);
+    CHECK(worstPlacement <= 1e-4f);
+  }
+  CHECK(ctx.validationMessageCount() == 0);
 }
