@@ -1,8 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
-// Pixel-coverage pass (DESIGN eqs. 1–9), one invocation per character: the screen area of the
-// five part spheres decides which joints the pose pass synthesizes and the renderer draws.
+// Coverage LOD pass, one invocation per character: its projected height picks a level (with
+// hysteresis, changing at a cycle end) whose joints the pose pass synthesizes and the renderer
+// draws; a sphere around the whole body tells whether any of it is on screen (the five part
+// spheres of DESIGN eqs. 1–9 are still measured, for the areas output and the state's bits).
 // CPU twin: synth::coverageCharacter (engine/synth/coverage.cpp), mirrored operation for
 // operation (the math is in coverage_common.glsl).
 #include "coverage_types.h"
@@ -22,14 +24,13 @@ void main() {
   if (local >= push.characterCount) return;
   uint i = push.firstCharacter + local;
   vec4 place = placement[i];
-  float scale = motion[i].w;
+  vec4 m = motion[i];
+  float scale = m.w;
   CoverageMask previous = masks[i];
   bool readJoints = (push.flags & kCoverageReadJoints) != 0u;
   float c = cos(place.w);
   float s = sin(place.w);
-  uint lo = parts.baseLo;
-  uint hi = parts.baseHi;
-  uint activeParts = 0u;
+  uint onScreen = 0u;
   [[unroll]] for (uint k = 0u; k < kCoveragePartCount; ++k) {
     CoveragePart part = parts.parts[k];
     // A centre joint written by last frame's pose pass (active in last frame's mask) is read
@@ -40,11 +41,12 @@ void main() {
                       : estimatedCentre(part, place.xyz, c, s, scale);
     float area = sphereCoverage(push.view, push.viewport, push.frustum, centre, part.centre.w * scale);
     if ((push.flags & kCoverageWriteAreas) != 0u) areas[i * kCoveragePartCount + k] = area;
-    if (area >= part.threshold) {
-      lo |= part.maskLo;
-      hi |= part.maskHi;
-      activeParts |= 1u << k;
-    }
+    if (area > 0.0) onScreen |= 1u << k;
   }
-  masks[i] = finishMask(parts, lo, hi, activeParts);
+  float h = projectedHeight(push.view, push.viewport, place.xyz, parts.body.x * scale);
+  bool visible = bodyOnScreen(push.view, push.viewport, push.frustum, place.xyz, parts.body.x * scale);
+  uvec2 levelState = nextLevel(parts, previous, m, h, visible);
+  CoverageLevel level = parts.levels[levelState.x];
+  uvec2 synthesized = visible ? uvec2(level.synthLo, level.synthHi) : uvec2(parts.baseLo, parts.baseHi);
+  masks[i] = CoverageMask(synthesized.x, synthesized.y, levelState.x, levelState.y | onScreen);
 }

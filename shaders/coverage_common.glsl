@@ -38,10 +38,54 @@ vec3 jointCentre(JointMatrix a, float bonePoint) {
   return vec3(a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w, a.row2.y * bonePoint + a.row2.w);
 }
 
-CoverageMask finishMask(CoverageParts parts, uint lo, uint hi, uint activeParts) {
-  uint level = (lo == parts.allLo && hi == parts.allHi) ? kLevelNear
-               : ((lo == parts.baseLo && hi == parts.baseHi) ? kLevelFar : kLevelMid);
-  return CoverageMask(lo, hi, level, activeParts);
+// The character's standing height on screen in pixels: f·H/z at the depth of its middle; a
+// character whose middle is nearer than half its height (or behind the camera) counts as huge.
+float projectedHeight(mat4 view, vec4 viewport, vec3 origin, float height) {
+  vec4 v = view * vec4(origin + vec3(0.0, 0.5 * height, 0.0), 1.0);
+  float z = -v.z;
+  return z > 0.5 * height ? viewport.z * height / z : 1.0e9;
+}
+
+// Whether any of a character standing at `origin`, `height` tall, can be on screen: a sphere
+// around its middle reaching 0.8 of its height (raised arms, long strides) meets the frustum.
+bool bodyOnScreen(mat4 view, vec4 viewport, vec4 frustum, vec3 origin, float height) {
+  return sphereCoverage(view, viewport, frustum, origin + vec3(0.0, 0.5 * height, 0.0), 0.8 * height) > 0.0;
+}
+
+// The level for projected height h, starting from `level`: up while h reaches the next level's
+// entry height, down while h is under the level's leaving height (hysteresis between them).
+uint levelForHeight(CoverageParts parts, uint level, float h) {
+  while (level + 1u < kLevelCount && h >= parts.levels[level + 1u].enterHeight) level = level + 1u;
+  while (level > 0u && h < parts.levels[level].leaveHeight) level = level - 1u;
+  return level;
+}
+
+// Level, timer and phase from last frame's state: the level follows the height, but a visible
+// character changes level only at the end of a walk cycle (the phase wraps) and at least
+// body.y seconds after its last change; a character off screen changes at once (nothing
+// pops), still at most once per body.y seconds. The time since the last change comes from the
+// phase advance and the blended cycle duration.
+uvec2 nextLevel(CoverageParts parts, CoverageMask previous, vec4 motion, float h, bool visible) {
+  uint state = previous.state;
+  bool initialized = (state & kStateInitialized) != 0u;
+  float previousPhase = float(state >> kStatePhaseShift) / 65535.0;
+  float advance = motion.x - previousPhase;
+  bool wrapped = advance < 0.0;
+  if (wrapped) advance = advance + 1.0;
+  float cycleSeconds = parts.body.z * (1.0 - motion.y) + parts.body.w * motion.y;
+  uint timer = min(((state >> kStateTimerShift) & kStateTimerMax) + uint(advance * cycleSeconds * kStateTimerUnits),
+                   kStateTimerMax);
+  uint level = initialized ? min(previous.level, kLevelCount - 1u) : kLevelFar;
+  uint target = levelForHeight(parts, level, h);
+  if (!initialized) {
+    level = target;
+    timer = 0u;
+  } else if (target != level && float(timer) >= parts.body.y * kStateTimerUnits && (wrapped || !visible)) {
+    level = target;
+    timer = 0u;
+  }
+  uint phaseBits = min(uint(motion.x * 65535.0), 65535u);
+  return uvec2(level, kStateInitialized | (timer << kStateTimerShift) | (phaseBits << kStatePhaseShift));
 }
 
 #endif

@@ -7,9 +7,10 @@
 
 #ifdef __cplusplus
 namespace throng::gpu_types {
+using uvec4 = glm::uvec4;
 #endif
 
-// The five bounding spheres, in this order everywhere (masks' part bits, areas).
+// The five bounding spheres, in this order everywhere (state's part bits, areas).
 const uint kPartLeftArm = 0u;
 const uint kPartRightArm = 1u;
 const uint kPartTorso = 2u;
@@ -21,10 +22,19 @@ const uint kCoveragePartCount = 5u;
 const uint kCoverageReadJoints = 1u;  // sphere centres from the joint matrices (else estimated)
 const uint kCoverageWriteAreas = 2u;  // fill the optional areas buffer
 
-// Levels written per character (for the Fig. 8 tint).
-const uint kLevelFar = 0u;   // only the always-active base joints
-const uint kLevelMid = 1u;   // some parts
+// Levels written per character (also the Fig. 8 tint), chosen from its projected height.
+const uint kLevelFar = 0u;   // four limbs to the wrists and ankles; spine and neck one bone each
+const uint kLevelMid = 1u;   // every joint but the fingers
 const uint kLevelNear = 2u;  // every joint
+const uint kLevelCount = 3u;
+
+// CoverageMask.state: what the pass keeps from frame to frame.
+const uint kStatePartBits = 31u;       // bits 0..4: parts whose sphere is on screen (area > 0)
+const uint kStateInitialized = 32u;    // bit 5: `level` was chosen by this pass
+const uint kStateTimerShift = 6u;      // bits 6..15: time since the level changed, 1/256 s units,
+const uint kStateTimerMax = 1023u;     //   saturating at 4 s
+const float kStateTimerUnits = 256.0;  // units per second
+const uint kStatePhaseShift = 16u;     // bits 16..31: the phase seen last frame, floor(phase·65535)
 
 // Push constants: the camera changes every frame, so it travels here rather than in a
 // buffer that frames in flight would share.
@@ -38,34 +48,49 @@ THRONG_STRUCT(CoveragePush) {
   uint flags;             // kCoverageReadJoints | kCoverageWriteAreas
 };
 
-// One body part: its sphere and the joints it makes active.
+// One body part's bounding sphere: a character with no sphere on screen synthesizes only the
+// base joints, whatever its level.
 THRONG_STRUCT(CoveragePart) {
   vec4 centre;            // xyz: mean character-space position of the centre joint; w: radius (m)
   uint joint;             // the centre joint
-  float threshold;        // pixels; the part is active when its area >= threshold
   float bonePoint;        // the centre is A·(0, bonePoint, 0, 1): 1 = bone end, 0.5 for the root
   uint pad0;
-  uint maskLo;            // joints this part activates (closed under ancestors, minus base)
-  uint maskHi;
   uint pad1;
-  uint pad2;
+};
+
+// One level: what is synthesized and what is drawn, and its projected-height band.
+THRONG_STRUCT(CoverageLevel) {
+  uint synthLo;           // joints the pose pass synthesizes (closed under ancestors)
+  uint synthHi;
+  uint drawLo;            // joints the renderer draws (a bone from boneFrom, see CoverageParts)
+  uint drawHi;
+  float enterHeight;      // pixels: a lower level rises to this one at a height >= this
+  float leaveHeight;      // pixels: this level drops to a lower one under this (hysteresis)
+  uint pad0;
+  uint pad1;
 };
 
 // Uniform buffer (std140): what changes only with the skeleton or the thresholds.
 THRONG_STRUCT(CoverageParts) {
-  uint baseLo;            // joints active at every distance (root, pelvis, lower spine)
+  uint baseLo;            // joints synthesized for a character with no part on screen
   uint baseHi;
   uint allLo;             // every joint of the skeleton
   uint allHi;
+  vec4 body;              // x: standing height (m at scale 1); y: least seconds between level
+                          // changes; z, w: slow and fast cycle seconds (time from the phase)
+  CoverageLevel levels[3];
   CoveragePart parts[5];
+  uvec4 boneFrom[12];     // byte level·64 + j: the joint a drawn joint's bone starts at; 255:
+                          // its own bone (from its parent)
+  vec4 boneRadius[48];    // float level·64 + j: radius of that long bone over joint j's own
 };
 
 // Per character output (std430), also read back as the previous frame's mask.
 THRONG_STRUCT(CoverageMask) {
-  uint lo;                // active joints 0..31
-  uint hi;                // active joints 32..63
+  uint lo;                // joints synthesized this frame, 0..31
+  uint hi;                // 32..63
   uint level;             // kLevelFar, kLevelMid or kLevelNear
-  uint parts;             // bit k: part k's area reached its threshold
+  uint state;             // kState* fields
 };
 
 #ifdef __cplusplus

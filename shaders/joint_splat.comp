@@ -19,14 +19,16 @@ layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // covera
 layout(std430, binding = 10) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
 layout(push_constant) uniform Push { SplatPush push; };
 #include "joint_fetch.glsl"
+#include "joint_lod.glsl"
 
 void main() {
   uint joint = gl_GlobalInvocationID.x;
   if (joint >= push.jointTotal) return;
   uint character = joint / push.jointCount + push.firstCharacter;
   uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
-  if ((push.flags & kDrawUseMasks) != 0u && !jointActive(mask, joint % push.jointCount)) return;
-  JointSprite s = jointSprite(fetchJoint(joint, character, joint % push.jointCount, push.flags), frame);
+  JointMatrix a;
+  if (!drawnJoint(joint, character, joint % push.jointCount, push.flags, mask, uvec2(push.boneLo, push.boneHi), a)) return;
+  JointSprite s = jointSprite(a, frame);
   if (!s.visible) return;
   if (s.sizePx > push.maxPixels) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);

@@ -106,8 +106,6 @@ vec3 levelTint(uint level) {
   return level >= 2u ? vec3(0.25, 0.8, 0.3) : level == 1u ? vec3(0.95, 0.8, 0.2) : vec3(0.9, 0.25, 0.2);
 }
 
-bool jointActive(uvec4 mask, uint j) { return ((j < 32u ? mask.x >> j : mask.y >> (j - 32u)) & 1u) != 0u; }
-
 // Directional + sky ambient + a little rim so silhouettes read at a distance; gamma-encoded.
 vec3 shadeJoint(vec3 tint, vec3 n, vec3 dir, vec3 light) {
   float diffuse = max(dot(n, light), 0.0);

@@ -14,6 +14,7 @@ layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // covera
 layout(std430, binding = 10) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
 layout(push_constant) uniform Push { DrawPush push; };
 #include "joint_fetch.glsl"
+#include "joint_lod.glsl"
 
 layout(location = 0) flat out vec3 tint;
 layout(location = 1) flat out vec4 inverse0;
@@ -24,8 +25,10 @@ void main() {
   uint joint = (push.flags & kDrawFromList) != 0u ? nearList[push.listBase + uint(gl_VertexIndex)] : uint(gl_VertexIndex);
   uint character = joint / push.jointCount + push.firstCharacter;
   uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
-  JointSprite s = jointSprite(fetchJoint(joint, character, joint % push.jointCount, push.flags), frame);
-  if (!s.visible || ((push.flags & kDrawUseMasks) != 0u && !jointActive(mask, joint % push.jointCount))) {
+  JointMatrix a;
+  bool drawn = drawnJoint(joint, character, joint % push.jointCount, push.flags, mask, uvec2(push.boneLo, push.boneHi), a);
+  JointSprite s = jointSprite(a, frame);
+  if (!drawn || !s.visible) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
     gl_PointSize = 1.0;
     return;

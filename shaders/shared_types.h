@@ -114,6 +114,8 @@ THRONG_STRUCT(DrawPush) {
   uint firstCharacter;    // vertex index + firstCharacter·jointCount is the global joint
   uint flags;             // kDraw* bits below
   uint listBase;
+  uint boneLo;            // bit j: joint j's bone is drawn (a placement's is not), joints 0..31
+  uint boneHi;            // joints 32..63
 };
 
 const uint kDrawFromList = 1u;   // vertex i draws joint nearList[listBase + i]
@@ -121,6 +123,7 @@ const uint kDrawUseMasks = 2u;   // skip joints the character's LOD mask leaves 
 const uint kDrawTintLevel = 4u;  // colour characters by LOD level (paper Fig. 8)
 const uint kDrawCachedPoses = 8u;  // compose cached characters' joints from poseSource + cache data
 const uint kDrawGroupTint = 16u;   // colour characters by their group (binding 10: a uint per character)
+const uint kDrawLodLevels = 32u;   // with kDrawUseMasks: per-level drawn joints and long bones (binding 11)
 
 // Push constants of the joint splat (compute path for small joints). Joints too wide to splat
 // are appended to nearList[listBase …] and counted in draws[chunk].vertexCount, an indirect
@@ -134,6 +137,8 @@ THRONG_STRUCT(SplatPush) {
   uint listBase;
   uint flags;             // kDrawUseMasks, kDrawTintLevel
   uint pad1;
+  uint boneLo;            // as DrawPush
+  uint boneHi;
 };
 
 #ifdef __cplusplus

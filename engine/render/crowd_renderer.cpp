@@ -6,14 +6,15 @@
 
 #include "core/error.h"
 #include "render/joint_splat.h"
+#include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
 namespace throng::render {
 
 using gpu_types::DrawPush;
-using gpu_types::kDrawFromList;
 using gpu_types::FrameUniforms;
-static_assert(sizeof(DrawPush) == 16, "DrawPush must match the GLSL push block");
+using gpu_types::kDrawFromList;
+static_assert(sizeof(DrawPush) == 24, "DrawPush must match the GLSL push block");
 static_assert(sizeof(FrameUniforms) == 160, "FrameUniforms must match the GLSL std140 block");
 
 namespace {
@@ -21,6 +22,7 @@ uint32_t drawFlags(const DrawParams& params) {
   uint32_t flags = 0;
   if (params.masks) flags |= gpu_types::kDrawUseMasks;
   if (params.masks && params.tintLevels) flags |= gpu_types::kDrawTintLevel;
+  if (params.masks && params.lodLevels) flags |= gpu_types::kDrawLodLevels;
   if (params.groups) flags |= gpu_types::kDrawGroupTint;
   if (params.cachedPoses.enabled()) flags |= gpu_types::kDrawCachedPoses;
   return flags;
@@ -47,11 +49,13 @@ FrameUniforms makeFrameUniforms(const DrawParams& params) {
   u.rayRight = glm::vec4(right * tanY * aspect, 0.0f);
   u.rayDown = glm::vec4(-up * tanY, 0.0f);
   u.rayForward = glm::vec4(forward, 0.0f);
-  u.viewport = glm::vec4(float(params.width), float(params.height), camera.focalLengthPixels(float(params.height)), 0.0f);
+  u.viewport = glm::vec4(float(params.width), float(params.height),
+                         camera.focalLengthPixels(float(params.height)), 0.0f);
   return u;
 }
 
-CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, VkFormat depthFormat)
+CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
+                             VkFormat depthFormat)
     : context_(&context), splatSupported_(context.info().int64Atomics) {
   gpu::GraphicsPipelineDesc jointDesc;
   jointDesc.vertexShader = "joints.vert";
@@ -76,6 +80,9 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat, 
     resolve_ = gpu::GraphicsProgram(context, resolveDesc);
   }
   noMasks_ = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  noLodLevels_ = gpu::Buffer(context, sizeof(gpu_types::CoverageParts),
+                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::HostVisible);
+  std::memset(noLodLevels_.mapped(), 0, sizeof(gpu_types::CoverageParts));
   for (uint32_t i = 0; i < kFramesInFlight; ++i)
     frameUniforms_.emplace_back(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                 gpu::MemoryUse::HostVisible);
@@ -86,15 +93,17 @@ void CrowdRenderer::ensureVisibility(uint32_t width, uint32_t height) {
     it = --it->second == 0 ? retiredVisibility_.erase(it) : std::next(it);
   if (visibility_ && visibilityWidth_ == width && visibilityHeight_ == height) return;
   if (visibility_) retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
-  visibility_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint64_t), gpu::kStorageUsage,
-                            gpu::MemoryUse::DeviceLocal);
+  visibility_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint64_t),
+                            gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   visibilityWidth_ = width;
   visibilityHeight_ = height;
 }
 
 void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
-  VkDeviceSize listBytes = std::max<VkDeviceSize>(16, VkDeviceSize(characterCount) * jointCount * 4);
-  size_t chunks = jointChunks(characterCount, jointCount, context_->info().maxStorageBufferRange).size();
+  VkDeviceSize listBytes =
+      std::max<VkDeviceSize>(16, VkDeviceSize(characterCount) * jointCount * 4);
+  size_t chunks =
+      jointChunks(characterCount, jointCount, context_->info().maxStorageBufferRange).size();
   VkDeviceSize drawBytes = std::max<VkDeviceSize>(16, chunks * 16);
   // Lists only grow; a smaller crowd keeps the larger buffers.
   if (!nearList_ || nearList_.size() < listBytes) {
@@ -103,38 +112,56 @@ void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
   }
   if (!draws_ || draws_.size() < drawBytes) {
     if (draws_) retiredVisibility_.emplace_back(std::move(draws_), kFramesInFlight + 1);
-    draws_ = gpu::Buffer(*context_, drawBytes, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                         gpu::MemoryUse::DeviceLocal);
+    draws_ =
+        gpu::Buffer(*context_, drawBytes, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    gpu::MemoryUse::DeviceLocal);
   }
 }
 
 void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth,
-                           VkImageView depthView, const DrawParams& params, VkImageLayout finalLayout,
-                           uint32_t frameSlot) {
+                           VkImageView depthView, const DrawParams& params,
+                           VkImageLayout finalLayout, uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
   const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
   FrameUniforms frame = makeFrameUniforms(params);
   std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
   const bool splat = splatSupported_ && params.splatMaxPixels > 0.0f && params.characterCount > 0;
+  const gpu::Buffer* lodLevels =
+      params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
   ensureLists(params.characterCount, params.jointCount);
   if (splat) {
     ensureVisibility(params.width, params.height);
-    SplatJob job{params.joints, &uniforms, &visibility_, &draws_, &nearList_, params.width, params.height,
-                 params.characterCount, params.jointCount, params.splatMaxPixels,
-                 context_->info().maxStorageBufferRange, params.masks ? params.masks : &noMasks_,
-                 drawFlags(params), boundCachedPoses(params, noMasks_), params.groups};
+    SplatJob job{params.joints,
+                 &uniforms,
+                 &visibility_,
+                 &draws_,
+                 &nearList_,
+                 params.width,
+                 params.height,
+                 params.characterCount,
+                 params.jointCount,
+                 params.splatMaxPixels,
+                 context_->info().maxStorageBufferRange,
+                 params.masks ? params.masks : &noMasks_,
+                 drawFlags(params),
+                 boundCachedPoses(params, noMasks_),
+                 params.groups,
+                 params.drawnBones,
+                 lodLevels};
     job.record(cmd, splat_);
     if (params.intoSplat) params.intoSplat(cmd, visibility_, params);
   }
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
   gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-  gpu::transitionImage(cmd, depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                       VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                       0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  gpu::transitionImage(
+      cmd, depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
 
   VkRenderingAttachmentInfoKHR colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
   colorAttachment.imageView = colorView;
@@ -168,6 +195,8 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
   DrawPush push{};
   push.jointCount = params.jointCount;
   push.flags = (splat ? kDrawFromList : 0u) | drawFlags(params);
+  push.boneLo = uint32_t(params.drawnBones);
+  push.boneHi = uint32_t(params.drawnBones >> 32);
   const std::vector<JointChunk> chunks =
       jointChunks(params.characterCount, params.jointCount, context_->info().maxStorageBufferRange);
   const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
@@ -175,12 +204,17 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];
     gpu::Binding bindings[] = {
-        gpu::storageBinding(0, *params.joints, chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
-        gpu::uniformBinding(1, uniforms), gpu::storageBinding(4, nearList_),
+        gpu::storageBinding(0, *params.joints, chunk.firstCharacter * perCharacter,
+                            chunk.characterCount * perCharacter),
+        gpu::uniformBinding(1, uniforms),
+        gpu::storageBinding(4, nearList_),
         gpu::storageBinding(5, params.masks ? *params.masks : noMasks_),
-        gpu::storageBinding(6, *cached.placement), gpu::storageBinding(7, *cached.motion),
-        gpu::storageBinding(8, *cached.poseSource), gpu::storageBinding(9, *cached.cacheData),
-        gpu::storageBinding(10, params.groups ? *params.groups : noMasks_)};
+        gpu::storageBinding(6, *cached.placement),
+        gpu::storageBinding(7, *cached.motion),
+        gpu::storageBinding(8, *cached.poseSource),
+        gpu::storageBinding(9, *cached.cacheData),
+        gpu::storageBinding(10, params.groups ? *params.groups : noMasks_),
+        gpu::uniformBinding(11, *lodLevels, 0, sizeof(gpu_types::CoverageParts))};
     push.firstCharacter = chunk.firstCharacter;
     push.listBase = chunk.firstCharacter * params.jointCount;
     joints_.bind(cmd, bindings, &push, sizeof(push));
@@ -199,13 +233,15 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
   if (params.insideRenderPass) params.insideRenderPass(cmd, params);
   vkCmdEndRenderingKHR(cmd);
 
-  VkAccessFlags dstAccess = finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ? VK_ACCESS_TRANSFER_READ_BIT : 0;
+  VkAccessFlags dstAccess =
+      finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ? VK_ACCESS_TRANSFER_READ_BIT : 0;
   VkPipelineStageFlags dstStage = finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
                                       ? VK_PIPELINE_STAGE_TRANSFER_BIT
                                       : VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;
-  gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, finalLayout,
-                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, dstStage,
-                       dstAccess);
+  gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, finalLayout,
+                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, dstStage, dstAccess);
 }
 
 }  // namespace throng::render

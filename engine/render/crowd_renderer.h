@@ -1,7 +1,7 @@
 #pragma once
 // The one graphics pipeline that draws every joint of every character as an instanced
-// ellipsoid (a ray-cast quad), plus the ground. Records into any colour/depth image pair (offscreen target or
-// swapchain image), so the viewer and the frame dumper share it.
+// ellipsoid (a ray-cast quad), plus the ground. Records into any colour/depth image pair (offscreen
+// target or swapchain image), so the viewer and the frame dumper share it.
 #include <functional>
 #include <vector>
 
@@ -24,10 +24,14 @@ struct DrawParams {
   // Joints whose screen sprite is at most this wide go through the compute splat; 0 draws
   // every joint with the graphics pipeline.
   float splatMaxPixels = 24.0f;
-  const gpu::Buffer* masks = nullptr;   // coverage LOD: CoverageMask per character (null: all joints)
-  bool tintLevels = false;              // colour characters by LOD level (paper Fig. 8)
+  uint64_t drawnBones = ~uint64_t(0);  // bit j: joint j's bone is drawn (anim::drawnBoneMask)
+  const gpu::Buffer* masks =
+      nullptr;  // coverage LOD: CoverageMask per character (null: all joints)
+  const gpu::Buffer* lodLevels =
+      nullptr;              // with masks: uniform CoverageParts (levels' drawn joints, long bones)
+  bool tintLevels = false;  // colour characters by LOD level (paper Fig. 8)
   const gpu::Buffer* groups = nullptr;  // storyboard group per character (uint): colour by group
-  CachedPoseInputs cachedPoses;         // motion cache on: cached characters' joints are composed here
+  CachedPoseInputs cachedPoses;  // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
   // Optional work of a higher module: compute splats into the joint splat's visibility buffer
   // (after the joints' splat, before the render pass; called only when the splat runs), and draws
@@ -55,8 +59,9 @@ class CrowdRenderer {
   // that last used it has completed.
   // Not const: the splat's visibility buffer follows the target size (old buffers are kept
   // until no frame in flight can use them).
-  void record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth, VkImageView depthView,
-              const DrawParams& params, VkImageLayout finalLayout, uint32_t frameSlot = 0);
+  void record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth,
+              VkImageView depthView, const DrawParams& params, VkImageLayout finalLayout,
+              uint32_t frameSlot = 0);
 
  private:
   gpu::GraphicsProgram joints_;
@@ -67,12 +72,14 @@ class CrowdRenderer {
   gpu::ComputeProgram splat_;
   gpu::GraphicsProgram resolve_;
   gpu::Buffer visibility_;
-  gpu::Buffer draws_;     // indirect draws of the joints too wide to splat, one per chunk
-  gpu::Buffer nearList_;  // their indices
-  gpu::Buffer noMasks_;   // bound when no LOD masks are given
+  gpu::Buffer draws_;        // indirect draws of the joints too wide to splat, one per chunk
+  gpu::Buffer nearList_;     // their indices
+  gpu::Buffer noMasks_;      // bound when no LOD masks are given
+  gpu::Buffer noLodLevels_;  // the uniform bound when no LOD levels are given
   void ensureLists(uint32_t characterCount, uint32_t jointCount);
   uint32_t visibilityWidth_ = 0, visibilityHeight_ = 0;
-  std::vector<std::pair<gpu::Buffer, uint32_t>> retiredVisibility_;  // buffers, records left before freeing
+  std::vector<std::pair<gpu::Buffer, uint32_t>>
+      retiredVisibility_;  // buffers, records left before freeing
   void ensureVisibility(uint32_t width, uint32_t height);
 };
 

@@ -4,19 +4,22 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
+#include "synth/coverage.h"
 #include "synth/gpu_types.h"
 #include "synth/synth_jobs.h"
 
 namespace throng::render {
 
 using gpu_types::SplatPush;
-static_assert(sizeof(SplatPush) == 32, "SplatPush must match the GLSL push block");
+static_assert(sizeof(SplatPush) == 40, "SplatPush must match the GLSL push block");
 
-std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount, uint32_t maxStorageBufferRange) {
+std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount,
+                                    uint32_t maxStorageBufferRange) {
   std::vector<JointChunk> chunks;
   if (characterCount == 0 || jointCount == 0) return chunks;
   // Bounded by one binding of matrices and by 65535 workgroups of 64 joints per dispatch.
-  uint32_t perChunk = std::min(maxStorageBufferRange / (jointCount * 48u), 65535u * 64u / jointCount);
+  uint32_t perChunk =
+      std::min(maxStorageBufferRange / (jointCount * 48u), 65535u * 64u / jointCount);
   perChunk = std::max(1u, perChunk);
   for (uint32_t first = 0; first < characterCount; first += perChunk)
     chunks.push_back({first, std::min(perChunk, characterCount - first)});
@@ -26,23 +29,39 @@ std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount
 std::vector<std::string> SplatJob::validate() const {
   std::vector<std::string> problems;
   if (!joints || !*joints) problems.push_back("input 'joints' buffer is missing");
-  if (!frameUniforms || !*frameUniforms) problems.push_back("input 'frameUniforms' buffer is missing");
+  if (!frameUniforms || !*frameUniforms)
+    problems.push_back("input 'frameUniforms' buffer is missing");
   if (!visibility || !*visibility) problems.push_back("output 'visibility' buffer is missing");
   if (width == 0 || height == 0) problems.push_back("the target size is zero");
-  if (visibility && *visibility && visibility->size() < VkDeviceSize(width) * height * sizeof(uint64_t))
-    problems.push_back(concat("output 'visibility' holds ", visibility->size(), " bytes, ", width, "x", height,
-                              " needs ", VkDeviceSize(width) * height * sizeof(uint64_t)));
+  if (visibility && *visibility &&
+      visibility->size() < VkDeviceSize(width) * height * sizeof(uint64_t))
+    problems.push_back(concat("output 'visibility' holds ", visibility->size(), " bytes, ", width,
+                              "x", height, " needs ",
+                              VkDeviceSize(width) * height * sizeof(uint64_t)));
   if (characterCount > 0 && jointCount == 0) problems.push_back("jointCount is zero");
   if (joints && *joints && joints->size() < VkDeviceSize(characterCount) * jointCount * 48u)
     problems.push_back("input 'joints' is smaller than characterCount × jointCount matrices");
   if (maxStorageBufferRange == 0) problems.push_back("maxStorageBufferRange is zero");
-  if (!masks || !*masks) problems.push_back("input 'masks' buffer is missing (bind a small one when flags are 0)");
+  if (!masks || !*masks)
+    problems.push_back("input 'masks' buffer is missing (bind a small one when flags are 0)");
+  if (!lodLevels || !*lodLevels)
+    problems.push_back(
+        "input 'lodLevels' is missing (bind a placeholder uniform when flags do not use it)");
+  else if (lodLevels->size() < sizeof(gpu_types::CoverageParts))
+    problems.push_back(concat("input 'lodLevels' holds ", lodLevels->size(),
+                              " bytes, CoverageParts needs ", sizeof(gpu_types::CoverageParts)));
   if (!cachedPoses.enabled())
-    problems.push_back("inputs 'cachedPoses' are missing (bind small placeholders without a motion cache)");
-  size_t chunks = jointChunks(characterCount, jointCount, std::max(1u, maxStorageBufferRange)).size();
-  if (!draws || !*draws) problems.push_back("output 'draws' buffer is missing");
-  else if (draws->size() < chunks * 16) problems.push_back(concat("output 'draws' holds ", draws->size(), " bytes, ", chunks, " chunks need ", chunks * 16));
-  if (!nearList || !*nearList) problems.push_back("output 'nearList' buffer is missing");
+    problems.push_back(
+        "inputs 'cachedPoses' are missing (bind small placeholders without a motion cache)");
+  size_t chunks =
+      jointChunks(characterCount, jointCount, std::max(1u, maxStorageBufferRange)).size();
+  if (!draws || !*draws)
+    problems.push_back("output 'draws' buffer is missing");
+  else if (draws->size() < chunks * 16)
+    problems.push_back(concat("output 'draws' holds ", draws->size(), " bytes, ", chunks,
+                              " chunks need ", chunks * 16));
+  if (!nearList || !*nearList)
+    problems.push_back("output 'nearList' buffer is missing");
   else if (nearList->size() < VkDeviceSize(characterCount) * jointCount * 4)
     problems.push_back("output 'nearList' is smaller than one index per joint");
   return problems;
@@ -55,10 +74,12 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   vkCmdFillBuffer(cmd, visibility->get(), 0, pixels * sizeof(uint64_t), 0xFFFFFFFFu);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  const std::vector<JointChunk> chunks = jointChunks(characterCount, jointCount, maxStorageBufferRange);
+  const std::vector<JointChunk> chunks =
+      jointChunks(characterCount, jointCount, maxStorageBufferRange);
   std::vector<uint32_t> emptyDraws;
   for (size_t c = 0; c < chunks.size(); ++c) emptyDraws.insert(emptyDraws.end(), {0u, 1u, 0u, 0u});
-  for (size_t offset = 0; offset < emptyDraws.size(); offset += 16384) {  // vkCmdUpdateBuffer ≤ 64 KiB
+  for (size_t offset = 0; offset < emptyDraws.size();
+       offset += 16384) {  // vkCmdUpdateBuffer ≤ 64 KiB
     size_t words = std::min<size_t>(16384, emptyDraws.size() - offset);
     vkCmdUpdateBuffer(cmd, draws->get(), offset * 4, words * 4, emptyDraws.data() + offset);
   }
@@ -66,10 +87,19 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
   const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];
-    SplatPush push{jointCount, chunk.firstCharacter, chunk.characterCount * jointCount, maxPixels,
-                   static_cast<uint32_t>(c), chunk.firstCharacter * jointCount, flags, 0};
+    SplatPush push{jointCount,
+                   chunk.firstCharacter,
+                   chunk.characterCount * jointCount,
+                   maxPixels,
+                   static_cast<uint32_t>(c),
+                   chunk.firstCharacter * jointCount,
+                   flags,
+                   0,
+                   uint32_t(drawnBones),
+                   uint32_t(drawnBones >> 32)};
     gpu::Binding bindings[] = {
-        gpu::storageBinding(0, *joints, chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
+        gpu::storageBinding(0, *joints, chunk.firstCharacter * perCharacter,
+                            chunk.characterCount * perCharacter),
         gpu::uniformBinding(1, *frameUniforms),
         gpu::storageBinding(2, *visibility, 0, pixels * sizeof(uint64_t)),
         gpu::storageBinding(3, *draws),
@@ -80,12 +110,14 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
         gpu::storageBinding(8, *cachedPoses.poseSource),
         gpu::storageBinding(9, *cachedPoses.cacheData),
         gpu::storageBinding(10, groups ? *groups : *masks),
+        gpu::uniformBinding(11, *lodLevels, 0, sizeof(gpu_types::CoverageParts)),
     };
     gpu::dispatch(cmd, program, bindings, push, push.jointTotal);
   }
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 }
 
 }  // namespace throng::render

@@ -20,7 +20,8 @@ struct JointChunk {
   uint32_t firstCharacter = 0;
   uint32_t characterCount = 0;
 };
-std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount, uint32_t maxStorageBufferRange);
+std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount,
+                                    uint32_t maxStorageBufferRange);
 
 // What the renderer needs to compose cached characters' joints itself (A = M · P from the
 // motion cache, see shaders/joint_fetch.glsl). Without a motion cache every joint is read from
@@ -34,20 +35,24 @@ struct CachedPoseInputs {
 };
 
 struct SplatJob {
-  const gpu::Buffer* joints = nullptr;        // input: JointMatrix per character per joint
-  const gpu::Buffer* frameUniforms = nullptr; // input: gpu_types::FrameUniforms
-  const gpu::Buffer* visibility = nullptr;    // output: width × height uint64, cleared first
-  const gpu::Buffer* draws = nullptr;         // output: VkDrawIndirectCommand per chunk (too-wide joints)
-  const gpu::Buffer* nearList = nullptr;      // output: chunk-local indices of too-wide joints
+  const gpu::Buffer* joints = nullptr;         // input: JointMatrix per character per joint
+  const gpu::Buffer* frameUniforms = nullptr;  // input: gpu_types::FrameUniforms
+  const gpu::Buffer* visibility = nullptr;     // output: width × height uint64, cleared first
+  const gpu::Buffer* draws = nullptr;  // output: VkDrawIndirectCommand per chunk (too-wide joints)
+  const gpu::Buffer* nearList = nullptr;  // output: chunk-local indices of too-wide joints
   uint32_t width = 0, height = 0;
   uint32_t characterCount = 0;
-  uint32_t jointCount = 0;                    // per character
-  float maxPixels = 16.0f;                    // wider sprites are left to the graphics pipeline
-  uint32_t maxStorageBufferRange = 0;         // chunk size of the joints binding
-  const gpu::Buffer* masks = nullptr;         // input: CoverageMask per character (LOD), see flags
-  uint32_t flags = 0;                         // kDrawUseMasks, kDrawTintLevel, kDrawCachedPoses, kDrawGroupTint
-  CachedPoseInputs cachedPoses;               // inputs: all four bound (placeholders when unused)
-  const gpu::Buffer* groups = nullptr;        // input: group per character (kDrawGroupTint; a placeholder otherwise)
+  uint32_t jointCount = 0;             // per character
+  float maxPixels = 16.0f;             // wider sprites are left to the graphics pipeline
+  uint32_t maxStorageBufferRange = 0;  // chunk size of the joints binding
+  const gpu::Buffer* masks = nullptr;  // input: CoverageMask per character (LOD), see flags
+  uint32_t flags = 0;            // kDrawUseMasks, kDrawTintLevel, kDrawCachedPoses, kDrawGroupTint
+  CachedPoseInputs cachedPoses;  // inputs: all four bound (placeholders when unused)
+  const gpu::Buffer* groups =
+      nullptr;  // input: group per character (kDrawGroupTint; a placeholder otherwise)
+  uint64_t drawnBones = ~uint64_t(0);  // bit j: joint j's bone is drawn (placements' are not)
+  const gpu::Buffer* lodLevels =
+      nullptr;  // input: uniform CoverageParts (kDrawLodLevels; a placeholder otherwise)
 
   std::vector<std::string> validate() const;
   // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the

@@ -12,7 +12,8 @@
 namespace throng::synth {
 namespace {
 
-const char* const kPartNames[kBodyPartCount] = {"left arm", "right arm", "torso", "left leg", "right leg"};
+const char* const kPartNames[kBodyPartCount] = {"left arm", "right arm", "torso", "left leg",
+                                                "right leg"};
 
 // The skeleton as a tree with bone lengths accumulated from the root.
 struct Tree {
@@ -49,7 +50,8 @@ struct Tree {
 
 Tree makeTree(const anim::Skeleton& skeleton) {
   const int n = skeleton.jointCount();
-  if (n < 1 || n > 64) fail("body parts: the coverage LOD supports 1..64 joints, the skeleton has ", n);
+  if (n < 1 || n > 64)
+    fail("body parts: the coverage LOD supports 1..64 joints, the skeleton has ", n);
   Tree t;
   t.rest = restPositions(skeleton);
   t.children.resize(size_t(n));
@@ -59,7 +61,8 @@ Tree makeTree(const anim::Skeleton& skeleton) {
       fail("body parts: joint ", j, " ('", skeleton.joints[size_t(j)].name, "') has parent ", p,
            ", expected joints stored parents first with the root at index 0");
     t.parent.push_back(p);
-    t.pathLength.push_back(p < 0 ? 0.0f : t.pathLength[size_t(p)] + glm::length(skeleton.joints[size_t(j)].offset));
+    t.pathLength.push_back(
+        p < 0 ? 0.0f : t.pathLength[size_t(p)] + glm::length(skeleton.joints[size_t(j)].offset));
     if (p >= 0) t.children[size_t(p)].push_back(j);
   }
   return t;
@@ -93,16 +96,20 @@ std::pair<Side, std::string> splitSide(const std::string& name) {
   } else if (size_t at = low.find("right"); at != std::string::npos) {
     side = Side::Right;
     erase(at, 5);
-  } else if (low.size() > 2 && (low[1] == '_' || low[1] == '.' || low[1] == '-') && (low[0] == 'l' || low[0] == 'r')) {
+  } else if (low.size() > 2 && (low[1] == '_' || low[1] == '.' || low[1] == '-') &&
+             (low[0] == 'l' || low[0] == 'r')) {
     side = low[0] == 'l' ? Side::Left : Side::Right;
     erase(0, 2);
-  } else if (low.size() > 2 && (endsWith(low, "_l") || endsWith(low, ".l") || endsWith(low, "-l"))) {
+  } else if (low.size() > 2 &&
+             (endsWith(low, "_l") || endsWith(low, ".l") || endsWith(low, "-l"))) {
     side = Side::Left;
     erase(low.size() - 2, 2);
-  } else if (low.size() > 2 && (endsWith(low, "_r") || endsWith(low, ".r") || endsWith(low, "-r"))) {
+  } else if (low.size() > 2 &&
+             (endsWith(low, "_r") || endsWith(low, ".r") || endsWith(low, "-r"))) {
     side = Side::Right;
     erase(low.size() - 2, 2);
-  } else if (name.size() > 1 && (name[0] == 'l' || name[0] == 'L' || name[0] == 'r' || name[0] == 'R') &&
+  } else if (name.size() > 1 &&
+             (name[0] == 'l' || name[0] == 'L' || name[0] == 'r' || name[0] == 'R') &&
              std::isupper(static_cast<unsigned char>(name[1]))) {
     side = std::tolower(static_cast<unsigned char>(name[0])) == 'l' ? Side::Left : Side::Right;
     erase(0, 1);
@@ -113,20 +120,23 @@ std::pair<Side, std::string> splitSide(const std::string& name) {
   return {side, stem};
 }
 
-bool contains(const std::string& s, const char* part) { return s.find(part) != std::string::npos; }
+bool contains(const std::string& s, const char* part) {
+  return s.find(part) != std::string::npos;
+}
 
 // Helper bones (twist, roll) and end markers never stand for the joint itself.
 bool isHelper(const std::string& stem) {
-  return contains(stem, "twist") || contains(stem, "roll") || contains(stem, "end") || contains(stem, "nub") ||
-         contains(stem, "site");
+  return contains(stem, "twist") || contains(stem, "roll") || contains(stem, "end") ||
+         contains(stem, "nub") || contains(stem, "site");
 }
 bool isElbow(const std::string& stem) {
-  return !isHelper(stem) && (contains(stem, "forearm") || contains(stem, "lowerarm") || contains(stem, "elbow"));
+  return !isHelper(stem) &&
+         (contains(stem, "forearm") || contains(stem, "lowerarm") || contains(stem, "elbow"));
 }
 bool isKnee(const std::string& stem) {
   if (isHelper(stem) || contains(stem, "up") || contains(stem, "thigh")) return false;
-  return stem == "leg" || contains(stem, "lowerleg") || contains(stem, "knee") || contains(stem, "shin") ||
-         contains(stem, "calf");
+  return stem == "leg" || contains(stem, "lowerleg") || contains(stem, "knee") ||
+         contains(stem, "shin") || contains(stem, "calf");
 }
 
 // The shallowest joint matching; nullopt when none or when two equally shallow ones do.
@@ -184,7 +194,8 @@ int middleOf(const Tree& tree, const std::vector<int>& chain) {
   float half = 0.5f * (tree.pathLength[size_t(chain.back())] - start);
   int best = chain.front();
   for (int j : chain)
-    if (std::abs(tree.pathLength[size_t(j)] - start - half) < std::abs(tree.pathLength[size_t(best)] - start - half))
+    if (std::abs(tree.pathLength[size_t(j)] - start - half) <
+        std::abs(tree.pathLength[size_t(best)] - start - half))
       best = j;
   return best;
 }
@@ -222,9 +233,11 @@ std::optional<Layout> layoutFromGeometry(const Tree& tree) {
     }
   }
   if (branches.size() < 4) return std::nullopt;
-  std::sort(branches.begin(), branches.end(), [](const Branch& a, const Branch& b) { return a.extent > b.extent; });
+  std::sort(branches.begin(), branches.end(),
+            [](const Branch& a, const Branch& b) { return a.extent > b.extent; });
   branches.resize(4);
-  std::sort(branches.begin(), branches.end(), [](const Branch& a, const Branch& b) { return a.minY < b.minY; });
+  std::sort(branches.begin(), branches.end(),
+            [](const Branch& a, const Branch& b) { return a.minY < b.minY; });
   auto centre = [&](const Branch& b) {
     std::vector<int> path = tree.pathFromRoot(b.deepest);
     return middleOf(tree, std::vector<int>(std::find(path.begin(), path.end(), b.top), path.end()));
@@ -241,6 +254,20 @@ uint64_t maskOf(const std::vector<int>& joints) {
   uint64_t mask = 0;
   for (int j : joints) mask |= uint64_t(1) << j;
   return mask;
+}
+
+// A limb's upper, lower and tip joints: along the path from its centre to its deepest joint.
+void setLimbChain(const Tree& tree, BodyPart& part) {
+  int deepest = part.centreJoint;
+  for (int j : part.joints)
+    if (tree.isAncestor(part.centreJoint, j) &&
+        tree.pathLength[size_t(j)] > tree.pathLength[size_t(deepest)])
+      deepest = j;
+  std::vector<int> path = tree.pathFromRoot(deepest);
+  auto at = std::find(path.begin(), path.end(), part.centreJoint);
+  part.upper = tree.parent[size_t(part.centreJoint)];
+  part.lower = at + 1 < path.end() ? *(at + 1) : -1;
+  part.tip = at + 2 < path.end() ? *(at + 2) : -1;
 }
 
 // Builds the parts from a layout; nullopt when the layout does not describe a body (a limb
@@ -265,6 +292,7 @@ std::optional<BodyParts> buildParts(const Tree& tree, const Layout& layout) {
     BodyPart& part = out.parts[size_t(limbPart[k])];
     part.centreJoint = layout.limbCentre[size_t(k)];
     part.joints = tree.subtree(top);
+    setLimbChain(tree, part);
   }
   // The pelvis is where the legs leave the trunk; mid-spine is halfway from it to the head.
   int pelvis = std::max(tree.parent[size_t(limbTop[2])], tree.parent[size_t(limbTop[3])]);
@@ -274,6 +302,10 @@ std::optional<BodyParts> buildParts(const Tree& tree, const Layout& layout) {
     out.baseMask |= uint64_t(1) << j;
     if (j == midSpine) break;
   }
+  out.parents = tree.parent;
+  out.pelvis = pelvis;
+  out.chest = std::max(tree.parent[size_t(limbTop[0])], tree.parent[size_t(limbTop[1])]);
+  out.head = layout.head;
   BodyPart& torso = out.parts[size_t(BodyPartId::Torso)];
   torso.centreJoint = midSpine;
   for (int j = 0; j < tree.size(); ++j)
@@ -291,8 +323,10 @@ std::optional<BodyParts> buildParts(const Tree& tree, const Layout& layout) {
         part.radius = std::max(part.radius, tree.boneDistance(part.centreJoint, j));
   }
   // Until setMeanCentres sees the motion: the rest pose standing on the ground.
-  float floor = 0.0f;
+  float floor = 0.0f, top = 0.0f;
   for (const glm::vec3& p : tree.rest) floor = std::min(floor, p.y);
+  for (const glm::vec3& p : tree.rest) top = std::max(top, p.y);
+  out.height = top - floor;
   for (BodyPart& part : out.parts) {
     glm::vec3 p = tree.rest[size_t(part.centreJoint)] - tree.rest[0];
     part.meanCentre = glm::vec3(p.x, p.y - floor, p.z);
@@ -310,13 +344,17 @@ const char* bodyPartName(int part) {
 std::vector<glm::vec3> restPositions(const anim::Skeleton& skeleton) {
   std::vector<glm::vec3> rest;
   for (const anim::Joint& joint : skeleton.joints) {
-    glm::vec3 base = joint.parent >= 0 && joint.parent < int(rest.size()) ? rest[size_t(joint.parent)] : glm::vec3(0.0f);
+    glm::vec3 base = joint.parent >= 0 && joint.parent < int(rest.size())
+                         ? rest[size_t(joint.parent)]
+                         : glm::vec3(0.0f);
     rest.push_back(base + joint.offset);
   }
   return rest;
 }
 
-int countJoints(uint64_t mask) { return std::popcount(mask); }
+int countJoints(uint64_t mask) {
+  return std::popcount(mask);
+}
 
 BodyParts describeBodyParts(const anim::Skeleton& skeleton) {
   Tree tree = makeTree(skeleton);
@@ -333,25 +371,107 @@ BodyParts describeBodyParts(const anim::Skeleton& skeleton) {
     }
   }
   fail("body parts: cannot find two arms and two legs in a ", skeleton.jointCount(),
-       "-joint skeleton: expected joints named like LeftForeArm/LeftLeg (or a rest pose with four limbs "
+       "-joint skeleton: expected joints named like LeftForeArm/LeftLeg (or a rest pose with four "
+       "limbs "
        "hanging off the root-to-head chain)");
 }
 
 void setMeanCentres(BodyParts& parts, const anim::MotionPair& pair) {
   if (pair.jointCount() != parts.jointCount)
-    fail("body parts: the motion pair has ", pair.jointCount(), " joints, the body parts describe ", parts.jointCount);
+    fail("body parts: the motion pair has ", pair.jointCount(), " joints, the body parts describe ",
+         parts.jointCount);
   std::vector<anim::PoseJoint> pose(size_t(parts.jointCount));
   std::array<glm::dvec3, kBodyPartCount> sum{};
+  double heights = 0.0;
   int samples = 0;
   for (float w : {0.0f, 1.0f}) {
     int frames = w == 0.0f ? pair.slow.frameCount : pair.fast.frameCount;
     for (int f = 0; f < frames; ++f, ++samples) {
       anim::poseCharacterSpace(pair, (float(f) + 0.5f) / float(frames), w, pose);
-      for (int k = 0; k < kBodyPartCount; ++k) sum[size_t(k)] += glm::dvec3(pose[size_t(parts.parts[size_t(k)].centreJoint)].position);
+      for (int k = 0; k < kBodyPartCount; ++k)
+        sum[size_t(k)] += glm::dvec3(pose[size_t(parts.parts[size_t(k)].centreJoint)].position);
+      auto [low, high] = std::minmax_element(
+          pose.begin(), pose.end(), [](const anim::PoseJoint& a, const anim::PoseJoint& b) {
+            return a.position.y < b.position.y;
+          });
+      heights += double(high->position.y - low->position.y);
     }
   }
   if (samples == 0) fail("body parts: the motion pair has no frames");
-  for (int k = 0; k < kBodyPartCount; ++k) parts.parts[size_t(k)].meanCentre = glm::vec3(sum[size_t(k)] / double(samples));
+  for (int k = 0; k < kBodyPartCount; ++k)
+    parts.parts[size_t(k)].meanCentre = glm::vec3(sum[size_t(k)] / double(samples));
+  parts.height = float(heights / double(samples));
+  parts.slowCycleSeconds = pair.slow.duration();
+  parts.fastCycleSeconds = pair.fast.duration();
+  parts.jointRadius = pair.jointRadius;
+}
+
+namespace {
+
+uint64_t ancestorsClosed(uint64_t mask, const std::vector<int32_t>& parents) {
+  uint64_t closed = 0;
+  for (int j = 0; j < int(parents.size()) && j < 64; ++j)
+    if ((mask >> j) & 1u)
+      for (int a = j; a >= 0; a = parents[size_t(a)]) closed |= uint64_t(1) << a;
+  return closed;
+}
+
+uint64_t bitsOf(std::initializer_list<int> joints) {
+  uint64_t mask = 0;
+  for (int j : joints)
+    if (j >= 0 && j < 64) mask |= uint64_t(1) << j;
+  return mask;
+}
+
+// Each drawn joint's bone starts at its nearest ancestor that is drawn or is the pelvis.
+void setBones(const BodyParts& parts, LevelJoints& level) {
+  level.boneFrom.fill(255);
+  level.boneRadius.fill(1.0f);
+  const uint64_t anchors = level.draw | bitsOf({parts.pelvis});
+  for (int j = 0; j < parts.jointCount; ++j) {
+    if (!((level.draw >> j) & 1u)) continue;
+    const int parent = parts.parents[size_t(j)];
+    int from = parent;
+    while (from >= 0 && !((anchors >> from) & 1u)) from = parts.parents[size_t(from)];
+    if (from < 0 || from == parent) continue;
+    level.boneFrom[size_t(j)] = uint8_t(from);
+    if (parts.jointRadius.size() != size_t(parts.jointCount) ||
+        !(parts.jointRadius[size_t(j)] > 0.0f))
+      continue;
+    float thickest = 0.0f;
+    for (int k = j; k != from; k = parts.parents[size_t(k)])
+      thickest = std::max(thickest, parts.jointRadius[size_t(k)]);
+    level.boneRadius[size_t(j)] = thickest / parts.jointRadius[size_t(j)];
+  }
+}
+
+}  // namespace
+
+std::array<LevelJoints, 3> levelJoints(const BodyParts& parts) {
+  std::array<LevelJoints, 3> levels;
+  const BodyPart* arms[2] = {&parts.parts[size_t(BodyPartId::LeftArm)],
+                             &parts.parts[size_t(BodyPartId::RightArm)]};
+  const BodyPart* legs[2] = {&parts.parts[size_t(BodyPartId::LeftLeg)],
+                             &parts.parts[size_t(BodyPartId::RightLeg)]};
+  const uint64_t trunk = bitsOf({0, parts.pelvis, parts.chest, parts.head});
+  uint64_t mid = trunk, far = trunk;
+  for (const BodyPart* arm : arms) {
+    mid |= bitsOf({arm->lower});
+    far |= bitsOf({arm->upper, arm->centreJoint, arm->lower});
+  }
+  for (const BodyPart* leg : legs) {
+    mid |= bitsOf({leg->lower, leg->tip});
+    far |= bitsOf({leg->upper, leg->centreJoint, leg->lower});
+  }
+  mid = ancestorsClosed(mid, parts.parents);
+  levels[0].draw = far;
+  levels[1].draw = mid;
+  levels[2].draw = parts.allMask;
+  for (LevelJoints& level : levels) {
+    level.synth = ancestorsClosed(level.draw, parts.parents);
+    setBones(parts, level);
+  }
+  return levels;
 }
 
 }  // namespace throng::synth

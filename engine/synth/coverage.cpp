@@ -1,5 +1,6 @@
 #include "synth/coverage.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -10,9 +11,10 @@ namespace throng::synth {
 
 using namespace gpu_types;
 
-CoverageCamera coverageCamera(const glm::mat4& view, float fovYDegrees, uint32_t width, uint32_t height,
-                              float nearPlane) {
-  if (!(fovYDegrees > 0.0f && fovYDegrees < 180.0f)) fail("coverage camera: fovy must be in (0, 180) degrees, got ", fovYDegrees);
+CoverageCamera coverageCamera(const glm::mat4& view, float fovYDegrees, uint32_t width,
+                              uint32_t height, float nearPlane) {
+  if (!(fovYDegrees > 0.0f && fovYDegrees < 180.0f))
+    fail("coverage camera: fovy must be in (0, 180) degrees, got ", fovYDegrees);
   CoverageCamera camera;
   camera.view = view;
   camera.width = width;
@@ -22,37 +24,70 @@ CoverageCamera coverageCamera(const glm::mat4& view, float fovYDegrees, uint32_t
   return camera;
 }
 
+namespace {
+
+void setLevelTables(CoverageParts& out, const BodyParts& parts,
+                    const CoverageThresholds& thresholds) {
+  const std::array<LevelJoints, 3> levels = levelJoints(parts);
+  const float enter[3] = {0.0f, thresholds.midHeight, thresholds.nearHeight};
+  for (uint32_t l = 0; l < kLevelCount; ++l) {
+    CoverageLevel& level = out.levels[l];
+    level.synthLo = uint32_t(levels[l].synth);
+    level.synthHi = uint32_t(levels[l].synth >> 32);
+    level.drawLo = uint32_t(levels[l].draw);
+    level.drawHi = uint32_t(levels[l].draw >> 32);
+    level.enterHeight = enter[l];
+    level.leaveHeight = enter[l] * (1.0f - thresholds.hysteresis);
+    for (uint32_t j = 0; j < 64; ++j) {
+      const uint32_t at = l * 64 + j;
+      out.boneFrom[at / 16][(at / 4) % 4] |= uint32_t(levels[l].boneFrom[j]) << (8 * (at % 4));
+      out.boneRadius[at / 4][at % 4] = levels[l].boneRadius[j];
+    }
+  }
+}
+
+}  // namespace
+
 CoverageParts makeCoverageParts(const BodyParts& parts, const CoverageThresholds& thresholds) {
   if (parts.jointCount < 1 || parts.jointCount > 64)
     fail("coverage: body parts describe ", parts.jointCount, " joints, expected 1..64");
+  if (!(thresholds.midHeight >= 0.0f) || !(thresholds.nearHeight >= 0.0f))
+    fail("coverage: the mid and near heights must be >= 0 pixels, got ", thresholds.midHeight,
+         " and ", thresholds.nearHeight);
+  if (!(thresholds.hysteresis >= 0.0f && thresholds.hysteresis < 1.0f))
+    fail("coverage: the hysteresis must be in [0, 1), got ", thresholds.hysteresis);
+  if (!(thresholds.minChangeSeconds >= 0.0f))
+    fail("coverage: the least time between level changes must be >= 0 s");
   CoverageParts out{};
-  out.baseLo = uint32_t(parts.baseMask);
-  out.baseHi = uint32_t(parts.baseMask >> 32);
+  // Near at any height (threshold 0) means every joint everywhere, off screen too.
+  const uint64_t base = thresholds.nearHeight <= 0.0f ? parts.allMask : parts.baseMask;
+  out.baseLo = uint32_t(base);
+  out.baseHi = uint32_t(base >> 32);
   out.allLo = uint32_t(parts.allMask);
   out.allHi = uint32_t(parts.allMask >> 32);
+  out.body = glm::vec4(parts.height, thresholds.minChangeSeconds, parts.slowCycleSeconds,
+                       parts.fastCycleSeconds);
   for (int k = 0; k < kBodyPartCount; ++k) {
     const BodyPart& part = parts.parts[size_t(k)];
-    float threshold = thresholds.pixels[size_t(k)];
-    if (!(threshold >= 0.0f)) fail("coverage: the ", bodyPartName(k), " threshold must be >= 0 pixels, got ", threshold);
     if (part.centreJoint < 0 || part.centreJoint >= parts.jointCount)
-      fail("coverage: the ", bodyPartName(k), " has centre joint ", part.centreJoint, " of ", parts.jointCount);
+      fail("coverage: the ", bodyPartName(k), " has centre joint ", part.centreJoint, " of ",
+           parts.jointCount);
     CoveragePart& p = out.parts[k];
     p.centre = glm::vec4(part.meanCentre, part.radius);
     p.joint = uint32_t(part.centreJoint);
-    p.threshold = threshold;
     // The root's matrix is a vertical "bone" of length 2r centred on it (see synth_pose.comp).
     p.bonePoint = part.centreJoint == 0 ? 0.5f : 1.0f;
-    p.maskLo = uint32_t(part.activates);
-    p.maskHi = uint32_t(part.activates >> 32);
   }
+  setLevelTables(out, parts, thresholds);
   return out;
 }
 
-CoveragePush makeCoveragePush(const CoverageCamera& camera, uint32_t jointCount, uint32_t firstCharacter,
-                              uint32_t characterCount, uint32_t flags) {
+CoveragePush makeCoveragePush(const CoverageCamera& camera, uint32_t jointCount,
+                              uint32_t firstCharacter, uint32_t characterCount, uint32_t flags) {
   CoveragePush push{};
   push.view = camera.view;
-  const float f = camera.focalPixels, halfW = 0.5f * float(camera.width), halfH = 0.5f * float(camera.height);
+  const float f = camera.focalPixels, halfW = 0.5f * float(camera.width),
+              halfH = 0.5f * float(camera.height);
   push.viewport = glm::vec4(float(camera.width), float(camera.height), f, camera.nearPlane);
   const float nx = std::sqrt(f * f + halfW * halfW), ny = std::sqrt(f * f + halfH * halfH);
   push.frustum = glm::vec4(f / nx, halfW / nx, f / ny, halfH / ny);
@@ -81,15 +116,57 @@ float sphereCoveragePixels(const CoveragePush& push, glm::vec3 worldCentre, floa
   return std::min(area, screen);
 }
 
-CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
-                               glm::vec4 motion, const JointMatrix* joints, const CoverageMask& previous,
-                               float* areas) {
+float projectedHeight(const CoveragePush& push, glm::vec3 origin, float height) {
+  const glm::vec4 v = push.view * glm::vec4(origin + glm::vec3(0.0f, 0.5f * height, 0.0f), 1.0f);
+  const float z = -v.z;
+  return z > 0.5f * height ? push.viewport.z * height / z : 1.0e9f;
+}
+
+namespace {
+
+// Mirrors levelForHeight and nextLevel in coverage_common.glsl.
+uint32_t levelForHeight(const CoverageParts& parts, uint32_t level, float h) {
+  while (level + 1u < kLevelCount && h >= parts.levels[level + 1u].enterHeight) level = level + 1u;
+  while (level > 0u && h < parts.levels[level].leaveHeight) level = level - 1u;
+  return level;
+}
+
+std::pair<uint32_t, uint32_t> nextLevel(const CoverageParts& parts, const CoverageMask& previous,
+                                        glm::vec4 motion, float h, bool visible) {
+  const uint32_t state = previous.state;
+  const bool initialized = (state & kStateInitialized) != 0u;
+  const float previousPhase = float(state >> kStatePhaseShift) / 65535.0f;
+  float advance = motion.x - previousPhase;
+  const bool wrapped = advance < 0.0f;
+  if (wrapped) advance = advance + 1.0f;
+  const float cycleSeconds = parts.body.z * (1.0f - motion.y) + parts.body.w * motion.y;
+  uint32_t timer = std::min(((state >> kStateTimerShift) & kStateTimerMax) +
+                                uint32_t(advance * cycleSeconds * kStateTimerUnits),
+                            kStateTimerMax);
+  uint32_t level = initialized ? std::min(previous.level, kLevelCount - 1u) : kLevelFar;
+  const uint32_t target = levelForHeight(parts, level, h);
+  if (!initialized) {
+    level = target;
+    timer = 0u;
+  } else if (target != level && float(timer) >= parts.body.y * kStateTimerUnits &&
+             (wrapped || !visible)) {
+    level = target;
+    timer = 0u;
+  }
+  const uint32_t phaseBits = std::min(uint32_t(motion.x * 65535.0f), 65535u);
+  return {level, kStateInitialized | (timer << kStateTimerShift) | (phaseBits << kStatePhaseShift)};
+}
+
+}  // namespace
+
+CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts,
+                               glm::vec4 placement, glm::vec4 motion, const JointMatrix* joints,
+                               const CoverageMask& previous, float* areas) {
   const uint64_t previousMask = maskBits(previous);
   const bool readJoints = (push.flags & kCoverageReadJoints) != 0u && joints != nullptr;
   const float c = std::cos(placement.w), s = std::sin(placement.w);
   const float scale = motion.w;
-  uint64_t mask = uint64_t(parts.baseLo) | (uint64_t(parts.baseHi) << 32);
-  uint32_t active = 0;
+  uint32_t onScreen = 0;
   for (uint32_t k = 0; k < kCoveragePartCount; ++k) {
     const CoveragePart& part = parts.parts[k];
     glm::vec3 centre;
@@ -105,31 +182,35 @@ CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& pa
     }
     const float area = sphereCoveragePixels(push, centre, part.centre.w * scale);
     if (areas) areas[k] = area;
-    if (area >= part.threshold) {
-      mask |= uint64_t(part.maskLo) | (uint64_t(part.maskHi) << 32);
-      active |= 1u << k;
-    }
+    if (area > 0.0f) onScreen |= 1u << k;
   }
+  const float height = parts.body.x * scale;
+  const float h = projectedHeight(push, glm::vec3(placement), height);
+  // Mirrors bodyOnScreen in coverage_common.glsl.
+  const bool visible =
+      sphereCoveragePixels(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f),
+                           0.8f * height) > 0.0f;
+  const auto [level, state] = nextLevel(parts, previous, motion, h, visible);
+  const CoverageLevel& chosen = parts.levels[level];
   CoverageMask out{};
-  out.lo = uint32_t(mask);
-  out.hi = uint32_t(mask >> 32);
-  const uint64_t all = uint64_t(parts.allLo) | (uint64_t(parts.allHi) << 32);
-  const uint64_t base = uint64_t(parts.baseLo) | (uint64_t(parts.baseHi) << 32);
-  out.level = mask == all ? kLevelNear : (mask == base ? kLevelFar : kLevelMid);
-  out.parts = active;
+  out.lo = visible ? chosen.synthLo : parts.baseLo;
+  out.hi = visible ? chosen.synthHi : parts.baseHi;
+  out.level = level;
+  out.state = state | onScreen;
   return out;
 }
 
 void coverageCpu(const CoverageCamera& camera, const CoverageParts& parts, uint32_t jointCount,
-                 const crowd::Crowd& crowd, std::span<const JointMatrix> joints, std::span<CoverageMask> masks,
-                 std::span<float> areas) {
+                 const crowd::Crowd& crowd, std::span<const JointMatrix> joints,
+                 std::span<CoverageMask> masks, std::span<float> areas) {
   const size_t n = crowd.size();
   if (masks.size() != n) fail("coverageCpu: ", masks.size(), " masks for ", n, " characters");
   if (!joints.empty() && joints.size() != n * jointCount)
     fail("coverageCpu: ", joints.size(), " joint matrices, expected ", n, " × ", jointCount);
   if (!areas.empty() && areas.size() != n * kCoveragePartCount)
     fail("coverageCpu: ", areas.size(), " areas, expected 5 × ", n);
-  uint32_t flags = (joints.empty() ? 0u : kCoverageReadJoints) | (areas.empty() ? 0u : kCoverageWriteAreas);
+  uint32_t flags =
+      (joints.empty() ? 0u : kCoverageReadJoints) | (areas.empty() ? 0u : kCoverageWriteAreas);
   const CoveragePush push = makeCoveragePush(camera, jointCount, 0, uint32_t(n), flags);
   for (size_t i = 0; i < n; ++i) {
     masks[i] = coverageCharacter(push, parts, crowd.placement[i], crowd.motion[i],
@@ -147,32 +228,40 @@ bool parentsBeforeChildren(uint64_t mask, std::span<const int32_t> parents) {
 std::vector<std::string> CoverageJob::validate() const {
   std::vector<std::string> problems;
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
-  if (crowd && (!crowd->placement || !crowd->motion)) problems.push_back("crowd buffers are not allocated");
+  if (crowd && (!crowd->placement || !crowd->motion))
+    problems.push_back("crowd buffers are not allocated");
   if (!parts || !*parts) problems.push_back("input 'parts' (uniform CoverageParts) is missing");
   if (!masks || !*masks) problems.push_back("input/output 'masks' buffer is missing");
-  if (jointCount < 1 || jointCount > 64) problems.push_back(concat("jointCount must be 1..64, got ", jointCount));
+  if (jointCount < 1 || jointCount > 64)
+    problems.push_back(concat("jointCount must be 1..64, got ", jointCount));
   if (camera.width == 0 || camera.height == 0) problems.push_back("camera viewport is empty");
-  if (!(camera.focalPixels > 0.0f)) problems.push_back(concat("camera focal length must be > 0 pixels, got ", camera.focalPixels));
-  if (!(camera.nearPlane >= 0.0f)) problems.push_back(concat("camera near plane must be >= 0, got ", camera.nearPlane));
+  if (!(camera.focalPixels > 0.0f))
+    problems.push_back(concat("camera focal length must be > 0 pixels, got ", camera.focalPixels));
+  if (!(camera.nearPlane >= 0.0f))
+    problems.push_back(concat("camera near plane must be >= 0, got ", camera.nearPlane));
   if (parts && *parts && parts->size() < sizeof(CoverageParts))
-    problems.push_back(concat("input 'parts' holds ", parts->size(), " bytes, CoverageParts needs ", sizeof(CoverageParts)));
+    problems.push_back(concat("input 'parts' holds ", parts->size(), " bytes, CoverageParts needs ",
+                              sizeof(CoverageParts)));
   if (!crowd || !problems.empty()) return problems;
-  if (firstCharacter > crowd->count) problems.push_back("firstCharacter is past the end of the crowd");
-  const uint32_t count = characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
+  if (firstCharacter > crowd->count)
+    problems.push_back("firstCharacter is past the end of the crowd");
+  const uint32_t count =
+      characterCount ? characterCount : crowd->count - std::min(firstCharacter, crowd->count);
   const VkDeviceSize end = VkDeviceSize(firstCharacter) + count;
   if (end > crowd->count) problems.push_back("chunk runs past the end of the crowd");
   if (masks->size() < end * sizeof(CoverageMask))
-    problems.push_back(concat("input/output 'masks' holds ", masks->size(), " bytes, characters up to ", end, " need ",
+    problems.push_back(concat("input/output 'masks' holds ", masks->size(),
+                              " bytes, characters up to ", end, " need ",
                               end * sizeof(CoverageMask)));
   if (joints && *joints) {
     VkDeviceSize need = VkDeviceSize(count) * jointCount * sizeof(JointMatrix);
     if (jointsOffset + need > joints->size())
-      problems.push_back(concat("input 'joints' holds ", joints->size(), " bytes, the chunk needs ", need,
-                                " at offset ", jointsOffset));
+      problems.push_back(concat("input 'joints' holds ", joints->size(), " bytes, the chunk needs ",
+                                need, " at offset ", jointsOffset));
   }
   if (areas && *areas && areas->size() < end * kCoveragePartCount * sizeof(float))
-    problems.push_back(concat("output 'areas' holds ", areas->size(), " bytes, characters up to ", end, " need ",
-                              end * kCoveragePartCount * sizeof(float)));
+    problems.push_back(concat("output 'areas' holds ", areas->size(), " bytes, characters up to ",
+                              end, " need ", end * kCoveragePartCount * sizeof(float)));
   return problems;
 }
 
@@ -181,14 +270,16 @@ void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program
   const uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
   if (count == 0) return;
   const bool readJoints = joints && *joints, writeAreas = areas && *areas;
-  const CoveragePush push = makeCoveragePush(camera, jointCount, firstCharacter, count,
-                                             (readJoints ? kCoverageReadJoints : 0u) | (writeAreas ? kCoverageWriteAreas : 0u));
+  const CoveragePush push = makeCoveragePush(
+      camera, jointCount, firstCharacter, count,
+      (readJoints ? kCoverageReadJoints : 0u) | (writeAreas ? kCoverageWriteAreas : 0u));
   // Unused optional bindings get a stand-in buffer the shader never touches (flags say so).
   gpu::Binding bindings[] = {
       gpu::uniformBinding(0, *parts, 0, sizeof(CoverageParts)),
       gpu::storageBinding(1, crowd->placement),
       gpu::storageBinding(2, crowd->motion),
-      readJoints ? gpu::storageBinding(3, *joints, jointsOffset, VkDeviceSize(count) * jointCount * sizeof(JointMatrix))
+      readJoints ? gpu::storageBinding(3, *joints, jointsOffset,
+                                       VkDeviceSize(count) * jointCount * sizeof(JointMatrix))
                  : gpu::storageBinding(3, crowd->placement),
       gpu::storageBinding(4, *masks),
       writeAreas ? gpu::storageBinding(5, *areas) : gpu::storageBinding(5, *masks),

@@ -11,6 +11,7 @@
 #include "render/crowd_renderer.h"
 #include "render/joint_splat.h"
 #include "render/joint_splat_cpu.h"
+#include "synth/coverage.h"
 #include "synth/cpu_synth.h"
 
 using namespace throng;
@@ -25,6 +26,7 @@ TEST_CASE("SplatJob: validity") {
   CHECK(all.find("'visibility'") != std::string::npos);
   CHECK(all.find("'draws'") != std::string::npos);
   CHECK(all.find("'nearList'") != std::string::npos);
+  CHECK(all.find("'lodLevels'") != std::string::npos);
   CHECK(all.find("target size is zero") != std::string::npos);
 }
 
@@ -65,20 +67,38 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
   const float maxPixels = 12.0f;
 
   gpu::Buffer jointBuffer = gpu::makeStorageBuffer<synth::JointMatrix>(ctx, matrices);
-  gpu::Buffer uniforms(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::HostVisible);
+  gpu::Buffer uniforms(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                       gpu::MemoryUse::HostVisible);
   std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
-  gpu::Buffer visibility(ctx, VkDeviceSize(width) * height * 8, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer draws(ctx, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer nearList(ctx, VkDeviceSize(matrices.size()) * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer visibility(ctx, VkDeviceSize(width) * height * 8, gpu::kStorageUsage,
+                         gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer draws(ctx, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer nearList(ctx, VkDeviceSize(matrices.size()) * 4, gpu::kStorageUsage,
+                       gpu::MemoryUse::DeviceLocal);
   gpu::ComputeProgram program(ctx, "joint_splat.comp");
-  render::SplatJob job{&jointBuffer, &uniforms, &visibility, &draws, &nearList, width, height,
-                       static_cast<uint32_t>(crowd.size()), joints, maxPixels, ctx.info().maxStorageBufferRange,
-                       &nearList, 0,  // no LOD: any buffer serves as the unused masks binding
+  render::SplatJob job{&jointBuffer,
+                       &uniforms,
+                       &visibility,
+                       &draws,
+                       &nearList,
+                       width,
+                       height,
+                       static_cast<uint32_t>(crowd.size()),
+                       joints,
+                       maxPixels,
+                       ctx.info().maxStorageBufferRange,
+                       &nearList,
+                       0,  // no LOD: any buffer serves as the unused masks binding
                        {&nearList, &nearList, &nearList, &nearList}};  // no cache: placeholders
+  gpu::Buffer noLevels(ctx, sizeof(gpu_types::CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                       gpu::MemoryUse::HostVisible);
+  job.lodLevels = &noLevels;  // flags leave it unread
   REQUIRE(job.validate().empty());
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, program); });
 
-  render::SplatCpuResult cpu = render::splatJointsCpu(matrices, frame, joints, maxPixels, width, height);
+  render::SplatCpuResult cpu =
+      render::splatJointsCpu(matrices, frame, joints, maxPixels, width, height);
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
   auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
   auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
@@ -111,11 +131,12 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
       if (std::abs(gc - cc) > 2) ++colourMismatch;
     }
   }
-  MESSAGE("splat: ", covered, " pixels covered, ", coverageMismatch, " coverage mismatches, ", colourMismatch,
-          " colour mismatches, ", differentWinner, " pixels won by another joint, worst depth diff ", worstDepth, "; near joints GPU ", gpuNear.size(), " CPU ",
-          cpu.nearJoints.size());
+  MESSAGE("splat: ", covered, " pixels covered, ", coverageMismatch, " coverage mismatches, ",
+          colourMismatch, " colour mismatches, ", differentWinner,
+          " pixels won by another joint, worst depth diff ", worstDepth, "; near joints GPU ",
+          gpuNear.size(), " CPU ", cpu.nearJoints.size());
   CHECK(covered > 500);
-  CHECK(coverageMismatch <= covered / 200);  // silhouette pixels may flip on float rounding
+  CHECK(coverageMismatch <= covered / 200);    // silhouette pixels may flip on float rounding
   CHECK(colourMismatch <= 3 * covered / 200);  // ≤ 0.5% of channels off by more than 2 levels
   CHECK(differentWinner <= covered / 50);
   CHECK(cpu.nearJoints.size() > 0);
