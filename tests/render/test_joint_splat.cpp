@@ -9,6 +9,7 @@
 #include "gpu/program.h"
 #include "gpu_fixture.h"
 #include "render/crowd_renderer.h"
+#include "render/joint_lod_cpu.h"
 #include "render/joint_splat.h"
 #include "render/joint_splat_cpu.h"
 #include "synth/coverage.h"
@@ -42,30 +43,26 @@ TEST_CASE("SplatJob: chunks cover the crowd exactly") {
   CHECK(render::jointChunks(0, 25, 1 << 20).empty());
 }
 
-TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
-  gpu::Context& ctx = test::gpuContext();
-  if (!ctx.info().int64Atomics) {
-    MESSAGE("SKIPPED: device lacks 64-bit buffer atomics");
-    return;
-  }
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions options;
-  options.characters = 400;
-  options.seed = 3;
-  crowd::Crowd crowd = crowd::makeScenario(options);
-  const uint32_t joints = static_cast<uint32_t>(pair.jointCount());
-  std::vector<synth::JointMatrix> matrices(crowd.size() * joints);
-  synth::poseCrowdCpu(pair, crowd, matrices, 2);
+namespace {
 
+const gpu_types::CoverageParts kNoLevels{};
+
+// Splats `matrices` (crowd × joints) on the GPU and with the CPU twins (drawnJointMatrices,
+// splatJointsCpu) and compares the visibility buffers and the lists of joints too wide to splat.
+void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joints,
+                    const render::Camera& camera, uint64_t bones,
+                    std::span<const synth::CoverageMask> masks,
+                    const gpu_types::CoverageParts* levels) {
+  const size_t characters = matrices.size() / joints;
   const uint32_t width = 320, height = 180;
   render::DrawParams params;
-  params.camera = render::cameraPreset("street", crowd::scenarioExtent(options));
+  params.camera = camera;
   params.width = width;
   params.height = height;
   gpu_types::FrameUniforms frame = render::makeFrameUniforms(params);
   const float maxPixels = 12.0f;
 
+  gpu::Context& ctx = test::gpuContext();
   gpu::Buffer jointBuffer = gpu::makeStorageBuffer<synth::JointMatrix>(ctx, matrices);
   gpu::Buffer uniforms(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                        gpu::MemoryUse::HostVisible);
@@ -84,21 +81,33 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
                        &nearList,
                        width,
                        height,
-                       static_cast<uint32_t>(crowd.size()),
+                       static_cast<uint32_t>(characters),
                        joints,
                        maxPixels,
                        ctx.info().maxStorageBufferRange,
-                       &nearList,
-                       0,  // no LOD: any buffer serves as the unused masks binding
+                       &nearList,  // without LOD any buffer serves as the unused masks binding
+                       0,
                        {&nearList, &nearList, &nearList, &nearList}};  // no cache: placeholders
-  gpu::Buffer noLevels(ctx, sizeof(gpu_types::CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                       gpu::MemoryUse::HostVisible);
-  job.lodLevels = &noLevels;  // flags leave it unread
+  // The LOD inputs: the levels' uniform (a placeholder the flags leave unread without LOD).
+  gpu::Buffer levelsBuffer(ctx, sizeof(gpu_types::CoverageParts),
+                           VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::HostVisible);
+  std::memcpy(levelsBuffer.mapped(), levels ? levels : &kNoLevels,
+              sizeof(gpu_types::CoverageParts));
+  gpu::Buffer masksBuffer;
+  if (!masks.empty()) {
+    masksBuffer = gpu::makeStorageBuffer<synth::CoverageMask>(ctx, masks);
+    job.masks = &masksBuffer;
+    job.flags = gpu_types::kDrawUseMasks | (levels ? gpu_types::kDrawLodLevels : 0u);
+  }
+  job.lodLevels = &levelsBuffer;
+  job.drawnBones = bones;
   REQUIRE(job.validate().empty());
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, program); });
 
+  const std::vector<synth::JointMatrix> drawn =
+      render::drawnJointMatrices(matrices, joints, bones, masks, levels);
   render::SplatCpuResult cpu =
-      render::splatJointsCpu(matrices, frame, joints, maxPixels, width, height);
+      render::splatJointsCpu(drawn, frame, joints, maxPixels, width, height);
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
   auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
   auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
@@ -142,4 +151,43 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
   CHECK(cpu.nearJoints.size() > 0);
   CHECK(gpuNear == cpu.nearJoints);
   CHECK(ctx.validationMessageCount() == 0);
+}
+
+}  // namespace
+
+TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
+  gpu::Context& ctx = test::gpuContext();
+  if (!ctx.info().int64Atomics) {
+    MESSAGE("SKIPPED: device lacks 64-bit buffer atomics");
+    return;
+  }
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 400;
+  options.seed = 3;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  const uint32_t joints = static_cast<uint32_t>(pair.jointCount());
+  std::vector<synth::JointMatrix> matrices(crowd.size() * joints);
+  synth::poseCrowdCpu(pair, crowd, matrices, 2);
+  const render::Camera camera = render::cameraPreset("street", crowd::scenarioExtent(options));
+  SUBCASE("every joint") {
+    checkSplatTwin(matrices, joints, camera, ~uint64_t(0), {}, nullptr);
+  }
+  SUBCASE("a bone mask and the LOD levels (long bones)") {
+    synth::BodyParts parts = synth::describeBodyParts(clips.slow.skeleton);
+    synth::setMeanCentres(parts, pair);
+    const gpu_types::CoverageParts levels = synth::makeCoverageParts(parts, {});
+    // Levels as a 1280x720 frame would pick them (a mix), splatted at 320x180.
+    std::vector<synth::CoverageMask> masks(crowd.size());
+    synth::coverageCpu(
+        synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane),
+        levels, joints, crowd, {}, masks, {});
+    size_t perLevel[3] = {0, 0, 0};
+    for (const synth::CoverageMask& m : masks) ++perLevel[m.level];
+    MESSAGE("levels far/mid/near ", perLevel[0], "/", perLevel[1], "/", perLevel[2]);
+    CHECK(perLevel[0] > 20);
+    CHECK(perLevel[1] + perLevel[2] > 20);
+    checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels);
+  }
 }
