@@ -173,9 +173,11 @@ TEST_CASE(
       const std::vector<synth::JointMatrix> drawn =
           render::drawnJointMatrices(joints, n, body.bones, masks, &body.levels);
       const gpu_types::FrameUniforms frame = frameOf(camera);
-      size_t tall = 0, missing = 0, levels[3] = {0, 0, 0};
+      size_t tall = 0, missing = 0, levels[3] = {0, 0, 0}, synthesized = 0, sprites = 0;
       for (size_t c = 0; c < crowd.size(); ++c) {
         ++levels[masks[c].level];
+        synthesized += size_t(synth::countJoints(synth::maskBits(masks[c])));
+        for (uint32_t j = 0; j < n; ++j) sprites += isDrawn(drawn[c * n + j]) ? 1 : 0;
         if (screenHeight(frame, &joints[c * n], n) < 40.0f) continue;
         ++tall;
         for (int k : {0, 1, 3, 4}) {
@@ -189,7 +191,9 @@ TEST_CASE(
         }
       }
       MESSAGE(std::string(preset), " camera, seed ", seed, ", ", crowd.size(),
-              " characters: far/mid/near ", levels[0], "/", levels[1], "/", levels[2], "; ", tall,
+              " characters: far/mid/near ", levels[0], "/", levels[1], "/", levels[2],
+              "; joints synthesized ", double(synthesized) / double(crowd.size()), " and drawn ",
+              double(sprites) / double(crowd.size()), " per character; ", tall,
               " at least 40 px tall, limbs missing ", missing);
       CHECK(missing == 0);
       allTall += tall;
