@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numeric>
 
 #include "core/error.h"
 #include "core/log.h"
+#include "crowd/circle_paths.h"
 #include "crowd/trajectories.h"
 #include "storyboard/codec.h"
 #include "storyboard/legend.h"
@@ -140,13 +142,36 @@ render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
   return setup;
 }
 
+render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& o, const anim::ClipPair& clips) {
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  render::SteeredCrowdSetup setup;
+  setup.crowd = makeSceneCrowd(o);
+  setup.crowd.steering = anim::Steering::KeepHeading;  // the avoidance pass sets the heading
+  setup.paths = crowd::circlePaths(setup.crowd, crowd::clipRootSpeed(pair.slow),
+                                   crowd::clipRootSpeed(pair.fast));
+  const uint32_t n = uint32_t(setup.crowd.size());
+  setup.tints.resize(n);
+  std::iota(setup.tints.begin(), setup.tints.end(), 0u);  // a hue per runner
+  setup.pairs.push_back(std::move(pair));
+  setup.pairFirst = {0, n};
+  setup.avoidance.policy = scenePolicy(o.story.policy);
+  setup.avoidance.radius = o.story.radius;
+  setup.avoidance.seed = uint32_t(o.scenario.seed);
+  return setup;
+}
+
+bool steersCircle(const SceneOptions& o) {
+  // A speed schedule changes w behind the waypoints' back: such runs keep tangent steering.
+  return o.scenario.name == "circle" && o.speedPeriod == 0.0f;
+}
+
 SceneCrowd::SceneCrowd(const gpu::Context& context, const SceneOptions& o,
                        const anim::ClipPair& clips) {
-  if (o.storyboard()) {
+  if (o.storyboard() || steersCircle(o)) {
     const anim::ClipPair* user = o.slowClip.empty() ? nullptr : &clips;
-    steered_ = std::make_unique<render::SteeredCrowd>(context, makeStoryboardSetup(o, user),
-                                                      sceneCacheOptions(o),
-                                                      sceneLodOptions(o, clips.slow.skeleton));
+    steered_ = std::make_unique<render::SteeredCrowd>(
+        context, o.storyboard() ? makeStoryboardSetup(o, user) : makeCircleSetup(o, clips),
+        sceneCacheOptions(o), sceneLodOptions(o, clips.slow.skeleton));
     return;
   }
   pair_ = std::make_unique<anim::MotionPair>(anim::makeMotionPair(clips.slow, clips.fast));

@@ -22,7 +22,15 @@ crowd::SteerPolicy scenePolicy(const std::string& name);  // published|rule, ant
 render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& options,
                                               const anim::ClipPair* userClips);
 
-// What a frame animates: the plain scenario's crowd (one CrowdSynth) or a storyboard crowd.
+// The circle scene as a steered crowd: runners follow waypoints on their lane circles
+// (crowd/circle_paths.h) with the --policy avoidance at --radius, animated by `clips`.
+render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& options, const anim::ClipPair& clips);
+// Whether the circle scene is steered that way (not with --speed-period, whose speed changes
+// the waypoints cannot follow: those runs keep re-aiming at the tangent).
+bool steersCircle(const SceneOptions& options);
+
+// What a frame animates: the plain scenario's crowd (one CrowdSynth), a storyboard crowd or
+// the steered circle scene.
 class SceneCrowd {
  public:
   SceneCrowd(const gpu::Context& context, const SceneOptions& options, const anim::ClipPair& clips);
