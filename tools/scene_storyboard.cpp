@@ -142,8 +142,7 @@ render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
   return setup;
 }
 
-render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& o, const anim::ClipPair& clips) {
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& o, anim::MotionPair pair) {
   render::SteeredCrowdSetup setup;
   setup.crowd = makeSceneCrowd(o);
   setup.crowd.steering = anim::Steering::KeepHeading;  // the avoidance pass sets the heading
@@ -170,7 +169,9 @@ SceneCrowd::SceneCrowd(const gpu::Context& context, const SceneOptions& o,
   if (o.storyboard() || steersCircle(o)) {
     const anim::ClipPair* user = o.slowClip.empty() ? nullptr : &clips;
     steered_ = std::make_unique<render::SteeredCrowd>(
-        context, o.storyboard() ? makeStoryboardSetup(o, user) : makeCircleSetup(o, clips),
+        context,
+        o.storyboard() ? makeStoryboardSetup(o, user)
+                       : makeCircleSetup(o, anim::makeMotionPair(clips.slow, clips.fast)),
         sceneCacheOptions(o), sceneLodOptions(o, clips.slow.skeleton));
     return;
   }

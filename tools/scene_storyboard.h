@@ -23,8 +23,8 @@ render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& options,
                                               const anim::ClipPair* userClips);
 
 // The circle scene as a steered crowd: runners follow waypoints on their lane circles
-// (crowd/circle_paths.h) with the --policy avoidance at --radius, animated by `clips`.
-render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& options, const anim::ClipPair& clips);
+// (crowd/circle_paths.h) with the --policy avoidance at --radius, animated by `pair`.
+render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& options, anim::MotionPair pair);
 // Whether the circle scene is steered that way (not with --speed-period, whose speed changes
 // the waypoints cannot follow: those runs keep re-aiming at the tangent).
 bool steersCircle(const SceneOptions& options);
