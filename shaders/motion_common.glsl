@@ -97,7 +97,8 @@ float retargetSpeed(uint character, uint epoch, uint seed, float lo, float hi) {
 }
 
 // Where a clip is sampled at a phase in [0, 1): between rows `row` and `next` at fraction t (the
-// row after the last is row 0: clips are cycles). Mirrors anim::clipSample.
+// row after the last is row 0: clips are cycles). Mirrors anim::clipSample, snap included.
+const float kRowSnap = 1e-4;
 struct ClipSample {
   int row;
   int next;
@@ -106,10 +107,13 @@ struct ClipSample {
 
 ClipSample clipSample(float phase, uint frames) {
   float x = phase * float(frames);
+  float nearest = floor(x + 0.5);
+  if (abs(x - nearest) < kRowSnap) x = nearest;  // a phase meant to land on a row lands on it
+  if (x >= float(frames)) x -= float(frames);    // a phase just below 1 is row 0 of the next cycle
   ClipSample s;
   s.row = int(min(uint(x), frames - 1u));
   s.next = s.row + 1 == int(frames) ? 0 : s.row + 1;
-  s.t = min(x - float(s.row), 1.0);  // phase just below 1 may round x up to F
+  s.t = min(x - float(s.row), 1.0);
   return s;
 }
 

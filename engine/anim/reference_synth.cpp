@@ -73,10 +73,15 @@ void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
 
 ClipSample clipSample(float phase, int frames) {
   float x = phase * float(frames);
+  // A phase meant to land on a row (f / F in float, a few ulps off) lands on it exactly, so at
+  // w = 0 or 1 it reproduces that row bit for bit; 1e-4 of a row is 3 µs of a 30 Hz clip.
+  const float nearest = std::floor(x + 0.5f);
+  if (std::abs(x - nearest) < kRowSnap) x = nearest;
+  if (x >= float(frames)) x -= float(frames);  // a phase just below 1 is row 0 of the next cycle
   ClipSample s;
   s.row = std::min(static_cast<int>(x), frames - 1);
   s.next = s.row + 1 == frames ? 0 : s.row + 1;
-  s.t = std::min(x - float(s.row), 1.0f);  // phase just below 1 may round x up to F
+  s.t = std::min(x - float(s.row), 1.0f);
   return s;
 }
 

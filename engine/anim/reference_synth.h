@@ -36,7 +36,9 @@ void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm
 
 // Where a clip is sampled at a phase in [0, 1): between rows `row` and `next` (the row after
 // the last is row 0: clips are cycles) at fraction t. Rotations are slerped and offsets lerped
-// between the two rows, so the pose moves continuously with the phase.
+// between the two rows, so the pose moves continuously with the phase. A phase within kRowSnap
+// rows of a row is taken as on it.
+constexpr float kRowSnap = 1e-4f;
 struct ClipSample {
   int row = 0;
   int next = 0;

@@ -70,6 +70,10 @@ TEST_CASE("w = 0 and w = 1 reproduce the slow and fast clips: their rows, and sl
       anim::poseCharacterSpace(pair, float(f) / float(frames), w, pose);
       for (int j = 0; j < 10; ++j)
         REQUIRE(quatDistance(localRotation(pair, pose, j), clip.rotation(f, j)) < 1e-5f);
+      // A phase a hair off the row (f / F in float) is on it: the root is that row bit for bit.
+      anim::poseCharacterSpace(pair, float(f) / float(frames) + 1e-6f, w, pose);
+      REQUIRE(pose[0].rotation == clip.rotation(f, 0));
+      REQUIRE(pose[0].position.y == clip.offset(f, 0).y);
       anim::poseCharacterSpace(pair, (float(f) + 0.5f) / float(frames), w, pose);
       const int next = (f + 1) % frames;
       for (int j = 0; j < 10; ++j) {
