@@ -31,6 +31,27 @@ void checkImageSize(const std::filesystem::path& path, long long width, long lon
          kMaxImagePixels / (1024 * 1024), " Mpixel, 8192x8192) in all");
 }
 
+namespace {
+// Every chunk's length must fit in the file: stb grows its buffer to a claimed IDAT length
+// before reading it, so a 200-byte file claiming 1.8 GB would allocate that much first.
+void checkPngChunks(const std::filesystem::path& path, const std::string& bytes) {
+  constexpr size_t kSignature = 8, kChunkOverhead = 12;  // length, type, CRC
+  if (bytes.size() < kSignature || bytes.compare(0, kSignature, "\x89PNG\r\n\x1a\n") != 0) return;
+  size_t pos = kSignature;
+  while (pos + kChunkOverhead <= bytes.size()) {
+    const auto byte = [&](size_t k) { return uint32_t(uint8_t(bytes[pos + k])); };
+    const uint32_t length = byte(0) << 24 | byte(1) << 16 | byte(2) << 8 | byte(3);
+    const std::string type = bytes.substr(pos + 4, 4);
+    const size_t left = bytes.size() - pos - kChunkOverhead;
+    if (length > left)
+      fail(path.string(), ": PNG chunk '", type, "' at byte ", pos, " claims ", length,
+           " bytes but ", left, " remain (truncated or corrupt file)");
+    if (type == "IEND") return;
+    pos += kChunkOverhead + length;
+  }
+}
+}  // namespace
+
 ImageRgba8 readPng(const std::filesystem::path& path) {
   std::string bytes = readTextFile(path);
   if (bytes.size() > size_t(std::numeric_limits<int>::max()))
@@ -41,6 +62,7 @@ ImageRgba8 readPng(const std::filesystem::path& path) {
                             static_cast<int>(bytes.size()), &w, &h, &channels)) {
     checkImageSize(path, w, h);
   }
+  checkPngChunks(path, bytes);
   stbi_uc* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                         static_cast<int>(bytes.size()), &w, &h, &channels, 4);
   if (!data) fail(path.string(), ": not a readable PNG (", stbi_failure_reason(), ")");

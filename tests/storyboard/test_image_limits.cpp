@@ -71,3 +71,17 @@ TEST_CASE("image: sizes within the limit still load") {
   CHECK(back.at(4, 2) == Rgba8{10, 20, 30, 255});
   std::filesystem::remove(path);
 }
+
+TEST_CASE("image: a chunk claiming more bytes than the file holds is refused before decoding") {
+  // A 12 x 30 image whose IDAT claims 1.8 GB (a fuzzer's find): stb would grow its buffer first.
+  const std::string ihdr = bigEndian(12) + bigEndian(30) + std::string("\x08\x00\x00\x00\x00", 5);
+  const std::string png = std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) +
+                          bigEndian(1802961038u) + "IDAT" + std::string(40, '\0');
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "throng_long_chunk.png";
+  std::ofstream(path, std::ios::binary) << png;
+  CHECK_THROWS_WITH_AS(readPng(path),
+                       doctest::Contains("PNG chunk 'IDAT' at byte 33 claims 1802961038 bytes"),
+                       Error);
+  std::filesystem::remove(path);
+}
