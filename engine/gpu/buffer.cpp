@@ -15,8 +15,14 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  if (context.info().maxBufferSize > 0)
+    checkLimit(context, "a buffer", "maxBufferSize", size, context.info().maxBufferSize);
   VkBuffer buffer = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer));
+  VkResult created = vkCreateBuffer(device, &info, nullptr, &buffer);
+  if (created == VK_ERROR_OUT_OF_DEVICE_MEMORY || created == VK_ERROR_OUT_OF_HOST_MEMORY)
+    throw LimitError(concat("a buffer (", vkResultName(created), ")"), "device-local memory", size,
+                     context.info().deviceLocalBytes, "bytes", context.info().name);
+  VK_CHECK(created);
   buffer_ = Handle<VkBuffer>(buffer, [device](VkBuffer b) { vkDestroyBuffer(device, b, nullptr); });
 
   VkMemoryRequirements requirements;
@@ -25,7 +31,7 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
       use == MemoryUse::HostVisible
           ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
           : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  memory_ = context.allocateMemory(requirements, flags, concat("a buffer of ", size, " bytes"));
+  memory_ = context.allocateMemory(requirements, flags, "a buffer");
   VK_CHECK(vkBindBufferMemory(device, buffer, memory_, 0));
   if (use == MemoryUse::HostVisible)
     VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));

@@ -137,6 +137,26 @@ bool layerHasExtension(const char* layer, const char* extension) {
   });
 }
 
+bool deviceHasExtension(VkPhysicalDevice device, const char* extension) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+  std::vector<VkExtensionProperties> extensions(count);
+  VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data()));
+  return std::any_of(extensions.begin(), extensions.end(), [&](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, extension) == 0;
+  });
+}
+
+// The largest VkBuffer, where the device reports it (VK_KHR_maintenance4); 0 otherwise.
+uint64_t maxBufferSize(VkPhysicalDevice device) {
+  if (!deviceHasExtension(device, VK_KHR_MAINTENANCE_4_EXTENSION_NAME)) return 0;
+  VkPhysicalDeviceMaintenance4PropertiesKHR maintenance4{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_4_PROPERTIES_KHR};
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &maintenance4};
+  vkGetPhysicalDeviceProperties2(device, &props);
+  return maintenance4.maxBufferSize;
+}
+
 template <typename Pfn>
 Pfn instanceFunction(VkInstance instance, const char* name) {
   auto function = reinterpret_cast<Pfn>(vkGetInstanceProcAddr(instance, name));
@@ -256,6 +276,7 @@ void Context::choosePhysicalDevice(const ContextOptions& options) {
   for (int i = 0; i < 3; ++i)
     info_.maxComputeWorkGroupCount[i] = limits.maxComputeWorkGroupCount[i];
   info_.maxMemoryAllocationSize = chosen.maintenance3.maxMemoryAllocationSize;
+  info_.maxBufferSize = maxBufferSize(physical_);
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   for (uint32_t h = 0; h < memory_.memoryHeapCount; ++h)
     if (memory_.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)

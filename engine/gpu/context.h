@@ -40,6 +40,7 @@ struct DeviceInfo {
   uint32_t maxFramebufferHeight = 0;
   uint32_t maxComputeWorkGroupCount[3] = {0, 0, 0};
   uint64_t maxMemoryAllocationSize = 0;  // one vkAllocateMemory (Vulkan 1.1 maintenance3)
+  uint64_t maxBufferSize = 0;            // one vkCreateBuffer (VK_KHR_maintenance4); 0: unknown
   bool int64Atomics = false;  // shaderInt64 + shaderBufferInt64Atomics (the joint splat needs them)
   uint64_t deviceLocalBytes = 0;  // the largest device-local heap (lavapipe: system memory)
   bool isCpu() const { return type == VK_PHYSICAL_DEVICE_TYPE_CPU; }

@@ -103,6 +103,11 @@ TEST_CASE("limits: an allocation past maxMemoryAllocationSize or its heap is a L
       ctx.allocateMemory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, "a test allocation"),
       doctest::Contains("a test allocation needs"), gpu::LimitError);
   CHECK_THROWS_WITH_AS(gpu::Buffer(ctx, tooLarge, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal),
-                       doctest::Contains("a buffer of"), gpu::LimitError);
+                       doctest::Contains("a buffer needs"), gpu::LimitError);
+  if (ctx.info().maxBufferSize > 0 && ctx.info().maxBufferSize < UINT64_MAX) {
+    CHECK_THROWS_WITH_AS(gpu::Buffer(ctx, ctx.info().maxBufferSize + 1, gpu::kStorageUsage,
+                                     gpu::MemoryUse::DeviceLocal),
+                         doctest::Contains("maxBufferSize"), gpu::LimitError);
+  }
   CHECK(ctx.validationMessageCount() == 0);
 }
