@@ -11,6 +11,7 @@
 #include "core/image.h"
 #include "core/log.h"
 #include "gpu/commands.h"
+#include "limit_option.h"
 #include "render/crowd_frame.h"
 #include "render/offscreen_target.h"
 #include "scene_options.h"
@@ -28,38 +29,99 @@ struct RenderOptions {
   bool validation = false;
 };
 
+void printClothSummary(const secondary::ClothLayer& cloth,
+                       const std::vector<secondary::ClothTimings>& clothTimes,
+                       const std::string& file) {
+  auto clothMedian = [&](double secondary::ClothTimings::*field) {
+    std::vector<double> values;
+    for (const secondary::ClothTimings& t : clothTimes) values.push_back(t.*field);
+    return median(values);
+  };
+  std::vector<double> totals;
+  for (const secondary::ClothTimings& t : clothTimes) totals.push_back(t.totalMs());
+  secondary::ClothStats s = cloth.stats();
+  std::printf(
+      "cloth (median, inside render): advance %.2f ms, mark %.2f ms, decode %.2f ms, splat %.2f "
+      "ms, "
+      "draw %.2f ms; total %.2f ms  [%s]\n",
+      clothMedian(&secondary::ClothTimings::advanceMs),
+      clothMedian(&secondary::ClothTimings::markMs),
+      clothMedian(&secondary::ClothTimings::decodeMs),
+      clothMedian(&secondary::ClothTimings::splatMs), clothMedian(&secondary::ClothTimings::drawMs),
+      median(totals), file.c_str());
+  const secondary::ClothLod& lod = cloth.gpuData().lod;
+  std::printf(
+      "cloth levels: vertices %u / %u / %u / %u, triangles %u / %u / %u / %u, bases %u / %u / %u / "
+      "%u\n",
+      lod.levelVertices[0], lod.levelVertices[1], lod.levelVertices[2], lod.levelVertices[3],
+      lod.indexCount[0] / 3, lod.indexCount[1] / 3, lod.indexCount[2] / 3, lod.indexCount[3] / 3,
+      lod.levelBases[0], lod.levelBases[1], lod.levelBases[2], lod.levelBases[3]);
+  std::printf(
+      "cloth, last frame: capes per level %u / %u / %u / %u (full … splatted), %u states decoded, "
+      "%u demoted\n",
+      s.capes[0], s.capes[1], s.capes[2], s.capes[3], s.usedStates, s.demoted);
+}
+
+// What is read and checked before the GPU starts.
+struct RenderInputs {
+  Size size;
+  std::filesystem::path outDir;
+  std::unique_ptr<secondary::ClothDatabase> clothDb;
+  anim::ClipPair clips;
+  synth::SpeedSchedule speeds;
+  render::Camera camera;
+};
+
+void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in);
+
 void runRender(RenderOptions& o) {
   validateSceneOptions(o.scene);
   if (o.frames < 1 || o.frames > 100000) fail("--frames: expected 1..100000, got ", o.frames);
-  Size size = parseSize(o.scene.size);
-  std::filesystem::path outDir = o.out;
-  ensureWritableDirectory(outDir);
-
+  RenderInputs in;
+  in.size = parseSize(o.scene.size);
+  in.outDir = o.out;
+  ensureWritableDirectory(in.outDir);
   // The cloth database is read (and checked) before the GPU starts.
-  std::unique_ptr<secondary::ClothDatabase> clothDb;
   if (!o.scene.cloth.empty())
-    clothDb = std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(o.scene.cloth));
-  anim::ClipPair clips = loadSceneClips(o.scene);
-  synth::SpeedSchedule speeds = sceneSpeedSchedule(o.scene);
-  render::Camera camera = sceneCamera(o.scene);
-  logInfo(concat("clips: ", clips.description));
+    in.clothDb =
+        std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(o.scene.cloth));
+  in.clips = loadSceneClips(o.scene);
+  in.speeds = sceneSpeedSchedule(o.scene);
+  in.camera = sceneCamera(o.scene);
+  logInfo(concat("clips: ", in.clips.description));
 
   gpu::ContextOptions contextOptions;
   contextOptions.device = o.scene.device;
   contextOptions.validation = o.validation;
   gpu::Context context(contextOptions);
-  SceneCrowd scene(context, o.scene, clips);  // the scenario's crowd, or the storyboard's
+  checkSceneForDevice(o.scene, context);  // --size and --cache-budget against the limits
+  // Past those, what outgrows a limit is the crowd's per-character data.
+  namingOption(charactersOption(o.scene), [&] { renderFrames(context, o, in); });
+}
+
+void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
+  const Size size = in.size;
+  const std::filesystem::path& outDir = in.outDir;
+  synth::SpeedSchedule& speeds = in.speeds;
+  const render::Camera& camera = in.camera;
+  SceneCrowd scene(context, o.scene, in.clips);  // the scenario's crowd, or the storyboard's
   const synth::SynthPrograms& programs = scene.programs();
   const synth::CrowdSynth& synth = scene.synth();
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
-                               size.width, size.height, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  render::FrameTargets targets{target.color.get(),
+                               target.color.view(),
+                               target.depth.get(),
+                               target.depth.view(),
+                               size.width,
+                               size.height,
+                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   const float groundExtent = sceneGroundExtent(o.scene);
   std::unique_ptr<secondary::ClothLayer> cloth;
-  if (clothDb)
-    cloth = std::make_unique<secondary::ClothLayer>(context, *clothDb, scene.crowd(), render::kColorFormat,
-                                                    render::kDepthFormat, sceneClothOptions(o.scene));
+  if (in.clothDb)
+    cloth = std::make_unique<secondary::ClothLayer>(context, *in.clothDb, scene.crowd(),
+                                                    render::kColorFormat, render::kDepthFormat,
+                                                    sceneClothOptions(o.scene));
   std::vector<secondary::ClothTimings> clothTimes;
 
   gpu::CommandPool pool(context);
@@ -74,9 +136,9 @@ void runRender(RenderOptions& o) {
     if (cloth) hooks = cloth->hooks(0);
     scene.addHooks(hooks, o.scene.dt);
     gpu::beginCommands(cmd);
-    render::FrameTimestamps marks = render::recordCrowdFrame(cmd, context, programs, synth, renderer, camera,
-                                                             groundExtent, targets, o.scene.dt, timestamps, 0, speeds.advance(o.scene.dt),
-                                                             o.scene.lodTint, &hooks);
+    render::FrameTimestamps marks = render::recordCrowdFrame(
+        cmd, context, programs, synth, renderer, camera, groundExtent, targets, o.scene.dt,
+        timestamps, 0, speeds.advance(o.scene.dt), o.scene.lodTint, &hooks);
     render::recordReadback(cmd, target);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
@@ -90,44 +152,25 @@ void runRender(RenderOptions& o) {
     auto image = std::make_shared<ImageRgba8>(render::readbackImage(target));
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%04d.png", frame);
-    pendingWrite = std::async(std::launch::async, [image, path = outDir / name] { writePngAtomic(path, *image); });
+    pendingWrite = std::async(std::launch::async,
+                              [image, path = outDir / name] { writePngAtomic(path, *image); });
     if (o.frames >= 10 && (frame + 1) % std::max(1, o.frames / 10) == 0)
-      logInfo(concat("frame ", frame + 1, "/", o.frames, "  synthesis ", timings.synthesisMs, " ms, render ",
-                     timings.renderMs, " ms"));
+      logInfo(concat("frame ", frame + 1, "/", o.frames, "  synthesis ", timings.synthesisMs,
+                     " ms, render ", timings.renderMs, " ms"));
   }
   if (pendingWrite.valid()) pendingWrite.get();
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
-  std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames, scene.count(),
-              synth.jointCount(), size.width, size.height, outDir.string().c_str());
-  std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n", median(synthMs),
-              median(renderMs), context.info().name.c_str());
-  if (cloth) {
-    auto clothMedian = [&](double secondary::ClothTimings::*field) {
-      std::vector<double> values;
-      for (const secondary::ClothTimings& t : clothTimes) values.push_back(t.*field);
-      return median(values);
-    };
-    std::vector<double> totals;
-    for (const secondary::ClothTimings& t : clothTimes) totals.push_back(t.totalMs());
-    secondary::ClothStats s = cloth->stats();
-    std::printf("cloth (median, inside render): advance %.2f ms, mark %.2f ms, decode %.2f ms, splat %.2f ms, "
-                "draw %.2f ms; total %.2f ms  [%s]\n",
-                clothMedian(&secondary::ClothTimings::advanceMs), clothMedian(&secondary::ClothTimings::markMs),
-                clothMedian(&secondary::ClothTimings::decodeMs), clothMedian(&secondary::ClothTimings::splatMs),
-                clothMedian(&secondary::ClothTimings::drawMs), median(totals), o.scene.cloth.c_str());
-    const secondary::ClothLod& lod = cloth->gpuData().lod;
-    std::printf("cloth levels: vertices %u / %u / %u / %u, triangles %u / %u / %u / %u, bases %u / %u / %u / %u\n",
-                lod.levelVertices[0], lod.levelVertices[1], lod.levelVertices[2], lod.levelVertices[3],
-                lod.indexCount[0] / 3, lod.indexCount[1] / 3, lod.indexCount[2] / 3, lod.indexCount[3] / 3,
-                lod.levelBases[0], lod.levelBases[1], lod.levelBases[2], lod.levelBases[3]);
-    std::printf("cloth, last frame: capes per level %u / %u / %u / %u (full … splatted), %u states decoded, %u demoted\n",
-                s.capes[0], s.capes[1], s.capes[2], s.capes[3], s.usedStates, s.demoted);
-  }
+  std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames,
+              scene.count(), synth.jointCount(), size.width, size.height, outDir.string().c_str());
+  std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
+              median(synthMs), median(renderMs), context.info().name.c_str());
+  if (cloth) printClothSummary(*cloth, clothTimes, o.scene.cloth);
   if (synth.cache.options.enabled) {
     synth::MotionCacheStats c = synth::readCacheStats(synth.cache);
-    std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n", c.hits, c.misses,
-                c.evictions, c.entries, c.bytesUsed / 1048576.0, c.budgetBytes / 1048576.0);
+    std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n",
+                c.hits, c.misses, c.evictions, c.entries, c.bytesUsed / 1048576.0,
+                c.budgetBytes / 1048576.0);
   }
 }
 
@@ -136,7 +179,8 @@ void addRenderCommand(CLI::App& app, int&) {
   CLI::App* cmd = app.add_subcommand("render", "Render a crowd headless and write PNG frames");
   addSceneOptions(*cmd, options->scene);
   cmd->add_option("--frames", options->frames, "Number of frames")->capture_default_str();
-  cmd->add_option("--out,-o", options->out, "Output directory (frame_0000.png ...)")->capture_default_str();
+  cmd->add_option("--out,-o", options->out, "Output directory (frame_0000.png ...)")
+      ->capture_default_str();
   cmd->add_flag("--validation", options->validation, "Enable the Khronos validation layer");
   cmd->callback([options] { runRender(*options); });
 }

@@ -3,64 +3,102 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "limit_option.h"
+#include "render/offscreen_target.h"
 #include "scene_storyboard.h"
 
 namespace throng::tools {
 
 namespace {
 void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
-  command.add_option("--storyboard", o.storyboard, "Storyboard PNG: its agents make the crowd (the storyboard scene)");
+  command.add_option("--storyboard", o.storyboard,
+                     "Storyboard PNG: its agents make the crowd (the storyboard scene)");
   command.add_option("--trajectories", o.trajectories,
-                     "Tracked people ('frame ped x y' text or ETH obsmat.txt) whose path vectors the agents follow");
-  command.add_option("--legend", o.legend, "Storyboard colour legend JSON (default: DESIGN.md's colours)");
-  command.add_option("--cell", o.cell, "Storyboard: metres per storyboard pixel")->capture_default_str();
-  command.add_option("--jitter", o.jitter, "Storyboard: random offset of each agent, +- metres")->capture_default_str();
-  command.add_option("--policy", o.policy, "Storyboard avoidance: anticipatory (TTC), published (the rule) or none")
+                     "Tracked people ('frame ped x y' text or ETH obsmat.txt) whose path vectors "
+                     "the agents follow");
+  command.add_option("--legend", o.legend,
+                     "Storyboard colour legend JSON (default: DESIGN.md's colours)");
+  command.add_option("--cell", o.cell, "Storyboard: metres per storyboard pixel")
       ->capture_default_str();
-  command.add_option("--radius", o.radius, "Storyboard: safe radius of each agent in metres")->capture_default_str();
-  command.add_option("--step-time", o.stepTime,
-                     "Storyboard: seconds per annotation step of the trajectories (default: by dataset)");
+  command.add_option("--jitter", o.jitter, "Storyboard: random offset of each agent, +- metres")
+      ->capture_default_str();
+  command
+      .add_option("--policy", o.policy,
+                  "Storyboard avoidance: anticipatory (TTC), published (the rule) or none")
+      ->capture_default_str();
+  command.add_option("--radius", o.radius, "Storyboard: safe radius of each agent in metres")
+      ->capture_default_str();
+  command.add_option(
+      "--step-time", o.stepTime,
+      "Storyboard: seconds per annotation step of the trajectories (default: by dataset)");
 }
 }  // namespace
 
 void addSceneOptions(CLI::App& command, SceneOptions& o) {
-  command.add_option("--scene", o.scenario.name, "Scenario: random, circle or storyboard (with --storyboard)")
+  command
+      .add_option("--scene", o.scenario.name,
+                  "Scenario: random, circle or storyboard (with --storyboard)")
       ->capture_default_str();
-  command.add_option("--characters,-n", o.characters, "Number of characters")->capture_default_str();
-  command.add_option("--seed", o.scenario.seed, "Random seed of the scenario")->capture_default_str();
-  command.add_option("--speed-min", o.scenario.minSpeedWeight, "Lowest speed weight w in [0,1]")->capture_default_str();
-  command.add_option("--speed-max", o.scenario.maxSpeedWeight, "Highest speed weight w in [0,1]")->capture_default_str();
-  command.add_option("--density", o.scenario.density, "Characters per square metre (random scene)")->capture_default_str();
+  command.add_option("--characters,-n", o.characters, "Number of characters")
+      ->capture_default_str();
+  command.add_option("--seed", o.scenario.seed, "Random seed of the scenario")
+      ->capture_default_str();
+  command.add_option("--speed-min", o.scenario.minSpeedWeight, "Lowest speed weight w in [0,1]")
+      ->capture_default_str();
+  command.add_option("--speed-max", o.scenario.maxSpeedWeight, "Highest speed weight w in [0,1]")
+      ->capture_default_str();
+  command.add_option("--density", o.scenario.density, "Characters per square metre (random scene)")
+      ->capture_default_str();
   command.add_option("--slow", o.slowClip, "Slow cycle BVH (default: built-in run)");
   command.add_option("--fast", o.fastClip, "Fast cycle BVH (default: built-in run)");
-  command.add_option("--camera", o.cameraPreset, "Camera preset: wide, top, street, closeup")->capture_default_str();
+  command.add_option("--camera", o.cameraPreset, "Camera preset: wide, top, street, closeup")
+      ->capture_default_str();
   command.add_option("--eye", o.eye, "Camera position x,y,z (overrides the preset)");
   command.add_option("--target", o.target, "Camera target x,y,z (overrides the preset)");
-  command.add_option("--fov", o.fovY, "Vertical field of view in degrees");
+  command.add_option("--fov", o.fovY,
+                     "Vertical field of view in degrees, 1..170 (default: the preset's)");
   command.add_option("--size", o.size, "Image size WxH")->capture_default_str();
   command.add_option("--device", o.device, "Vulkan device by index or name (also $THRONG_DEVICE)");
   command.add_option("--dt", o.dt, "Simulated seconds per frame")->capture_default_str();
-  command.add_flag("--cache", o.cache, "Motion cache: characters share synthesized clips per speed bucket");
-  command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB")->capture_default_str();
-  command.add_option("--bucket-width", o.bucketWidth, "Motion cache speed-weight bucket width")->capture_default_str();
-  command.add_option("--speed-period", o.speedPeriod, "Seconds between speed changes (0: never; paper: 5)")
+  command.add_flag("--cache", o.cache,
+                   "Motion cache: characters share synthesized clips per speed bucket");
+  command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB")
       ->capture_default_str();
-  command.add_flag("--lod", o.lod, "Pixel-coverage joint LOD: far characters synthesize and draw fewer joints");
-  command.add_flag("--lod-tint", o.lodTint, "With --lod, colour characters by level (green near, yellow mid, red far)");
-  command.add_option("--lod-mid-pixels", o.lodMidPixels, "Torso sphere area (pixels) for the mid level")
+  command
+      .add_option("--bucket-width", o.bucketWidth,
+                  "Motion cache speed-weight bucket width, 1/4095..1 (at most 4096 buckets)")
       ->capture_default_str();
-  command.add_option("--lod-near-pixels", o.lodNearPixels, "Limb sphere area (pixels) for all joints")
+  command
+      .add_option("--speed-period", o.speedPeriod,
+                  "Seconds between speed changes (0: never; paper: 5)")
+      ->capture_default_str();
+  command.add_flag("--lod", o.lod,
+                   "Pixel-coverage joint LOD: far characters synthesize and draw fewer joints");
+  command.add_flag("--lod-tint", o.lodTint,
+                   "With --lod, colour characters by level (green near, yellow mid, red far)");
+  command
+      .add_option("--lod-mid-pixels", o.lodMidPixels,
+                  "Torso sphere area (pixels) for the mid level")
+      ->capture_default_str();
+  command
+      .add_option("--lod-near-pixels", o.lodNearPixels, "Limb sphere area (pixels) for all joints")
       ->capture_default_str();
   addStoryboardSceneOptions(command, o.story);
-  command.add_option("--cloth", o.cloth, "Compressed cloth database (.tsc from `throng cloth compress`): capes on every character");
-  command.add_flag("--cloth-tint", o.clothTint, "With --cloth, colour capes by garment level (green full, yellow mid, red coarse)");
-  command.add_flag("--cloth-full", o.clothFull, "With --cloth, draw every visible cape at full detail (no garment LOD)");
+  command.add_option(
+      "--cloth", o.cloth,
+      "Compressed cloth database (.tsc from `throng cloth compress`): capes on every character");
+  command.add_flag(
+      "--cloth-tint", o.clothTint,
+      "With --cloth, colour capes by garment level (green full, yellow mid, red coarse)");
+  command.add_flag("--cloth-full", o.clothFull,
+                   "With --cloth, draw every visible cape at full detail (no garment LOD)");
 }
 
 Size parseSize(const std::string& text) {
   unsigned w = 0, h = 0;
   char tail = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 || h > 16384)
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2 || w == 0 || h == 0 || w > 16384 ||
+      h > 16384)
     fail("--size: expected WxH with 1..16384 pixels per side, got '", text, "'");
   return {w, h};
 }
@@ -71,22 +109,24 @@ void validateSceneOptions(SceneOptions& o) {
   o.scenario.characters = static_cast<uint32_t>(o.characters);
   if (o.slowClip.empty() != o.fastClip.empty()) fail("--slow and --fast must be given together");
   if (!(o.dt > 0.0f && o.dt <= 1.0f)) fail("--dt: expected seconds in (0, 1], got ", o.dt);
-  if (o.fovY != 0.0f && !(o.fovY > 1.0f && o.fovY < 170.0f)) fail("--fov: expected 1..170 degrees, got ", o.fovY);
+  if (o.fovY && !(*o.fovY >= 1.0f && *o.fovY <= 170.0f))
+    fail("--fov: expected 1..170 degrees, got ", *o.fovY);
   parseSize(o.size);
-  if (!(o.cacheBudgetMb >= 0.0f && o.cacheBudgetMb <= 65536.0f)) fail("--cache-budget: expected 0..65536 MB, got ", o.cacheBudgetMb);
   if (!(o.lodMidPixels >= 0.0f && o.lodNearPixels >= 0.0f))
     fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
   if (o.lodTint && !o.lod) fail("--lod-tint needs --lod");
   if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
-  if ((o.clothTint || o.clothFull) && o.cloth.empty()) fail("--cloth-tint and --cloth-full need --cloth");
-  synth::validateCacheOptions(sceneCacheOptions(o));
+  if ((o.clothTint || o.clothFull) && o.cloth.empty())
+    fail("--cloth-tint and --cloth-full need --cloth");
+  validateSceneCacheOptions(o);
   // --storyboard alone picks the storyboard scene (--scene defaults to random).
   if (!o.story.storyboard.empty() && o.scenario.name == "random") o.scenario.name = "storyboard";
   if (o.storyboard()) {
     validateStoryboardScene(o);
   } else {
     if (!o.story.storyboard.empty() || !o.story.trajectories.empty())
-      fail("--storyboard and --trajectories make the storyboard scene, not '", o.scenario.name, "'");
+      fail("--storyboard and --trajectories make the storyboard scene, not '", o.scenario.name,
+           "'");
     crowd::makeScenario([&] {  // validates the scenario options on a one-character crowd
       crowd::ScenarioOptions probe = o.scenario;
       probe.characters = 1;
@@ -94,6 +134,37 @@ void validateSceneOptions(SceneOptions& o) {
     }());
   }
   sceneCamera(o);
+}
+
+void validateSceneCacheOptions(const SceneOptions& o) {
+  if (!(o.cacheBudgetMb >= 0.0f && o.cacheBudgetMb <= 65536.0f))
+    fail("--cache-budget: expected 0..65536 MB, got ", o.cacheBudgetMb);
+  // 1/w rounds to the last bucket's index: at most kMaxSpeedBuckets - 1 (checked before the
+  // division can overflow).
+  const double lastBucket = o.bucketWidth > 0.0f ? 1.0 / double(o.bucketWidth) : 0.0;
+  if (!(o.bucketWidth > 0.0f && o.bucketWidth <= 1.0f) || lastBucket >= kMaxSpeedBuckets - 0.5)
+    fail("--bucket-width: expected a speed-weight width in 1/", kMaxSpeedBuckets - 1,
+         "..1 (at most ", kMaxSpeedBuckets, " speed buckets), got ", o.bucketWidth);
+  synth::validateCacheOptions(sceneCacheOptions(o));
+}
+
+void checkSceneForDevice(const SceneOptions& o, const gpu::Context& context) {
+  const Size size = parseSize(o.size);
+  namingOption(concat("--size ", o.size), [&] {
+    render::checkTargetSize(context, size.width, size.height, concat("a ", o.size, " image"));
+  });
+  if (!o.cache) return;
+  const synth::MotionCacheOptions cache = sceneCacheOptions(o);
+  namingOption(concat("--cache-budget ", o.cacheBudgetMb), [&] {
+    gpu::checkLimit(context, "the motion cache's data (one storage binding)",
+                    "maxStorageBufferRange", cache.budgetBytes,
+                    context.info().maxStorageBufferRange);
+  });
+}
+
+std::string charactersOption(const SceneOptions& o) {
+  if (o.storyboard()) return concat("--storyboard ", o.story.storyboard);
+  return concat("-n ", o.scenario.characters);
 }
 
 anim::ClipPair loadSceneClips(const SceneOptions& o) {
@@ -131,13 +202,15 @@ float sceneExtent(const SceneOptions& o) {
   return o.storyboard() ? o.story.extent : crowd::scenarioExtent(o.scenario);
 }
 
-float sceneGroundExtent(const SceneOptions& o) { return 1.6f * sceneExtent(o) + 40.0f; }
+float sceneGroundExtent(const SceneOptions& o) {
+  return 1.6f * sceneExtent(o) + 40.0f;
+}
 
 render::Camera sceneCamera(const SceneOptions& o) {
   render::Camera camera = render::cameraPreset(o.cameraPreset, sceneExtent(o));
   if (!o.eye.empty()) camera.eye = render::parseVec3(o.eye, "--eye");
   if (!o.target.empty()) camera.target = render::parseVec3(o.target, "--target");
-  if (o.fovY != 0.0f) camera.fovYDegrees = o.fovY;
+  if (o.fovY) camera.fovYDegrees = *o.fovY;
   if (glm::length(camera.eye - camera.target) < 1e-3f) fail("--eye and --target must differ");
   return camera;
 }

@@ -8,6 +8,7 @@
 
 #include "anim/default_clips.h"
 #include "crowd/scenario.h"
+#include "gpu/context.h"
 #include "render/camera.h"
 #include "secondary/cloth_gpu_layer.h"
 #include "synth/crowd_synth.h"
@@ -18,12 +19,12 @@ namespace throng::tools {
 // collision avoidance, one clip pair per clip set (scene_storyboard.h).
 struct StoryboardSceneOptions {
   std::string storyboard, trajectories, legend;
-  float cell = 0.5f;                   // metres per storyboard pixel
-  float jitter = 0.1f;                 // ± metres
+  float cell = 0.5f;                    // metres per storyboard pixel
+  float jitter = 0.1f;                  // ± metres
   std::string policy = "anticipatory";  // published (rule), anticipatory (ttc) or none
-  float radius = 0.3f;                 // safe radius (m)
-  float stepTime = 0.0f;               // seconds per annotation step; 0: by dataset
-  float extent = 0.0f;                 // set by validation: half the storyboard's larger side (m)
+  float radius = 0.3f;                  // safe radius (m)
+  float stepTime = 0.0f;                // seconds per annotation step; 0: by dataset
+  float extent = 0.0f;                  // set by validation: half the storyboard's larger side (m)
 };
 
 struct SceneOptions {
@@ -32,24 +33,27 @@ struct SceneOptions {
   std::string slowClip, fastClip;
   std::string cameraPreset = "wide";
   std::string eye, target;
-  float fovY = 0.0f;            // 0: the preset's
+  std::optional<float> fovY;  // absent: the preset's
   std::string size = "1280x720";
   std::string device;
   float dt = 1.0f / 30.0f;
   bool cache = false;
   float cacheBudgetMb = 20.0f;
   float bucketWidth = 0.05f;
-  float speedPeriod = 0.0f;     // seconds between speed changes (paper: 5); 0 = never
-  bool lod = false;             // pixel-coverage joint LOD
-  bool lodTint = false;         // colour characters by LOD level
+  float speedPeriod = 0.0f;  // seconds between speed changes (paper: 5); 0 = never
+  bool lod = false;          // pixel-coverage joint LOD
+  bool lodTint = false;      // colour characters by LOD level
   float lodMidPixels = synth::kDefaultMidPixels;    // torso sphere area for the mid level
   float lodNearPixels = synth::kDefaultNearPixels;  // limb sphere area for all joints
-  std::string cloth;            // compressed cloth database (.tsc): every character wears its cape
-  bool clothTint = false;       // colour capes by garment level
-  bool clothFull = false;       // every visible cape at full detail (no garment LOD)
+  std::string cloth;       // compressed cloth database (.tsc): every character wears its cape
+  bool clothTint = false;  // colour capes by garment level
+  bool clothFull = false;  // every visible cape at full detail (no garment LOD)
   StoryboardSceneOptions story;
   bool storyboard() const { return scenario.name == "storyboard"; }
 };
+
+// The motion cache keeps a few small per-bucket buffers: --bucket-width may not make more.
+constexpr uint32_t kMaxSpeedBuckets = 4096;
 
 void addSceneOptions(CLI::App& command, SceneOptions& options);
 
@@ -61,6 +65,14 @@ Size parseSize(const std::string& text);
 
 // Checks everything that does not need a file or a GPU; throws Error on the first problem.
 void validateSceneOptions(SceneOptions& options);
+// The cache options alone (the viewer's respawn checks them too): --cache-budget and a
+// --bucket-width that makes at most kMaxSpeedBuckets buckets.
+void validateSceneCacheOptions(const SceneOptions& options);
+// What needs the device's limits but no crowd: --size (the render target) and --cache-budget
+// (the cache's data is one storage binding). Throws Error naming the option and the limit.
+void checkSceneForDevice(const SceneOptions& options, const gpu::Context& context);
+// "-n 3000" (or "--characters 3000"): how errors about the crowd's size name the option.
+std::string charactersOption(const SceneOptions& options);
 anim::ClipPair loadSceneClips(const SceneOptions& options);
 // The scenario's crowd; with the cache on, speed weights sit on bucket speeds.
 crowd::Crowd makeSceneCrowd(const SceneOptions& options);

@@ -66,24 +66,15 @@ void ViewSession::run() {
     applyPanel();
     float dt = simulationStep(wall);
 
-    std::optional<render::PresentFrame> frame =
-        presenter_.beginFrame([this](uint32_t slot) {
-          collectTimes(slot);
-          lod_.collect(slot);
-        });
+    std::optional<render::PresentFrame> frame = presenter_.beginFrame([this](uint32_t slot) {
+      collectTimes(slot);
+      lod_.collect(slot);
+    });
     if (!frame) {
       if (withPanel) imgui_->discardFrame();
       continue;
     }
-    anim::SpeedRetarget retarget = scene_->speeds.advance(dt);
-    if (retarget.epoch != 0) ++speedChanges_;
-    render::FrameHooks clothHooks;
-    if (scene_->cloth) clothHooks = scene_->cloth->hooks(frame->slot);
-    if (scene_->steered) scene_->steered->addHooks(clothHooks, dt);  // storyboard steering
-    marks_[frame->slot] = render::recordCrowdFrame(
-        frame->cmd, context_, framePrograms(*scene_), frameSynth(*scene_), renderer_, camera_,
-        scene_->groundExtent, frame->targets, dt, *frame->timestamps, frame->slot, retarget,
-        panel_.lodTint && frameSynth(*scene_).lod, &clothHooks);
+    marks_[frame->slot] = recordCrowd(*frame, dt);
     if (withPanel) {
       panelRect_ = drawPanel(panel_, panelInfo());
       imgui_->record(frame->cmd, presenter_.swapchain(), frame->imageIndex,
@@ -91,7 +82,8 @@ void ViewSession::run() {
     }
     panelMarks_[frame->slot] = frame->timestamps->write(frame->cmd);
     if (scene_->steered && scene_->steered->drawMasks())
-      lod_.record(frame->cmd, *scene_->steered->drawMasks(), characterCount(*scene_), frame->slot, stats_.frames() + 1);
+      lod_.record(frame->cmd, *scene_->steered->drawMasks(), characterCount(*scene_), frame->slot,
+                  stats_.frames() + 1);
     else
       lod_.record(frame->cmd, frameSynth(*scene_), frame->slot, stats_.frames() + 1);
     pending_[frame->slot] = true;

@@ -11,48 +11,80 @@ std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const Scen
   auto scene = std::make_unique<ViewScene>();
   scene->colorFormat = colorFormat;
   if (!options.cloth.empty())
-    scene->clothDb = std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(options.cloth));
+    scene->clothDb =
+        std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(options.cloth));
   scene->skeleton = clips.slow.skeleton;
   scene->clipDescription = clips.description;
   scene->pair = anim::makeMotionPair(clips.slow, clips.fast);
-  if (!options.slowClip.empty()) scene->userClips = clips;  // the storyboard scene's pair for every action
+  if (!options.slowClip.empty())
+    scene->userClips = clips;  // the storyboard scene's pair for every action
   scene->programs = std::make_unique<synth::SynthPrograms>(context, scene->pair);
   respawnCrowd(context, *scene, options);
   return scene;
 }
 
-void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options) {
+namespace {
+
+// The CPU side of a crowd: everything that may throw before the GPU crowd is replaced.
+struct PreparedCrowd {
+  crowd::Crowd crowd;
+  std::unique_ptr<render::SteeredCrowdSetup> story;
+};
+
+PreparedCrowd prepareCrowd(const ViewScene& scene, const SceneOptions& options) {
   const crowd::ScenarioOptions& s = options.scenario;
   if (s.characters < 1 || s.characters > 4000000)
     fail("characters: expected 1..4000000, got ", s.characters);
-  synth::MotionCacheOptions cache = sceneCacheOptions(options);
-  synth::validateCacheOptions(cache);
-  // Everything that may throw comes before anything is replaced.
-  crowd::Crowd crowd;
-  std::unique_ptr<render::SteeredCrowdSetup> story;
+  validateSceneCacheOptions(options);
+  PreparedCrowd prepared;
   if (options.storyboard()) {
-    story = std::make_unique<render::SteeredCrowdSetup>(
+    prepared.story = std::make_unique<render::SteeredCrowdSetup>(
         makeStoryboardSetup(options, scene.userClips ? &*scene.userClips : nullptr));
   } else {
-    crowd = makeSceneCrowd(options);
+    prepared.crowd = makeSceneCrowd(options);
   }
-  context.waitIdle();
+  return prepared;
+}
+
+// Replaces the GPU crowd (the GPU is idle); may throw part way, e.g. past a device limit.
+void installCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options,
+                  PreparedCrowd& prepared) {
   scene.cloth.reset();  // it refers to the old crowd's buffers
   scene.steered.reset();
   scene.synth = {};
-  if (story)
-    scene.steered = std::make_unique<render::SteeredCrowd>(context, std::move(*story), cache,
-                                                           sceneLodOptions(options, scene.skeleton));
+  const synth::MotionCacheOptions cache = sceneCacheOptions(options);
+  if (prepared.story)
+    scene.steered = std::make_unique<render::SteeredCrowd>(
+        context, std::move(*prepared.story), cache, sceneLodOptions(options, scene.skeleton));
   else
-    scene.synth = synth::makeCrowdSynth(context, scene.pair, crowd, cache, sceneLodOptions(options, scene.skeleton));
+    scene.synth = synth::makeCrowdSynth(context, scene.pair, prepared.crowd, cache,
+                                        sceneLodOptions(options, scene.skeleton));
   scene.options = options;
   scene.speeds = sceneSpeedSchedule(options);
   scene.groundExtent = sceneGroundExtent(options);
   if (scene.clothDb)
-    scene.cloth = std::make_unique<secondary::ClothLayer>(context, *scene.clothDb,
-                                                          scene.steered ? scene.steered->crowd() : scene.synth.crowd,
-                                                          scene.colorFormat,
-                                                          render::kDepthFormat, sceneClothOptions(options));
+    scene.cloth = std::make_unique<secondary::ClothLayer>(
+        context, *scene.clothDb, scene.steered ? scene.steered->crowd() : scene.synth.crowd,
+        scene.colorFormat, render::kDepthFormat, sceneClothOptions(options));
+}
+
+}  // namespace
+
+void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options) {
+  PreparedCrowd next = prepareCrowd(scene, options);
+  const bool hadCrowd = scene.steered || scene.synth.crowd.count > 0;
+  const SceneOptions previous = scene.options;
+  context.waitIdle();
+  try {
+    installCrowd(context, scene, options, next);
+  } catch (const Error&) {
+    // The old crowd's buffers are gone: rebuild it as it was spawned (it fitted before).
+    if (hadCrowd) {
+      PreparedCrowd old = prepareCrowd(scene, previous);
+      installCrowd(context, scene, previous, old);
+    }
+    throw;
+  }
 }
 
 void setLodThresholds(const gpu::Context& context, ViewScene& scene, float midPixels,
@@ -63,9 +95,12 @@ void setLodThresholds(const gpu::Context& context, ViewScene& scene, float midPi
   scene.options.lodNearPixels = nearPixels;
   if (!frameSynth(scene).lod) return;
   context.waitIdle();
-  const synth::CoverageThresholds thresholds = synth::CoverageThresholds::levels(midPixels, nearPixels);
-  if (scene.steered) scene.steered->setLodThresholds(scene.skeleton, thresholds);
-  else synth::setLodThresholds(scene.synth, scene.skeleton, thresholds);
+  const synth::CoverageThresholds thresholds =
+      synth::CoverageThresholds::levels(midPixels, nearPixels);
+  if (scene.steered)
+    scene.steered->setLodThresholds(scene.skeleton, thresholds);
+  else
+    synth::setLodThresholds(scene.synth, scene.skeleton, thresholds);
 }
 
 }  // namespace throng::tools

@@ -44,7 +44,8 @@ std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const Scen
                                          anim::ClipPair clips, VkFormat colorFormat);
 
 // Replaces the crowd by a new one for `options` (waits for the GPU first). Throws Error for
-// impossible options and then leaves the scene as it was.
+// impossible options and then leaves the scene as it was; when the new crowd fails part way
+// (gpu::LimitError past a device limit) the old one is rebuilt as it was spawned.
 void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options);
 
 // New coverage-LOD thresholds (pixels: the torso's for mid, the limbs' for near) for the running

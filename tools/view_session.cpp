@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/log.h"
+#include "limit_option.h"
 #include "render/offscreen_target.h"
 #include "stats.h"
 
@@ -37,9 +38,14 @@ ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
       script_(std::move(script)),
       window_({size.width, size.height, "throng view"}),
       context_(contextOptionsFor(o, window_)),
+      fitsDevice_((checkSceneForDevice(o.scene, context_), true)),
       presenter_(context_, window_, o.vsync),
       renderer_(context_, presenter_.swapchain().format(), render::kDepthFormat),
-      scene_(makeViewScene(context_, o.scene, std::move(clips), presenter_.swapchain().format())),
+      scene_(namingOption(charactersOption(o.scene),
+                          [&] {
+                            return makeViewScene(context_, o.scene, std::move(clips),
+                                                 presenter_.swapchain().format());
+                          })),
       lod_(context_),
       camera_(sceneCamera(o.scene)),
       initialCamera_(camera_),
@@ -92,6 +98,10 @@ void ViewSession::applyScript(const std::vector<render::ScriptEvent>& events) {
         controls_.key(e.code, e.pressed, false, false);
         break;
       case Kind::Resize:
+        namingOption(concat(e.where, ": resize ", long(e.x), " ", long(e.y)), [&] {
+          render::checkTargetSize(context_, uint32_t(e.x), uint32_t(e.y),
+                                  concat("a ", long(e.x), "x", long(e.y), " window"));
+        });
         window_.resize(uint32_t(e.x), uint32_t(e.y));
         break;
       case Kind::Respawn:
@@ -100,10 +110,13 @@ void ViewSession::applyScript(const std::vector<render::ScriptEvent>& events) {
           int index = scenarioIndex(e.text);
           if (index < 0 || (index == kStoryboardScenario && !panel_.storyboardAvailable))
             fail("input script: unknown scenario '", e.text, "'",
-                 index == kStoryboardScenario ? " (the viewer was started without --storyboard)" : "");
+                 index == kStoryboardScenario ? " (the viewer was started without --storyboard)"
+                                              : "");
           panel_.scenario = index;
         }
         panel_.respawn = true;
+        scriptRespawnLabel_ =
+            concat(e.where, ": respawn ", long(e.x), e.text.empty() ? "" : " ", e.text);
         break;
       case Kind::Close:
         window_.requestClose();
@@ -178,7 +191,11 @@ void ViewSession::applyPanel() {
     next.cache = panel_.cache;
     next.cacheBudgetMb = panel_.cacheBudgetMb;
     next.bucketWidth = panel_.bucketWidth;
-    respawn(next);
+    const std::string label = scriptRespawnLabel_.empty() ? concat("the panel's respawn of ",
+                                                                   panel_.characters, " characters")
+                                                          : scriptRespawnLabel_;
+    scriptRespawnLabel_.clear();
+    respawn(next, label);
   }
 }
 
@@ -194,21 +211,69 @@ void ViewSession::applyLodPanel() {
   if (panel_.lod != scene_->options.lod) {
     SceneOptions next = scene_->options;
     next.lod = panel_.lod;
-    respawn(next);
+    respawn(next, next.lod ? "switching the coverage LOD on" : "switching the coverage LOD off");
     panel_.lod = scene_->options.lod;  // unchanged if the respawn failed
   }
 }
 
-void ViewSession::respawn(const SceneOptions& next) {
+void ViewSession::respawn(const SceneOptions& next, const std::string& label) {
   try {
     respawnCrowd(context_, *scene_, next);
-    lod_.reset();  // the GPU is idle: pending mask copies describe the old crowd
+    lod_.reset();         // the GPU is idle: pending mask copies describe the old crowd
     stats_.resetCloth();  // a new cloth layer numbers its frames from 1
     ++respawns_;
+    respawned_ = true;
+    respawnLabel_ = label;
     panel_.message.clear();
   } catch (const Error& e) {
-    panel_.message = concat("respawn failed: ", e.what());
+    panel_.message = concat("respawn failed: ", label, ": ", e.what());
+    panel_.characters = static_cast<int>(scene_->options.scenario.characters);
+    logWarning(panel_.message);
   }
+}
+
+render::FrameTimestamps ViewSession::recordCrowdOnce(const render::PresentFrame& frame, float dt) {
+  anim::SpeedRetarget retarget = scene_->speeds.advance(dt);
+  if (retarget.epoch != 0) ++speedChanges_;
+  render::FrameHooks clothHooks;
+  if (scene_->cloth) clothHooks = scene_->cloth->hooks(frame.slot);
+  if (scene_->steered) scene_->steered->addHooks(clothHooks, dt);  // storyboard steering
+  return render::recordCrowdFrame(frame.cmd, context_, framePrograms(*scene_), frameSynth(*scene_),
+                                  renderer_, camera_, scene_->groundExtent, frame.targets, dt,
+                                  *frame.timestamps, frame.slot, retarget,
+                                  panel_.lodTint && frameSynth(*scene_).lod, &clothHooks);
+}
+
+render::FrameTimestamps ViewSession::recordCrowd(const render::PresentFrame& frame, float dt) {
+  try {
+    render::FrameTimestamps marks = recordCrowdOnce(frame, dt);
+    if (respawned_ || !recorded_) recorded_ = scene_->options;
+    respawned_ = false;
+    return marks;
+  } catch (const gpu::LimitError& e) {
+    if (!recorded_)
+      fail(charactersOption(scene_->options), ": ", e.what());  // the crowd it started with
+    presenter_.restartFrame(frame);  // drops the commands that refer to the crowd's buffers
+    revertRespawn(e);
+    return recordCrowdOnce(frame, dt);
+  }
+}
+
+void ViewSession::revertRespawn(const gpu::LimitError& error) {
+  const std::string message = concat("respawn failed: ", respawnLabel_, ": ", error.what());
+  respawnCrowd(context_, *scene_, *recorded_);  // waits for the GPU first
+  // The renderer's per-character lists grew for the refused crowd and are bound whole: a fresh
+  // renderer sizes them for the crowd brought back.
+  renderer_ =
+      render::CrowdRenderer(context_, presenter_.swapchain().format(), render::kDepthFormat);
+  lod_.reset();
+  stats_.resetCloth();
+  --respawns_;
+  respawned_ = false;
+  panel_.characters = static_cast<int>(scene_->options.scenario.characters);
+  panel_.lod = scene_->options.lod;
+  panel_.message = message;
+  logWarning(message);
 }
 
 float ViewSession::simulationStep(double wallSeconds) {
@@ -325,17 +390,22 @@ void ViewSession::report() {
       const PanelInfo info = panelInfo();
       const ClothFrameStats& c = info.stats->cloth();
       const CapeCounts n = capeCounts(c.capes, info.clothSplat);
-      j["cloth"] = {{"file", info.clothFile},
-                    {"gpuMs", stats_.clothMedianMs()},
-                    {"frame", c.frame},
-                    {"usedStates", c.capes.usedStates},
-                    {"demoted", c.capes.demoted},
-                    {"levels", {c.capes.capes[0], c.capes.capes[1], c.capes.capes[2], c.capes.capes[3]}},
-                    {"capes", {{"triangles", n.triangles}, {"coarse", n.coarse}, {"splatted", n.splatted}}},
-                    {"splat", info.clothSplat},
-                    {"lastFrameMs",
-                     {{"total", c.gpu.totalMs()}, {"advance", c.gpu.advanceMs}, {"mark", c.gpu.markMs},
-                      {"decode", c.gpu.decodeMs}, {"splat", c.gpu.splatMs}, {"draw", c.gpu.drawMs}}}};
+      j["cloth"] = {
+          {"file", info.clothFile},
+          {"gpuMs", stats_.clothMedianMs()},
+          {"frame", c.frame},
+          {"usedStates", c.capes.usedStates},
+          {"demoted", c.capes.demoted},
+          {"levels", {c.capes.capes[0], c.capes.capes[1], c.capes.capes[2], c.capes.capes[3]}},
+          {"capes", {{"triangles", n.triangles}, {"coarse", n.coarse}, {"splatted", n.splatted}}},
+          {"splat", info.clothSplat},
+          {"lastFrameMs",
+           {{"total", c.gpu.totalMs()},
+            {"advance", c.gpu.advanceMs},
+            {"mark", c.gpu.markMs},
+            {"decode", c.gpu.decodeMs},
+            {"splat", c.gpu.splatMs},
+            {"draw", c.gpu.drawMs}}}};
     }
     j["validationMessages"] = messages;
     j["screenshot"] = screenshotWritten_;

@@ -3,10 +3,12 @@
 // and the statistics it reports at exit.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gpu/context.h"
+#include "gpu/limits.h"
 #include "render/crowd_frame.h"
 #include "render/imgui_layer.h"
 #include "render/input_script.h"
@@ -33,14 +35,22 @@ class ViewSession {
   void handle(render::ViewAction action);
   void applyPanel();
   void applyLodPanel();
-  void respawn(const SceneOptions& next);
+  // `label` names the request in errors ("s.txt:3: respawn 4000000", "the panel's respawn").
+  void respawn(const SceneOptions& next, const std::string& label);
+  // Records the crowd's part of a frame. A device limit met by a respawned crowd brings back the
+  // last crowd that recorded, and records that instead; the crowd the viewer started with
+  // fails with an error naming -n.
+  render::FrameTimestamps recordCrowd(const render::PresentFrame& frame, float dt);
+  render::FrameTimestamps recordCrowdOnce(const render::PresentFrame& frame, float dt);
+  void revertRespawn(const gpu::LimitError& error);
   float simulationStep(double wallSeconds);
   void collectTimes(uint32_t slot);
   void saveScreenshot(const std::filesystem::path& path);
   // With the coverage LOD: the masks of the newest frame read back; without it every joint.
   LodStats lodStats() const {
-    return frameSynth(*scene_).lod ? lod_.latest()
-                                   : fullDetailStats(characterCount(*scene_), frameSynth(*scene_).jointCount());
+    return frameSynth(*scene_).lod
+               ? lod_.latest()
+               : fullDetailStats(characterCount(*scene_), frameSynth(*scene_).jointCount());
   }
   PanelInfo panelInfo() const;
 
@@ -48,6 +58,7 @@ class ViewSession {
   render::InputScript script_;
   render::Window window_;
   gpu::Context context_;
+  bool fitsDevice_;  // --size and --cache-budget checked against the device, before the presenter
   render::WindowPresenter presenter_;
   render::CrowdRenderer renderer_;
   std::unique_ptr<ViewScene> scene_;
@@ -65,6 +76,10 @@ class ViewSession {
   bool pending_[render::kPresenterFrames] = {};
   std::string screenshotWritten_;
   uint64_t speedChanges_ = 0, respawns_ = 0;
+  std::optional<SceneOptions> recorded_;  // the options of the last crowd that recorded a frame
+  bool respawned_ = false;                // the crowd has not recorded a frame since its respawn
+  std::string respawnLabel_;              // names the latest respawn in errors
+  std::string scriptRespawnLabel_;        // the script's respawn waiting for applyPanel
   double titleSeconds_ = 0.0;
 };
 

@@ -18,6 +18,14 @@ Basis viewBasis(const Camera& camera) {
   return {forward, right, glm::cross(right, forward)};
 }
 
+// A move that would leave the camera non-finite (or past float range) is dropped.
+bool finiteMove(const Camera& camera, glm::vec3 delta) {
+  const glm::vec3 eye = camera.eye + delta, target = camera.target + delta;
+  return std::isfinite(eye.x) && std::isfinite(eye.y) && std::isfinite(eye.z) &&
+         std::isfinite(target.x) && std::isfinite(target.y) && std::isfinite(target.z) &&
+         eye != target;
+}
+
 }  // namespace
 
 float cameraDistance(const Camera& camera) {
@@ -35,8 +43,11 @@ float cameraYawDegrees(const Camera& camera) {
 }
 
 void orbitCamera(Camera& camera, float dxPixels, float dyPixels) {
+  if (!std::isfinite(dxPixels) || !std::isfinite(dyPixels)) return;
   float distance = cameraDistance(camera);
-  float yaw = glm::radians(cameraYawDegrees(camera) - dxPixels * kOrbitDegreesPerPixel);
+  // Whole turns dropped first: a huge drag keeps the angle's precision (and stays finite).
+  const float turn = std::fmod(dxPixels * kOrbitDegreesPerPixel, 360.0f);
+  float yaw = glm::radians(cameraYawDegrees(camera) - turn);
   float pitch =
       glm::radians(std::clamp(cameraPitchDegrees(camera) + dyPixels * kOrbitDegreesPerPixel,
                               -kMaxPitchDegrees, kMaxPitchDegrees));
@@ -51,11 +62,13 @@ void panCamera(Camera& camera, float dxPixels, float dyPixels, float viewportHei
   float metresPerPixel = 2.0f * cameraDistance(camera) *
                          std::tan(0.5f * glm::radians(camera.fovYDegrees)) / viewportHeight;
   glm::vec3 delta = (-dxPixels * b.right + dyPixels * b.up) * metresPerPixel;
+  if (!finiteMove(camera, delta)) return;
   camera.eye += delta;
   camera.target += delta;
 }
 
 void zoomCamera(Camera& camera, float steps) {
+  if (!std::isfinite(steps)) return;
   glm::vec3 offset = camera.eye - camera.target;
   float distance = glm::length(offset);
   float wanted = std::clamp(distance * std::pow(kZoomPerStep, steps), kMinDistance,
@@ -73,6 +86,7 @@ void flyCamera(Camera& camera, glm::vec3 axes, float seconds, float speedFactor)
   glm::vec3 direction =
       axes.x * b.right + axes.y * glm::vec3(0.0f, 1.0f, 0.0f) + axes.z * b.forward;
   glm::vec3 delta = direction * (flySpeed(camera) * speedFactor * seconds);
+  if (!finiteMove(camera, delta)) return;
   camera.eye += delta;
   camera.target += delta;
 }

@@ -16,6 +16,10 @@ namespace throng::render {
 namespace {
 
 constexpr long kMaxFrames = 100000;
+// Cursor positions may leave the window (at most 16384 pixels a side) but not by absurd
+// amounts; wheel steps per line are bounded alike. Past these the camera's floats overflow.
+constexpr double kMaxCursorPixels = 100000.0;
+constexpr double kMaxScrollSteps = 1000.0;
 
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
@@ -39,6 +43,13 @@ struct LineReader {
       fail(where, ": expected ", what, ", got '", text, "'");
     return v;
   }
+  double bounded(const std::string& text, const char* what, double limit) {
+    double v = number(text, what);
+    if (std::fabs(v) > limit)
+      fail(where, ": expected ", what, " in ", -limit, "..", limit, ", got '", text, "'");
+    return v;
+  }
+  double pixel(const char* what) { return bounded(word(what), what, kMaxCursorPixels); }
   long count(const std::string& text, const char* what, long lo, long hi) {
     double v = number(text, what);
     if (v != std::floor(v) || v < lo || v > hi)
@@ -64,8 +75,8 @@ void addEmptyFrames(InputScript& script, long n) {
 }
 
 void parseDrag(LineReader& line, InputScript& script) {
-  double x0 = line.number(line.word("X0"), "X0"), y0 = line.number(line.word("Y0"), "Y0");
-  double x1 = line.number(line.word("X1"), "X1"), y1 = line.number(line.word("Y1"), "Y1");
+  double x0 = line.pixel("X0"), y0 = line.pixel("Y0");
+  double x1 = line.pixel("X1"), y1 = line.pixel("Y1");
   long frames = 10;
   int button = GLFW_MOUSE_BUTTON_LEFT;
   std::string w;
@@ -111,17 +122,20 @@ void parseLine(LineReader& line, InputScript& script) {
     addEmptyFrames(script, frames - 1);
     script.frames.push_back({{ScriptEvent::Kind::Key, 0, 0, code, false}});
   } else if (command == "scroll") {
-    double steps = line.number(line.word("wheel steps"), "wheel steps");
+    double steps = line.bounded(line.word("wheel steps"), "wheel steps", kMaxScrollSteps);
     line.end();
     script.frames.push_back({{ScriptEvent::Kind::Scroll, steps}});
   } else if (command == "resize") {
     long w = line.count(line.word("a width"), "a width", 1, 16384);
     long h = line.count(line.word("a height"), "a height", 1, 16384);
     line.end();
-    script.frames.push_back({{ScriptEvent::Kind::Resize, double(w), double(h)}});
+    ScriptEvent e{ScriptEvent::Kind::Resize, double(w), double(h)};
+    e.where = line.where;
+    script.frames.push_back({e});
   } else if (command == "respawn") {
     long n = line.count(line.word("a character count"), "a character count", 1, 4000000);
     ScriptEvent e{ScriptEvent::Kind::Respawn, double(n)};
+    e.where = line.where;
     line.optionalWord(e.text);
     line.end();
     script.frames.push_back({e});

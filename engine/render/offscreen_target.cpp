@@ -3,21 +3,32 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "gpu/limits.h"
 
 namespace throng::render {
+
+void checkTargetSize(const gpu::Context& context, uint32_t width, uint32_t height,
+                     const std::string& what) {
+  gpu::checkImageSize(context, what, width, height, /*attachment=*/true);
+  if (!context.info().int64Atomics) return;  // no joint splat, no visibility buffer
+  const uint64_t visibilityBytes = uint64_t(width) * height * sizeof(uint64_t);
+  gpu::checkLimit(context, concat(what, "'s joint-splat visibility buffer (8 bytes a pixel)"),
+                  "maxStorageBufferRange", visibilityBytes, context.info().maxStorageBufferRange);
+}
 
 OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     fail("image size ", width, "x", height, " is outside 1..16384 pixels per side");
+  checkTargetSize(context, width, height, concat("a ", width, "x", height, " render target"));
   OffscreenTarget t;
   t.width = width;
   t.height = height;
   t.color = gpu::Image2D(context, width, height, kColorFormat,
                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-  t.depth = gpu::Image2D(context, width, height, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                         VK_IMAGE_ASPECT_DEPTH_BIT);
-  t.readback = gpu::Buffer(context, VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                           gpu::MemoryUse::HostVisible);
+  t.depth = gpu::Image2D(context, width, height, kDepthFormat,
+                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+  t.readback = gpu::Buffer(context, VkDeviceSize(width) * height * 4,
+                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::HostVisible);
   return t;
 }
 
@@ -25,13 +36,13 @@ void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target) {
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {target.width, target.height, 1};
-  vkCmdCopyImageToBuffer(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target.readback.get(), 1,
-                         &region);
+  vkCmdCopyImageToBuffer(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         target.readback.get(), 1, &region);
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0, nullptr,
-                       0, nullptr);
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &barrier, 0, nullptr, 0, nullptr);
 }
 
 ImageRgba8 readbackImage(const OffscreenTarget& target) {

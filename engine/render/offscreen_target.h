@@ -1,5 +1,7 @@
 #pragma once
 // Colour + depth images to render into without a window, and their readback to an image.
+#include <string>
+
 #include "core/image.h"
 #include "gpu/buffer.h"
 #include "gpu/image.h"
@@ -16,7 +18,14 @@ struct OffscreenTarget {
   uint32_t width = 0, height = 0;
 };
 
-// Throws Error for sizes outside 1..16384.
+// Checks a render target size against the device before anything is made or drawn at it:
+// maxImageDimension2D and maxFramebufferWidth/Height for the images, and, where the renderer
+// splats joints (64-bit atomics), its per-pixel visibility buffer (one uint64 a pixel, bound
+// whole) against maxStorageBufferRange. Throws gpu::LimitError naming `what` and the limit.
+void checkTargetSize(const gpu::Context& context, uint32_t width, uint32_t height,
+                     const std::string& what);
+
+// Throws Error for sizes outside 1..16384, gpu::LimitError past the device's limits.
 OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height);
 
 // Records the copy of the colour image (left in TRANSFER_SRC layout by the frame) to `readback`.

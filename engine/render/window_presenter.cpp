@@ -35,6 +35,8 @@ void WindowPresenter::rebuild() {
                                           swapchain_.get());
   swapchain_ = std::move(next);
   VkExtent2D extent = swapchain_->extent();
+  checkTargetSize(context_, extent.width, extent.height,
+                  concat("the window's ", extent.width, "x", extent.height, " swapchain"));
   for (Slot& slot : slots_)
     slot.depth =
         gpu::Image2D(context_, extent.width, extent.height, kDepthFormat,
@@ -71,14 +73,7 @@ std::optional<PresentFrame> WindowPresenter::beginFrame(
   slot.timestamps->reset();
   imageIndex_ = index;
 
-  gpu::beginCommands(slot.cmd);
-  // The crowd state and joint buffers are updated in place every frame: the previous frame
-  // (another command buffer, maybe still running) must finish with them first.
-  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
-  vkCmdPipelineBarrier(slot.cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+  beginCommands(slot);
 
   PresentFrame frame;
   frame.cmd = slot.cmd;
@@ -94,6 +89,24 @@ std::optional<PresentFrame> WindowPresenter::beginFrame(
                                extent.height,
                                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   return frame;
+}
+
+void WindowPresenter::beginCommands(Slot& slot) {
+  gpu::beginCommands(slot.cmd);
+  // The crowd state and joint buffers are updated in place every frame: the previous frame
+  // (another command buffer, maybe still running) must finish with them first.
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  vkCmdPipelineBarrier(slot.cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+void WindowPresenter::restartFrame(const PresentFrame& frame) {
+  Slot& slot = slots_[frame.slot];
+  VK_CHECK(vkResetCommandBuffer(slot.cmd, 0));  // the pool allows resetting one buffer
+  slot.timestamps->reset();
+  beginCommands(slot);
 }
 
 void WindowPresenter::endFrame(const PresentFrame& frame, bool capture) {

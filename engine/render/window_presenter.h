@@ -41,6 +41,9 @@ class WindowPresenter {
   // resets the slot's timestamps it calls `beforeReset(slot)` so their results can be read.
   std::optional<PresentFrame> beginFrame(
       const std::function<void(uint32_t slot)>& beforeReset = {});
+  // Discards what was recorded into `frame` so far and begins its command buffer afresh (the
+  // same image, slot and reset timestamps): for a frame whose recording threw.
+  void restartFrame(const PresentFrame& frame);
   // Leaves the image in PRESENT_SRC, copying it to host memory first when `capture`.
   void endFrame(const PresentFrame& frame, bool capture);
   // The last captured frame (waits for it): RGBA, opaque.
@@ -63,6 +66,7 @@ class WindowPresenter {
   };
 
   void rebuild();
+  void beginCommands(Slot& slot);
 
   const gpu::Context& context_;
   Window& window_;

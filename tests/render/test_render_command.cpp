@@ -3,10 +3,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "cli_support.h"
 #include "core/image.h"
+#include "gpu_fixture.h"
 #include "test_support.h"
 
 using namespace throng;
@@ -14,7 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 constexpr const char* kGoldenArgs =
-    "render --characters 50 --size 320x180 --seed 7 --frames 4 --camera closeup --eye 6,3.5,-9 --validation";
+    "render --characters 50 --size 320x180 --seed 7 --frames 4 --camera closeup --eye 6,3.5,-9 "
+    "--validation";
 
 size_t fileCount(const fs::path& dir) {
   size_t n = 0;
@@ -35,7 +39,8 @@ TEST_CASE("render: a small fixed scene matches the stored golden image") {
   REQUIRE_MESSAGE(fs::exists(goldenPath), "missing golden image; run scripts/update_goldens.sh");
   ImageRgba8 golden = readPng(goldenPath);
   ImageDiff diff = compareImages(actual, golden, 24);
-  MESSAGE("golden diff: mean ", diff.meanAbsError, ", pixels over threshold ", diff.fractionDifferent * 100.0, "%");
+  MESSAGE("golden diff: mean ", diff.meanAbsError, ", pixels over threshold ",
+          diff.fractionDifferent * 100.0, "%");
   bool ok = diff.meanAbsError < 1.5 && diff.fractionDifferent < 0.01;
   if (!ok) {
     writePngAtomic(out / "actual.png", actual);
@@ -45,7 +50,8 @@ TEST_CASE("render: a small fixed scene matches the stored golden image") {
   CHECK(ok);
   // Not a blank frame: characters cover a real part of the picture.
   size_t coloured = 0;
-  for (const Rgba8& p : actual.pixels) coloured += (std::max({p.r, p.g, p.b}) - std::min({p.r, p.g, p.b}) > 60) ? 1 : 0;
+  for (const Rgba8& p : actual.pixels)
+    coloured += (std::max({p.r, p.g, p.b}) - std::min({p.r, p.g, p.b}) > 60) ? 1 : 0;
   CHECK(coloured > actual.pixels.size() / 50);
 }
 
@@ -60,10 +66,19 @@ TEST_CASE("render: bad options fail clearly and write nothing") {
       {"--scene stadium", "unknown scene 'stadium'"},
       {"--size 12x", "--size: expected WxH"},
       {"--camera orbit", "unknown camera preset 'orbit'"},
-      {"--slow /nonexistent/slow.bvh --fast /nonexistent/fast.bvh", "/nonexistent/slow.bvh: cannot open"},
+      {"--slow /nonexistent/slow.bvh --fast /nonexistent/fast.bvh",
+       "/nonexistent/slow.bvh: cannot open"},
       {"--slow only.bvh", "--slow and --fast must be given together"},
       {"--frames 0", "--frames: expected 1..100000"},
       {"--eye 1,2", "--eye: expected three numbers"},
+      // 1e9 speed buckets made 4 GB per-bucket buffers (a crash); the count is bounded.
+      {"--cache --bucket-width 1e-9",
+       "--bucket-width: expected a speed-weight width in 1/4095..1 (at most 4096"},
+      {"--cache --bucket-width 0.0002", "at most 4096 speed buckets"},
+      // --fov 0 meant "the preset's" although the message says 1..170.
+      {"--fov 0", "--fov: expected 1..170 degrees, got 0"},
+      {"--fov 170.5", "--fov: expected 1..170 degrees"},
+      {"--fov nan", "--fov: expected 1..170 degrees"},
   };
   for (const Case& c : cases) {
     test::CommandResult run = test::runThrong("render " + c.args + " --out " + out.string());
@@ -74,8 +89,52 @@ TEST_CASE("render: bad options fail clearly and write nothing") {
   }
   // An output path that is a file, not a directory.
   fs::path file = out / "not_a_dir";
-  { std::FILE* f = std::fopen(file.c_str(), "w"); std::fclose(f); }
+  {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    std::fclose(f);
+  }
   test::CommandResult run = test::runThrong("render --frames 1 --out " + file.string());
   CHECK(run.exitCode != 0);
   CHECK(run.output.find("not a directory") != std::string::npos);
+}
+
+// Past a device limit the run stops before the first frame with the option and the limit named,
+// instead of binding more than the device allows (undefined behaviour without validation).
+TEST_CASE("render: options past the device's limits name the option and the limit") {
+  const gpu::DeviceInfo& info = test::gpuContext().info();
+  fs::path out = test::freshDirectory("device_limits");
+  struct Case {
+    std::string args, option, limit;
+  };
+  std::vector<Case> cases;
+  // The joint splat keeps 8 bytes a pixel in one storage binding.
+  const auto side = static_cast<uint32_t>(std::sqrt(double(info.maxStorageBufferRange) / 8.0)) + 2;
+  if (info.int64Atomics && side <= 16384) {
+    const std::string size = std::to_string(side) + "x" + std::to_string(side);
+    cases.push_back({"-n 10 --size " + size, "--size " + size + ": ", "maxStorageBufferRange"});
+  }
+  // The cache's data is one storage binding of the budget.
+  const double budgetMb = double(info.maxStorageBufferRange) / 1048576.0 + 8.0;
+  if (budgetMb <= 65536.0) {
+    const std::string budget = std::to_string(int(budgetMb));
+    cases.push_back({"-n 10 --cache --cache-budget " + budget, "--cache-budget " + budget + ": ",
+                     "maxStorageBufferRange"});
+  }
+  // 4M characters' joint matrices (25 joints of 48 bytes) outgrow one buffer or heap here.
+  const uint64_t largestBuffer = info.maxBufferSize > 0
+                                     ? std::min(info.maxBufferSize, info.deviceLocalBytes)
+                                     : info.deviceLocalBytes;
+  if (uint64_t(4000000) * 25 * 48 > largestBuffer)
+    cases.push_back({"-n 4000000", "-n 4000000: ", ""});
+  for (const Case& c : cases) {
+    test::CommandResult run =
+        test::runThrong("render " + c.args + " --frames 1 --validation --out " + out.string());
+    INFO(c.args, " → ", run.output);
+    CHECK(run.exitCode == 1);
+    CHECK(run.output.find("error: " + c.option) != std::string::npos);
+    CHECK(run.output.find(c.limit) != std::string::npos);
+    CHECK(run.output.find(info.name) != std::string::npos);
+    CHECK(run.output.find("vulkan validation") == std::string::npos);
+    CHECK(fileCount(out) == 0);
+  }
 }

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "render/camera_control.h"
 
@@ -93,4 +94,36 @@ TEST_CASE("fly: forward follows the view, up is world up, speed scales with dist
   Camera still = before;
   render::flyCamera(still, {1.0f, 0.0f, 0.0f}, 0.0f);  // no time, no motion
   CHECK(still.eye == before.eye);
+}
+
+namespace {
+bool finite(const Camera& c) {
+  return std::isfinite(c.eye.x) && std::isfinite(c.eye.y) && std::isfinite(c.eye.z) &&
+         std::isfinite(c.target.x) && std::isfinite(c.target.y) && std::isfinite(c.target.z);
+}
+}  // namespace
+
+TEST_CASE("camera moves: huge or non-finite inputs never make the camera NaN") {
+  const float inf = std::numeric_limits<float>::infinity();
+  const float huge[] = {1e30f, -1e30f, 3e38f, inf, -inf, std::nanf("")};
+  for (float v : huge) {
+    INFO(v);
+    Camera c = sample();
+    render::orbitCamera(c, v, 2.0f);
+    CHECK(finite(c));
+    render::orbitCamera(c, 2.0f, v);
+    CHECK(finite(c));
+    render::panCamera(c, v, v, 720.0f);
+    CHECK(finite(c));
+    render::zoomCamera(c, v);
+    CHECK(finite(c));
+    render::flyCamera(c, {1.0f, 0.0f, 1.0f}, v, 1.0f);
+    CHECK(finite(c));
+    CHECK(render::cameraDistance(c) > 0.0f);
+  }
+  // A large finite orbit keeps the distance and turns by the drag modulo whole turns.
+  Camera c = sample();
+  render::orbitCamera(c, 1e9f, 0.0f);
+  CHECK(render::cameraDistance(c) ==
+        doctest::Approx(render::cameraDistance(sample())).epsilon(1e-4));
 }

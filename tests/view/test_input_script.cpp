@@ -54,6 +54,17 @@ TEST_CASE("input script: defaults, keys, waits, scroll, resize, close and commen
   CHECK(s.frames[21][0].text.empty());
 }
 
+TEST_CASE("input script: resize and respawn remember their line for later errors") {
+  render::InputScript script =
+      render::parseInputScript("wait 1\nresize 640 480\n\nrespawn 20\n", "s.txt");
+  REQUIRE(script.frames.size() == 3);
+  CHECK(script.frames[1][0].where == "s.txt:2");
+  CHECK(script.frames[2][0].where == "s.txt:4");
+  // Off-window drags within the bound are kept as given.
+  script = render::parseInputScript("drag -5000 2 99999 4 1\n", "s.txt");
+  CHECK(script.frames[1][0].x == 99999.0);
+}
+
 TEST_CASE("input script: key names") {
   CHECK(render::keyCodeFromName("a") == GLFW_KEY_A);
   CHECK(render::keyCodeFromName("7") == GLFW_KEY_7);
@@ -85,6 +96,11 @@ TEST_CASE("input script: errors name the file, the line and what was expected") 
       {"scroll nan\n", "s.txt:1: expected wheel steps, got 'nan'"},
       {"respawn 0\n", "s.txt:1: expected a character count in 1..4000000, got '0'"},
       {"respawn 10 circle extra\n", "s.txt:1: unexpected 'extra'"},
+      // Finite but absurd values would overflow the camera's floats.
+      {"wait 1\ndrag 1e308 2 3 4\n", "s.txt:2: expected X0 in -100000..100000, got '1e308'"},
+      {"drag 1 2 3 -2e5\n", "s.txt:1: expected Y1 in -100000..100000, got '-2e5'"},
+      {"drag inf 2 3 4\n", "s.txt:1: expected X0, got 'inf'"},
+      {"scroll 1e30\n", "s.txt:1: expected wheel steps in -1000..1000, got '1e30'"},
   };
   for (const Case& c : cases) {
     INFO(c.text);

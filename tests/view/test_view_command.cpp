@@ -281,6 +281,7 @@ TEST_CASE("view: bad options fail like throng render, before any window opens") 
   test::useDisplay("");  // the option errors come first, display or not
   fs::path out = test::freshDirectory("view_bad_options");
   writeText(out / "bad.txt", "wait 2\njump 3\n");
+  writeText(out / "huge.txt", "wait 2\ndrag 1e308 2 3 4\n");
   struct Case {
     std::string args;
     std::string message;
@@ -298,6 +299,11 @@ TEST_CASE("view: bad options fail like throng render, before any window opens") 
       {"--clock sometimes", "--clock: expected real or fixed"},
       {"--input-script " + (out / "missing.txt").string(), "missing.txt"},
       {"--input-script " + (out / "bad.txt").string(), "bad.txt:2: unknown command 'jump'"},
+      // A drag this far made the camera NaN and the run exit 0.
+      {"--input-script " + (out / "huge.txt").string(),
+       "huge.txt:2: expected X0 in -100000..100000, got '1e308'"},
+      {"--fov 0", "--fov: expected 1..170 degrees, got 0"},
+      {"--cache --bucket-width 1e-9", "at most 4096 speed buckets"},
   };
   for (const Case& c : cases) {
     test::CommandResult run = test::runThrong("view " + c.args);
