@@ -1,7 +1,11 @@
 #include "fuzz_support.h"
 
+#include <cxxabi.h>
 #include <sys/mman.h>
 #include <unistd.h>
+
+#include <memory>
+#include <typeinfo>
 
 namespace throng::fuzz {
 
@@ -26,6 +30,13 @@ void finding(std::string_view what, std::string_view message) {
   std::fprintf(stderr, "throng fuzz finding: %.*s: %.*s\n", int(what.size()), what.data(),
                int(message.size()), message.data());
   std::abort();
+}
+
+std::string typeName(const std::exception& e) {
+  int status = 0;
+  const std::unique_ptr<char, decltype(&std::free)> name(
+      abi::__cxa_demangle(typeid(e).name(), nullptr, nullptr, &status), &std::free);
+  return status == 0 && name ? std::string(name.get()) : std::string(typeid(e).name());
 }
 
 bool isInternalCheck(std::string_view message) {

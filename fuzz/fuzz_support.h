@@ -12,7 +12,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <typeinfo>
 
 #include "core/error.h"
 
@@ -36,6 +35,9 @@ class MemoryFile {
 // Prints why the input is a finding and aborts (libFuzzer saves the input as a crash).
 [[noreturn]] void finding(std::string_view what, std::string_view message);
 
+// The exception's type as C++ spells it ("std::out_of_range").
+std::string typeName(const std::exception& e);
+
 // True for the message of a THRONG_CHECK: "<source dir>/engine/...:LINE: cond failed: ...".
 bool isInternalCheck(std::string_view message);
 
@@ -48,7 +50,7 @@ void expectParseOrError(Body&& parse) {
   } catch (const Error& e) {
     if (isInternalCheck(e.what())) finding("internal check failed", e.what());
   } catch (const std::exception& e) {
-    finding(typeid(e).name(), e.what());
+    finding(typeName(e), e.what());
   }
 }
 

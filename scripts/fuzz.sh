@@ -52,8 +52,11 @@ for name in "${harnesses[@]}"; do
   if [ "$status" -ne 0 ]; then
     failed+=("$name")
     echo "FINDING in fuzz_$name (exit $status), log $log"
-    grep -E 'Test unit written to|throng fuzz finding' "$log" | sed 's/^/   /' || true
-    grep -m1 -A14 -E '^==[0-9]+==ERROR|runtime error|throng fuzz finding|ERROR: libFuzzer' "$log" | sed 's/^/   /' || true
+    grep -E 'Test unit written to' "$log" | sed 's/^/   /' || true
+    # The report's first line and its first frames outside the sanitizer and fuzzer runtimes.
+    grep -m1 -E 'ERROR: |runtime error|throng fuzz finding' "$log" | sed 's/^/   /' || true
+    grep -E '^ *#[0-9]+ 0x' "$log" | grep -v -E ' in (__sanitizer|__asan|__ubsan|__interceptor|fuzzer::|__pthread|raise|abort|__libc|_start|main )|libc\.so' |
+      head -8 | sed -E 's/ \(BuildId: [0-9a-f]+\)//; s/^/   /' || true
   fi
 done
 if [ ${#failed[@]} -gt 0 ]; then
