@@ -189,8 +189,8 @@ void writeRows(uint index, vec4 q, vec3 scale, vec3 t) {
 
 // Writes the kJointCount draw matrices of one character at joints[base …]: each clip sampled
 // between its two rows (slerped rotations, lerped offsets; anim::clipSample), the two clips
-// blended by w, placed by M = T(origin)·R(yaw)·S(scale). With yaw = identity, origin = 0, scale = 1 this is the
-// character-space pose the motion cache stores.
+// blended by w, placed by M = T(origin)·R(yaw)·S(scale). With yaw = identity, origin = 0,
+// scale = 1 this is the character-space pose the motion cache stores.
 // Joints whose bit is clear in `activeJoints` (the coverage LOD mask) are neither blended nor written;
 // their children are never activeJoints (the mask keeps parents before children).
 void composePose(uint base, ClipSample slow, ClipSample fast, float w, vec4 yaw, vec3 origin, float scale,
