@@ -153,6 +153,29 @@ TEST_CASE("bones: a ground-level root and the segment up to the pelvis are place
   CHECK(without <= 0.0f);
 }
 
+TEST_CASE("bones: placements are decided from the geometry and the channels, not from names") {
+  // root, pelvis 0.9 m above it, a 5 cm helper beside the root, a spine, two legs down to the
+  // floor.
+  const std::vector<int32_t> parents = {-1, 0, 0, 1, 1, 4, 1, 6};
+  const std::vector<glm::vec3> ground = {{0, 0, 0},         {0, 0.9f, 0},     {0.05f, 0, 0},
+                                         {0, 1.4f, 0},      {0.1f, 0.85f, 0}, {0.1f, 0.1f, 0},
+                                         {-0.1f, 0.85f, 0}, {-0.1f, 0.1f, 0}};
+  std::vector<bool> placement = anim::placementJoints(parents, ground);
+  CHECK(placement == std::vector<bool>{true, true, false, false, false, false, false, false});
+  // The same body with its root at the pelvis: no placement, unless the root only translates.
+  std::vector<glm::vec3> pelvisRoot = ground;
+  pelvisRoot[0].y = 0.9f;
+  pelvisRoot[2].y = 0.9f;
+  CHECK(anim::drawnBoneMask(anim::placementJoints(parents, pelvisRoot)) == 0xFFu);
+  std::vector<bool> translationOnly(parents.size(), false);
+  translationOnly[0] = true;
+  CHECK(anim::drawnBoneMask(anim::placementJoints(parents, pelvisRoot, translationOnly)) == 0xFEu);
+  // Too few joints to tell: nothing is a placement.
+  const std::vector<int32_t> two = {-1, 0};
+  const std::vector<glm::vec3> twoPositions = {{0, 0, 0}, {0, 1, 0}};
+  CHECK(anim::drawnBoneMask(anim::placementJoints(two, twoPositions)) == 3u);
+}
+
 TEST_CASE(
     "LOD: every figure at least 40 px tall is drawn with four limbs (random crowds, default "
     "cameras)") {
