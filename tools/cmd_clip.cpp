@@ -49,8 +49,12 @@ std::string channelList(const anim::Joint& joint) {
 
 anim::LoopCut findLoop(const anim::RawClip& raw, const anim::UnitsGuess& units,
                        const ClipInfoOptions& options) {
-  anim::Clip clip = anim::resample(anim::scaleToMetres(anim::toClip(raw), units.metresPerUnit),
-                                   kLoopFrameTime);
+  anim::Clip clip;
+  try {
+    clip = anim::resample(anim::scaleToMetres(anim::toClip(raw), units.metresPerUnit), kLoopFrameTime);
+  } catch (const Error& e) {
+    fail(options.file, ": ", e.what());  // the resampler names the clip, not the file it came from
+  }
   // A cycle needs its end frame too, so at most frameCount - 1 frames long.
   int maxFrames = std::min(options.maxFrames, clip.frameCount - 1);
   int minFrames = std::min(options.minFrames, maxFrames);
