@@ -12,6 +12,7 @@
 #include "anim/default_clips.h"
 #include "anim/pair_placement.h"
 #include "anim/reference_synth.h"
+#include "core/error.h"
 #include "crowd/scenario.h"
 #include "render/crowd_renderer.h"
 #include "render/joint_lod_cpu.h"
@@ -225,57 +226,96 @@ TEST_CASE(
   CHECK(allTall > 500);
 }
 
+namespace {
+
+struct LevelChanges {
+  size_t changes = 0;
+  double perCharacterSecond = 0.0;
+  double shortestGap = 1e9;  // seconds between two changes of one character
+  size_t mostInOneFrame = 0;
+};
+
+// Steps the crowd (CPU root motion) for `frames` frames of dt seconds under cameraAt(t in [0, 1))
+// and counts the level changes after the first frame (which sets every level).
+template <typename CameraAt>
+LevelChanges countLevelChanges(const LodBody& body, const synth::CoverageParts& levels,
+                               crowd::Crowd crowd, CameraAt cameraAt, int frames, float dt) {
+  LevelChanges out;
+  std::vector<synth::CoverageMask> masks(crowd.size());
+  std::vector<int> lastChange(crowd.size(), -1);
+  for (int f = 0; f < frames; ++f) {
+    for (size_t i = 0; i < crowd.size(); ++i)
+      anim::stepCharacter(body.pair, crowd.placement[i], crowd.motion[i], dt, crowd.steering);
+    std::vector<synth::CoverageMask> before = masks;
+    synth::coverageCpu(lodCamera(cameraAt(float(f) / float(frames))), levels, body.jointCount,
+                       crowd, {}, masks, {});
+    if (f == 0) continue;
+    size_t thisFrame = 0;
+    for (size_t i = 0; i < masks.size(); ++i) {
+      if (masks[i].level == before[i].level) continue;
+      ++thisFrame;
+      if (lastChange[i] >= 0)
+        out.shortestGap = std::min(out.shortestGap, double(f - lastChange[i]) * dt);
+      lastChange[i] = f;
+    }
+    out.changes += thisFrame;
+    out.mostInOneFrame = std::max(out.mostInOneFrame, thisFrame);
+  }
+  out.perCharacterSecond = double(out.changes) / double(crowd.size()) / (double(frames) * dt);
+  return out;
+}
+
+std::string describe(const LevelChanges& c) {
+  return concat(c.changes, " changes, ", c.perCharacterSecond,
+                " per character per second, at most ", c.mostInOneFrame,
+                " in a frame, shortest gap ", c.shortestGap, " s");
+}
+
+}  // namespace
+
 TEST_CASE(
-    "LOD: a character changes level at most once a second (moving crowd, camera dollying in and "
-    "out)") {
+    "LOD: a character changes level at most once a second (moving crowds, still and dollying "
+    "cameras)") {
   const LodBody& body = defaultBody();
+  synth::CoverageThresholds instantThresholds;
+  instantThresholds.hysteresis = 0.0f;
+  instantThresholds.minChangeSeconds = 0.0f;
+  const LodBody instant(anim::defaultRunPair(), instantThresholds);
+  const float dt = 1.0f / 30.0f;
+
+  // 800 characters, the wide camera moving in to a fifth of its distance and back out in 20 s.
   crowd::ScenarioOptions options;
   options.characters = 800;
   options.seed = 4;
-  crowd::Crowd crowd = crowd::makeScenario(options);
+  const crowd::Crowd crowd = crowd::makeScenario(options);
   const render::Camera wide = render::cameraPreset("wide", crowd::scenarioExtent(options));
-  const float dt = 1.0f / 30.0f;
-  const int frames = 600;
-  auto run = [&](const synth::CoverageParts& levels, double& changesPerSecond,
-                 double& shortestGap) {
-    crowd::Crowd moving = crowd;
-    std::vector<synth::CoverageMask> masks(moving.size());
-    std::vector<int> lastChange(moving.size(), -1);
-    size_t changes = 0;
-    shortestGap = 1e9;
-    for (int f = 0; f < frames; ++f) {
-      const float t = float(f) / float(frames);
-      render::Camera camera = wide;  // in to a fifth of the distance and back out
-      camera.eye = glm::mix(wide.eye, glm::mix(wide.target, wide.eye, 0.2f),
-                            1.0f - std::abs(2.0f * t - 1.0f));
-      for (size_t i = 0; i < moving.size(); ++i)
-        anim::stepCharacter(body.pair, moving.placement[i], moving.motion[i], dt, moving.steering);
-      std::vector<synth::CoverageMask> before = masks;
-      synth::coverageCpu(lodCamera(camera), levels, body.jointCount, moving, {}, masks, {});
-      if (f == 0) continue;  // the first frame sets every level
-      for (size_t i = 0; i < masks.size(); ++i) {
-        if (masks[i].level == before[i].level) continue;
-        ++changes;
-        if (lastChange[i] >= 0) shortestGap = std::min(shortestGap, double(f - lastChange[i]) * dt);
-        lastChange[i] = f;
-      }
-    }
-    changesPerSecond = double(changes) / double(moving.size()) / (double(frames) * dt);
-    return changes;
+  auto dolly = [&](float t) {
+    render::Camera camera = wide;
+    camera.eye =
+        glm::mix(wide.eye, glm::mix(wide.target, wide.eye, 0.2f), 1.0f - std::abs(2.0f * t - 1.0f));
+    return camera;
   };
-  double rate = 0.0, gap = 0.0;
-  const size_t changes = run(body.levels, rate, gap);
-  synth::CoverageThresholds instant;
-  instant.hysteresis = 0.0f;
-  instant.minChangeSeconds = 0.0f;
-  double instantRate = 0.0, instantGap = 0.0;
-  LodBody instantBody(anim::defaultRunPair(), instant);
-  run(instantBody.levels, instantRate, instantGap);
-  MESSAGE("20 s of dollying: ", changes, " level changes, ", rate,
-          " per character per second, shortest gap ", gap, " s; without hysteresis and cycle ends ",
-          instantRate, " per character per second, shortest gap ", instantGap, " s");
-  CHECK(changes > 200);
-  CHECK(gap >= 1.0);
+  const LevelChanges moving = countLevelChanges(body, body.levels, crowd, dolly, 600, dt);
+  const LevelChanges movingInstant = countLevelChanges(body, instant.levels, crowd, dolly, 600, dt);
+  MESSAGE("dollying, 800 characters, 20 s: ", describe(moving),
+          "; without hysteresis and cycle ends ", describe(movingInstant));
+  CHECK(moving.changes > 200);
+  CHECK(moving.shortestGap >= 1.0);
+  CHECK(movingInstant.shortestGap < 1.0);  // the scenario does provoke quick changes
+
+  // The street scene: 60 characters at 0.05 per m², the street camera still, 10 s.
+  crowd::ScenarioOptions sparse;
+  sparse.characters = 60;
+  sparse.density = 0.05f;
+  const crowd::Crowd street = crowd::makeScenario(sparse);
+  const render::Camera still = render::cameraPreset("street", crowd::scenarioExtent(sparse));
+  auto fixed = [&](float) { return still; };
+  const LevelChanges walking = countLevelChanges(body, body.levels, street, fixed, 300, dt);
+  const LevelChanges walkingInstant =
+      countLevelChanges(body, instant.levels, street, fixed, 300, dt);
+  MESSAGE("street camera, 60 characters, 10 s: ", describe(walking),
+          "; without hysteresis and cycle ends ", describe(walkingInstant));
+  CHECK(walking.shortestGap >= 1.0);
 }
 
 TEST_CASE("LOD: the far and mid levels' silhouettes cover the full level's pixels") {
