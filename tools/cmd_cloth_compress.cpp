@@ -16,6 +16,7 @@
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "secondary/binary_io.h"
 #include "secondary/cloth_compress.h"
 #include "secondary/explore_file.h"
 #include "secondary/secondary_graph.h"
@@ -87,9 +88,11 @@ void runCompress(const CompressArgs& a) {
   if (a.bucketWidth && !(*a.bucketWidth > 0.0f && *a.bucketWidth <= 1.0f))
     fail("--bucket-width ", *a.bucketWidth, ": expected (0, 1]");
   const std::filesystem::path outPath = a.out;
-  // Refuse an unwritable output before the long part.
-  ensureWritableDirectory(outPath.has_parent_path() ? outPath.parent_path()
-                                                    : std::filesystem::path("."));
+  // Refuse an output that cannot be written (a directory, an unwritable folder) before the long
+  // part, and clear what a killed earlier run left behind.
+  for (const std::filesystem::path& stale : sec::prepareOutputFile(outPath, "--out"))
+    if (!a.quiet)
+      std::fprintf(stderr, "removed %s (left by a run that was killed)\n", stale.c_str());
 
   const auto start = std::chrono::steady_clock::now();
   sec::ExploreFile file = sec::loadExploreFile(a.in);

@@ -1,5 +1,6 @@
 #include "secondary/binary_io.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <array>
@@ -7,8 +8,10 @@
 #include <cerrno>
 #include <cstring>
 #include <iomanip>
+#include <limits>
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 namespace throng::secondary {
 static_assert(std::endian::native == std::endian::little,
@@ -385,6 +388,57 @@ std::string ChunkReader::string(std::string_view tag) const {
 void ChunkReader::expectCount(const ChunkInfo& c, uint64_t count) const {
   if (c.count != count)
     fail(name_, ": chunk '", c.tag, "' holds ", c.count, " elements, expected ", count);
+}
+
+namespace {
+// The pid of "<name>.tmp-<pid>" when `file` is a temporary of `name`, else -1.
+long temporaryPid(const std::string& file, const std::string& name) {
+  const std::string prefix = name + ".tmp-";
+  if (file.size() <= prefix.size() || file.size() > prefix.size() + 10 ||
+      file.compare(0, prefix.size(), prefix) != 0)
+    return -1;
+  long pid = 0;
+  for (size_t i = prefix.size(); i < file.size(); ++i) {
+    if (file[i] < '0' || file[i] > '9') return -1;
+    pid = pid * 10 + (file[i] - '0');
+  }
+  return pid > 0 ? pid : -1;
+}
+
+bool processRuns(long pid) {
+  if (pid == long(::getpid())) return false;  // this process is not writing it yet
+  if (pid > long(std::numeric_limits<pid_t>::max())) return false;
+  return ::kill(pid_t(pid), 0) == 0 || errno != ESRCH;
+}
+}  // namespace
+
+std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  const std::string name = path.filename().string();
+  std::vector<fs::path> removed;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const long pid = temporaryPid(it->path().filename().string(), name);
+    if (pid < 0 || processRuns(pid) || !it->is_regular_file(ec)) continue;
+    std::error_code removeError;
+    if (fs::remove(it->path(), removeError)) removed.push_back(it->path());
+  }
+  return removed;
+}
+
+std::vector<std::filesystem::path> prepareOutputFile(const std::filesystem::path& path,
+                                                     std::string_view option) {
+  namespace fs = std::filesystem;
+  if (path.empty()) fail(option, ": expected a file path");
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::is_directory(status))
+    fail(option, " ", path.string(), ": is a directory, expected a file to write");
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    fail(option, " ", path.string(), ": not a regular file");
+  ensureWritableDirectory(path.has_parent_path() ? path.parent_path() : fs::path("."));
+  return removeStaleTemporaries(path);
 }
 
 std::string readMagic(const std::filesystem::path& path) {

@@ -208,6 +208,17 @@ class ChunkReader {
   std::vector<ChunkInfo> chunks_;
 };
 
+// Before a long run that ends by writing `path` (option names it in messages, e.g. "--out"):
+// refuses a path that is a directory or another non-file, makes sure its directory exists and
+// accepts a new file, and removes the stale temporaries of earlier writers of this path
+// (removeStaleTemporaries). Returns the temporaries removed.
+std::vector<std::filesystem::path> prepareOutputFile(const std::filesystem::path& path,
+                                                     std::string_view option);
+// "<path>.tmp-<pid>" files that writeFileAtomic left when its process was killed mid-write
+// (they can be hundreds of MB): removes those whose process no longer runs, and this process's
+// own; a live writer's file is left alone. Returns the paths removed.
+std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem::path& path);
+
 // The first 8 bytes of a file ("" when it is shorter), to dispatch on the file kind.
 std::string readMagic(const std::filesystem::path& path);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -61,6 +62,13 @@ struct ReportRecord {
   float targetError, quantum, maxErrorBeforeQuantization, maxError, meanError, coefficientQuantum;
 };
 static_assert(sizeof(ReportRecord) == 24);
+
+// rows × columns of a decoded table; a product past 64 bits is refused, not wrapped.
+size_t checkedProduct(size_t rows, size_t columns, const std::string& name) {
+  if (columns && rows > std::numeric_limits<size_t>::max() / columns)
+    fail(name, ": ", rows, " × ", columns, " values do not fit in memory");
+  return rows * columns;
+}
 
 uint32_t coefficientStep(const ClothDatabase& db, uint32_t basis) {
   return db.coefficientSteps.empty() ? 1u : db.coefficientSteps[basis];
@@ -135,6 +143,11 @@ ClothDatabase read(const ChunkReader& r) {
     fail(name, ": ", kKind, " version ", r.version(), " unsupported (this build reads version ",
          kClothDatabaseVersion, "): recompress it with `throng cloth compress`");
   db.vertexCount = r.scalar<uint32_t>("VERT");
+  // Every count is checked against a chunk whose bytes are in the file before anything of that
+  // size is allocated: the mean holds 3 floats a vertex, so VERT cannot claim more than the file.
+  const size_t rows = size_t(db.vertexCount) * 3;
+  if (rows == 0) fail(name, ": the garment has no vertices");
+  r.expectCount(r.require("MEAN"), rows);
   db.triangles = readIndices(r, "TRIS");
   PlaybackPrimary& p = db.primary;
   p.nodes = r.vector<PrimaryNode>("NODE");
@@ -160,13 +173,12 @@ ClothDatabase read(const ChunkReader& r) {
     db.graph.edgeIsMerge[i] = (bits[i / 8] >> (i % 8)) & 1u;
   db.mean = r.vector<float>("MEAN");
   std::vector<BasisHeader> headers = r.vector<BasisHeader>("BASH");
-  const size_t rows = size_t(db.vertexCount) * 3;
-  if (rows == 0) fail(name, ": the garment has no vertices");
   for (const BasisHeader& h : headers)
     if (h.bits != 8 && h.bits != 16)
       fail(name, ": a basis has ", h.bits, " bits, expected 8 or 16");
-  std::vector<int32_t> deltas =
-      decodeIntegerBlocks(r.vector<uint8_t>("BENC"), rows * headers.size(), rows, name);
+  r.expectCount(r.require("CSTP"), headers.size());
+  std::vector<int32_t> deltas = decodeIntegerBlocks(
+      r.vector<uint8_t>("BENC"), checkedProduct(rows, headers.size(), name), rows, name);
   for (size_t i = 0; i < headers.size(); ++i) {
     QuantizedBasis b;
     b.bits = uint8_t(headers[i].bits);
@@ -184,17 +196,15 @@ ClothDatabase read(const ChunkReader& r) {
     db.bases.push_back(std::move(b));
   }
   const size_t S = db.graph.stateNode.size();
-  r.expectCount(r.require("CSTP"), headers.size());
   db.coefficientSteps = r.vector<uint16_t>("CSTP");
-  std::vector<int32_t> multiples =
-      decodeIntegerBlocks(r.vector<uint8_t>("CENC"), S * headers.size(), S, name);
+  std::vector<int32_t> multiples = decodeIntegerBlocks(
+      r.vector<uint8_t>("CENC"), checkedProduct(S, headers.size(), name), S, name);
   db.coefficients.resize(S * headers.size());
   for (size_t i = 0; i < headers.size(); ++i)
     for (size_t s = 0; s < S; ++s) {
       int64_t q = int64_t(multiples[i * S + s]) * db.coefficientSteps[i];
       if (q < -32767 || q > 32767)
-        fail(name, ": coefficient ", i, " of state ", s, " decodes to ", q,
-             ", outside 16 bits");
+        fail(name, ": coefficient ", i, " of state ", s, " decodes to ", q, ", outside 16 bits");
       db.coefficients[s * headers.size() + i] = int16_t(q);
     }
   ReportRecord rec = r.scalar<ReportRecord>("REPT");
@@ -264,6 +274,15 @@ void validateDatabase(const ClothDatabase& db, const std::string& name) {
   if (p.run.framesPerBucket.size() != synth::speedBucketCount(p.run.bucketWidth))
     bad("frames per bucket has ", p.run.framesPerBucket.size(), " entries, the bucket width gives ",
         synth::speedBucketCount(p.run.bucketWidth));
+  // Playback allocates a table of Σ F_b entries: each F_b must be what the run nodes give.
+  std::vector<uint32_t> frames(p.run.framesPerBucket.size(), 0u);
+  for (const PrimaryNode& n : p.nodes)
+    if (n.clip == 0 && n.bucket < frames.size())
+      frames[n.bucket] = std::max(frames[n.bucket], n.frame + 1);
+  for (size_t b = 0; b < frames.size(); ++b)
+    if (p.run.framesPerBucket[b] != frames[b])
+      bad("bucket ", b, " claims ", p.run.framesPerBucket[b], " run frames, its nodes give ",
+          frames[b]);
   const PlaybackGraph& g = db.graph;
   if (S == 0) bad("no cloth states");
   if (g.firstEdge.size() != size_t(S) + 1 || g.firstEdge.front() != 0 ||

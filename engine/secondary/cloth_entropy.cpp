@@ -114,7 +114,7 @@ int32_t RangeDecoder::decodeInteger(IntegerModel& m) {
   while (n < IntegerModel::kMaxLength && decodeBit(m.length[n])) ++n;
   uint32_t magnitude = 1;
   for (uint32_t k = n - 1; k-- > 0;) magnitude = (magnitude << 1) | decodeBit(m.mantissa[n][k]);
-  // Lengths reach 32 only for magnitudes a valid stream never holds (|int32| ≤ 2^31): saturate.
+  // Length 32 holds magnitudes up to 2^32 − 1; only −2^31 is valid among them: saturate the rest.
   const int64_t v = negative ? -int64_t(magnitude) : int64_t(magnitude);
   return int32_t(std::clamp<int64_t>(v, INT32_MIN, INT32_MAX));
 }
@@ -130,9 +130,18 @@ std::vector<uint8_t> encodeIntegerBlocks(std::span<const int32_t> values, size_t
   return encoder.finish();
 }
 
+uint64_t maxDecodableValues(uint64_t bytes) {
+  // The decoder reads 4 bytes ahead and tolerates 4 past the end (decodeIntegerBlocks).
+  constexpr uint64_t kValuesPerByte = 8 * 46, kSlackBytes = 8;
+  return (bytes + kSlackBytes) * kValuesPerByte;
+}
+
 std::vector<int32_t> decodeIntegerBlocks(std::span<const uint8_t> bytes, size_t count,
                                          size_t blockSize, const std::string& name) {
   THRONG_CHECK(blockSize > 0 || count == 0, "integer blocks of size 0");
+  if (count > maxDecodableValues(bytes.size()))
+    fail(name, ": ", count, " values claimed from an entropy-coded stream of ", bytes.size(),
+         " bytes (at most ", maxDecodableValues(bytes.size()), " fit)");
   RangeDecoder decoder(bytes);
   IntegerModel model;
   std::vector<int32_t> values(count);

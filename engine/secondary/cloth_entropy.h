@@ -13,14 +13,22 @@
 namespace throng::secondary {
 
 // Adaptive model of signed integers: a zero flag, a sign, the bit length of |x| in unary, then
-// the bits below the leading one, each an adaptive bit indexed by (length, position).
+// the bits below the leading one, each an adaptive bit indexed by (length, position). Lengths run
+// 1 … kMaxLength inclusive (|INT32_MIN| = 2^31 has 32 bits, and so can any garbage stream), so
+// the mantissa table has a row for every length up to kMaxLength itself.
 struct IntegerModel {
   static constexpr uint32_t kMaxLength = 32;
   uint16_t zero = 1024, sign = 1024;
   uint16_t length[kMaxLength] = {};
-  uint16_t mantissa[kMaxLength][kMaxLength] = {};
+  uint16_t mantissa[kMaxLength + 1][kMaxLength] = {};
   IntegerModel();
 };
+
+// The most values a stream of `bytes` bytes can decode to: every value costs at least its zero
+// flag, and an adaptive probability never passes 2017/2048, so a coded bit carries at least
+// log2(2048/2017) > 1/46 bit; a byte (plus the decoder's slack) holds at most 8 × 46 values.
+// Readers check a claimed count against it before they allocate.
+uint64_t maxDecodableValues(uint64_t bytes);
 
 class RangeEncoder {
  public:
@@ -57,7 +65,8 @@ class RangeDecoder {
 
 // Blocks of integers, block k coded with its own model (e.g. one per basis).
 std::vector<uint8_t> encodeIntegerBlocks(std::span<const int32_t> values, size_t blockSize);
-// Throws Error naming `sourceName` when the stream runs past its end.
+// Throws Error naming `sourceName` when the stream runs past its end, or when `count` exceeds
+// maxDecodableValues(bytes.size()) (checked before anything is allocated).
 std::vector<int32_t> decodeIntegerBlocks(std::span<const uint8_t> bytes, size_t count,
                                          size_t blockSize, const std::string& sourceName);
 

@@ -79,6 +79,9 @@ TEST_CASE("cloth compress: bad input and options fail clearly and write nothing"
        "--bucket-width"},
       {"cloth compress " + tsg.string() + " --out /proc/no/a.tsc", "/proc/no"},
       {"cloth compress " + tsg.string(), "--out"},
+      // An existing folder as the output: refused before the compression, not after it.
+      {"cloth compress " + tsg.string() + " --out " + dir.string(),
+       "--out " + dir.string() + ": is a directory, expected a file to write"},
   };
   for (const Case& c : cases) {
     test::CommandResult r = test::runThrong(c.arguments);

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "chunk_patch.h"
 #include "cloth_fixtures.h"
 #include "core/error.h"
 #include "core/file_io.h"
@@ -165,4 +166,46 @@ TEST_CASE(".tsc file: atomic write, read back, info as JSON") {
   writeTextFileAtomic(text, "this is not a cloth database");
   CHECK_THROWS_WITH_AS(clothCompressedInfo(text), doctest::Contains("not a compressed cloth"),
                        Error);
+}
+
+TEST_CASE(".tsc: a garbage entropy stream is an error, not a read past the model") {
+  // The file: BENC replaced by eight 0xff bytes, checksum recomputed.
+  const std::vector<uint8_t> bytes = encodeClothDatabase(smallDatabase());
+  const std::vector<uint8_t> garbage =
+      test::replacePayload(bytes, "BENC", std::vector<uint8_t>(8, 0xff));
+  CHECK_THROWS_WITH_AS(decodeClothDatabase(garbage, "g.tsc"), doctest::Contains("g.tsc: "), Error);
+}
+
+TEST_CASE(".tsc: counts no other chunk backs are refused before anything is allocated") {
+  const std::vector<uint8_t> bytes = encodeClothDatabase(smallDatabase());
+  // 300 million vertices (and the largest count) in a file of a few kB: the mean's 3 floats a
+  // vertex are not there, so the reader says so instead of allocating gigabytes.
+  for (uint32_t vertices : {300000000u, 0xFFFFFFFFu}) {
+    const std::vector<uint8_t> huge =
+        test::replacePayload(bytes, "VERT", test::bytesOfValue(vertices));
+    CHECK_THROWS_WITH_AS(decodeClothDatabase(huge, "g.tsc"),
+                         doctest::Contains("g.tsc: chunk 'MEAN' holds"), Error);
+  }
+  // 100,000 basis headers (and steps) over the same short entropy streams: more values than the
+  // streams' bytes can hold.
+  std::vector<uint8_t> many = test::patchChunk(bytes, "BASH", [](test::RawChunk& c) {
+    const std::vector<uint8_t> one(c.payload.begin(), c.payload.begin() + 16);
+    c.payload.clear();
+    for (int i = 0; i < 100000; ++i) c.payload.insert(c.payload.end(), one.begin(), one.end());
+    c.count = 100000;
+  });
+  many = test::replacePayload(many, "CSTP", std::vector<uint8_t>(200000, 0));
+  CHECK_THROWS_WITH_AS(decodeClothDatabase(many, "g.tsc"),
+                       doctest::Contains("values claimed from an entropy-coded stream"), Error);
+  // A bucket claiming 4 billion run frames (playback would allocate a table that long).
+  const std::vector<uint8_t> frames = test::patchChunk(bytes, "FPBK", [](test::RawChunk& c) {
+    std::vector<uint32_t> f(c.payload.begin(), c.payload.end());  // stored as u8
+    f[1] = 4000000000u;
+    c.type = uint32_t(ElementType::U32);
+    c.elementBytes = 4;
+    c.payload.assign(reinterpret_cast<const uint8_t*>(f.data()),
+                     reinterpret_cast<const uint8_t*>(f.data() + f.size()));
+  });
+  CHECK_THROWS_WITH_AS(decodeClothDatabase(frames, "g.tsc"),
+                       doctest::Contains("bucket 1 claims 4000000000 run frames"), Error);
 }

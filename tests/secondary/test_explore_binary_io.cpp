@@ -2,7 +2,10 @@
 // errors that say so.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -128,4 +131,43 @@ TEST_CASE("truncated, corrupted, foreign and newer files give clear errors") {
   CHECK(contains(errorOf(foreign), "not a test file (magic 'PNGXXXXX', expected 'THRNGTST')"));
   CHECK(
       contains(errorOf(good, 1), "test version 2 unsupported (this build reads versions 1 to 1)"));
+}
+
+TEST_CASE("stale temporaries of an output: dead writers' removed, live writers' and others' kept") {
+  const std::filesystem::path dir = test::binaryDir() / "test_secondary_stale_temporaries";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path out = dir / "g.tsg";
+  auto touch = [&](const std::string& name) {
+    std::ofstream(dir / name) << "partial";
+    return dir / name;
+  };
+  const auto dead = touch("g.tsg.tmp-999999999");  // above any pid_max: no such process
+  const auto own = touch("g.tsg.tmp-" + std::to_string(::getpid()));
+  const auto live = touch("g.tsg.tmp-1");  // init runs
+  const auto other = touch("other.tsg.tmp-999999999");
+  const auto notPid = touch("g.tsg.tmp-12ab");
+  const std::vector<std::filesystem::path> removed = removeStaleTemporaries(out);
+  CHECK(removed.size() == 2);
+  CHECK_FALSE(std::filesystem::exists(dead));
+  CHECK_FALSE(std::filesystem::exists(own));
+  CHECK(std::filesystem::exists(live));
+  CHECK(std::filesystem::exists(other));
+  CHECK(std::filesystem::exists(notPid));
+  CHECK(removeStaleTemporaries(dir / "missing-dir" / "g.tsg").empty());
+}
+
+TEST_CASE("an output path is checked before the work: a directory is refused by name") {
+  const std::filesystem::path dir = test::binaryDir() / "test_secondary_output_path";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "existing");
+  const std::string expected =
+      "--out " + (dir / "existing").string() + ": is a directory, expected a file to write";
+  CHECK_THROWS_WITH_AS(prepareOutputFile(dir / "existing", "--out"),
+                       doctest::Contains(expected.c_str()), Error);
+  CHECK_THROWS_WITH_AS(prepareOutputFile("", "--out"), doctest::Contains("--out"), Error);
+  std::ofstream(dir / "g.tsc.tmp-999999999") << "partial";
+  CHECK(prepareOutputFile(dir / "g.tsc", "--out").size() == 1);
+  CHECK(prepareOutputFile(dir / "new" / "g.tsc", "--out").empty());  // the folder is made
+  CHECK(std::filesystem::is_directory(dir / "new"));
 }

@@ -79,6 +79,21 @@ TEST_CASE("explore --resume continues to the uninterrupted graph, byte for byte"
   REQUIRE(r.exitCode == 0);
   CHECK(bytesOf(parts) == bytesOf(whole));
 
+  // A run killed while writing a checkpoint leaves "<out>.tmp-PID": the next run removes it.
+  const auto stale = dir / "parts.tsg.tmp-999999999";
+  std::ofstream(stale, std::ios::binary) << "half a checkpoint";
+  const CommandResult again =
+      runThrong(kToy + "--resume --budget-expansions 46 --threads 1 --out " + parts.string());
+  INFO(again.output);
+  CHECK(again.exitCode == 0);
+  CHECK_FALSE(std::filesystem::exists(stale));
+  std::ofstream(dir / "whole.tsg.tmp-999999999", std::ios::binary) << "half a checkpoint";
+  CHECK(runThrong(kToy + "--budget-expansions 2 --out " + whole.string()).exitCode == 0);
+  CHECK_FALSE(std::filesystem::exists(dir / "whole.tsg.tmp-999999999"));
+  const CommandResult toDir = runThrong(kToy + "--budget-expansions 2 --out " + dir.string());
+  CHECK(toDir.exitCode != 0);
+  CHECK(contains(toDir.output, "is a directory, expected a file to write"));
+
   const CommandResult seed = runThrong(kToy + "--resume --seed 9 --out " + parts.string());
   CHECK(seed.exitCode != 0);
   CHECK(contains(seed.output, "--seed 9 differs from the resumed file's 1"));
