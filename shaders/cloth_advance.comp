@@ -28,6 +28,16 @@ uint successorIndex(uint from, uint to) {
   return kClothNone;
 }
 
+// A new blend starts from `shown` only when none is under way; one under way goes on.
+void startBlend(inout ClothCharacter c, uint shown) {
+  if (c.countdown > 0u) {
+    c.countdown -= 1u;
+    return;
+  }
+  c.blendSource = shown;
+  c.countdown = push.blendFrames;
+}
+
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= push.characterCount) return;
@@ -43,8 +53,7 @@ void main() {
       if (k == kClothNone) break;
       uint edge = table(kTableFirstEdge, walk.state) + k;
       if (table(kTableEdgeIsMerge, edge) != 0u) {
-        walk.blendSource = walk.state;
-        walk.countdown = push.blendFrames;
+        startBlend(walk, walk.state);
       } else if (walk.countdown > 0u) {
         walk.countdown -= 1u;
       }
@@ -58,10 +67,7 @@ void main() {
   }
   uint state = table(kTableFirstStateAtNode, target);
   if (state == kClothNone) return;
-  if (c.state != kClothNone) {
-    c.blendSource = c.state;
-    c.countdown = push.blendFrames;
-  }
+  if (c.state != kClothNone) startBlend(c, c.state);
   c.state = state;
   c.node = target;
   characters[i] = c;

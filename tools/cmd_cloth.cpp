@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "secondary/binary_io.h"
+#include "secondary/blend_motion.h"
 #include "secondary/explore.h"
 #include "secondary/explore_file.h"
 #include "secondary/garment.h"
@@ -179,10 +180,11 @@ void runExplore(const ExploreArgs& a) {
     fail("--mpi: this build has no Open MPI support (install libopenmpi-dev and reconfigure)");
 #endif
   const std::filesystem::path out = a.out;
-  const std::filesystem::path dir =
-      out.has_parent_path() ? out.parent_path() : std::filesystem::path(".");
-  ensureWritableDirectory(dir);
   if (a.threads > 1024) fail("--threads ", a.threads, ": expected 0 (all cores) to 1024");
+  // A run killed while it wrote a checkpoint left "<out>.tmp-PID": gone before this one starts.
+  for (const std::filesystem::path& stale : sec::prepareOutputFile(out, "--out"))
+    if (!a.quiet && !a.json)
+      std::fprintf(stderr, "removed %s (left by a run that was killed)\n", stale.c_str());
 
   sec::ExploreBudget budget{a.budgetExpansions, a.budgetSeconds, a.targetError};
   if (!budget.expansions && budget.seconds <= 0.0 && budget.targetError <= 0.0f)
@@ -294,8 +296,24 @@ void runExplore(const ExploreArgs& a) {
 
 struct InfoArgs {
   std::string file;
-  bool json = false, history = false;
+  bool json = false, history = false, blendMotion = false;
 };
+
+// How much the shown cape moves in a frame that crosses a merge edge against any other frame.
+json blendMotionJson(const std::filesystem::path& path) {
+  sec::BlendMotionOptions options;
+  options.characters = 64;
+  options.steps = 600;
+  const sec::BlendMotionReport r =
+      sec::readMagic(path) == sec::kTsgMagic
+          ? sec::measureBlendMotion(sec::loadExploreFile(path), options)
+          : sec::measureBlendMotion(sec::readClothDatabase(path), options);
+  return {{"merge_steps", r.mergeSteps.size()},
+          {"ordinary_steps", r.ordinarySteps.size()},
+          {"p95_move_at_merge_m", r.p95Merge},
+          {"p95_move_ordinary_m", r.p95Ordinary},
+          {"merge_over_ordinary", r.ratio()}};
+}
 
 // One function per file kind, chosen by the magic.
 json fileInfo(const std::filesystem::path& path, bool history) {
@@ -314,7 +332,11 @@ json fileInfo(const std::filesystem::path& path, bool history) {
 }
 
 void runInfo(const InfoArgs& a) {
-  const json info = fileInfo(a.file, a.history);
+  json info = fileInfo(a.file, a.history);
+  if (a.blendMotion) {
+    const json blend = blendMotionJson(a.file);
+    for (auto it = blend.begin(); it != blend.end(); ++it) info["blend_" + it.key()] = *it;
+  }
   if (a.json) {
     std::cout << info.dump(2) << '\n';
     return;
@@ -400,6 +422,9 @@ void addClothExploreCommands(CLI::App& app, int& /*exitCode*/) {
   info->add_flag("--json", i->json, "Print one JSON object");
   info->add_flag("--history", i->history,
                  "With a .tsg: the largest merge error after every expansion (Fig. 7)");
+  info->add_flag("--blend-motion", i->blendMotion,
+                 "Also play capes along the graph and compare the p95 of the largest vertex move "
+                 "in frames that cross a merge edge with other frames");
   info->callback([i] { runInfo(*i); });
 }
 

@@ -58,17 +58,30 @@ uint32_t successorIndex(const PlaybackPrimary& p, uint32_t from, uint32_t to) {
     if (p.successors[e] == to) return e - p.firstSuccessor[from];
   return kNoNode;
 }
+
+// The cape switches trajectories: it blends from `shown` unless a blend is already under way, in
+// which case that blend goes on (a new one from the bare state would drop the source's share of
+// what is on screen: a jump of up to that share of several frames' motion).
+void startBlend(ClothCharacter& c, uint32_t shown) {
+  if (c.countdown > 0) {
+    --c.countdown;
+    return;
+  }
+  c.blendSource = shown;
+  c.countdown = kMergeBlendFrames;
+}
 }  // namespace
 
-void advanceCharacter(const ClothDatabase& db, const PlaybackTables& t, ClothCharacter& c,
+bool advanceCharacter(const ClothDatabase& db, const PlaybackTables& t, ClothCharacter& c,
                       glm::vec4 motion) {
   const uint32_t target = characterNode(db, t, motion);
-  if (target == kNoNode || target == c.node) return;
+  if (target == kNoNode || target == c.node) return false;
   const PlaybackPrimary& p = db.primary;
   const PlaybackGraph& g = db.graph;
   if (c.node != kNoNode && c.state != kNoClothState) {
     // Walk: the direct edge if there is one, else natural successors to catch up skipped frames.
     ClothCharacter walk = c;
+    bool merged = false;
     for (uint32_t step = 0; step < kMaxWalkSteps; ++step) {
       uint32_t k = successorIndex(p, walk.node, target);
       const bool arrived = k != kNoNode;
@@ -76,8 +89,8 @@ void advanceCharacter(const ClothDatabase& db, const PlaybackTables& t, ClothCha
       if (k == kNoNode) break;
       const uint32_t edge = g.firstEdge[walk.state] + k;
       if (g.edgeIsMerge[edge]) {
-        walk.blendSource = walk.state;
-        walk.countdown = kMergeBlendFrames;
+        merged = true;
+        startBlend(walk, walk.state);
       } else if (walk.countdown > 0) {
         --walk.countdown;
       }
@@ -85,20 +98,19 @@ void advanceCharacter(const ClothDatabase& db, const PlaybackTables& t, ClothCha
       walk.node = p.successors[p.firstSuccessor[walk.node] + k];
       if (arrived) {
         c = walk;
-        return;
+        return merged;
       }
     }
   }
   // Not reachable along the graph (first frame, or a jump): the first state at the new node,
   // blended from the old one when there was one.
   const uint32_t state = t.firstStateAtNode[target];
-  if (state == kNoClothState) return;
-  if (c.state != kNoClothState) {
-    c.blendSource = c.state;
-    c.countdown = kMergeBlendFrames;
-  }
+  if (state == kNoClothState) return false;
+  const bool jumped = c.state != kNoClothState;
+  if (jumped) startBlend(c, c.state);
   c.state = state;
   c.node = target;
+  return jumped;
 }
 
 }  // namespace throng::secondary

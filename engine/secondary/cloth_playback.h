@@ -5,7 +5,9 @@
 // the node moves along successor k of the previous node, the cloth state moves along edge k of
 // its state. Frames skipped between two calls are walked along the natural (next-frame)
 // successors; any other jump goes to the first state at the new node. Crossing a merge edge (or
-// jumping) blends from the state left behind to the new trajectory over kMergeBlendFrames.
+// jumping) blends from the state left behind to the new trajectory over kMergeBlendFrames; one
+// that comes while a blend is under way lets that blend go on, so the blend always starts from
+// what the cape shows (shownClothPositions) and never jumps.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -41,8 +43,9 @@ inline ClothCharacter noClothCharacter() {
 // no node for its bucket.
 uint32_t characterNode(const ClothDatabase& db, const PlaybackTables& t, glm::vec4 motion);
 
-// One frame of a character's traversal (see the file comment).
-void advanceCharacter(const ClothDatabase& db, const PlaybackTables& t, ClothCharacter& c,
+// One frame of a character's traversal (see the file comment). Returns true when the frame
+// crossed a merge edge or jumped (the cape switched trajectories: a blend starts or goes on).
+bool advanceCharacter(const ClothDatabase& db, const PlaybackTables& t, ClothCharacter& c,
                       glm::vec4 motion);
 
 // Weight of the blend source in the shown cloth: countdown / (kMergeBlendFrames + 1).

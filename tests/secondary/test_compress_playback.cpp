@@ -112,14 +112,48 @@ TEST_CASE("traversal: skipped frames are walked, jumps go to the first state wit
   CHECK(c.node == nodeOf(db, 2, 0));
   // Further than kMaxWalkSteps natural steps is a jump: the first state there, blended from where
   // it was. (2, 0) → (0, 4) and then one frame back, (0, 4) → (0, 3).
+  // A jump starts a blend from where the cape was unless one is under way (which then goes on).
   for (uint32_t target : {4u, 3u}) {
-    uint32_t here = c.state;
-    advanceCharacter(db, t, c, motionAt(target, 6, 0.0f));
+    const ClothCharacter before = c;
+    CHECK(advanceCharacter(db, t, c, motionAt(target, 6, 0.0f)));
     CHECK(c.node == nodeOf(db, 0, target));
     CHECK(c.state == t.firstStateAtNode[nodeOf(db, 0, target)]);
-    CHECK(c.blendSource == here);
-    CHECK(c.countdown == kMergeBlendFrames);
+    if (before.countdown > 0) {
+      CHECK(c.blendSource == before.blendSource);
+      CHECK(c.countdown == before.countdown - 1);
+    } else {
+      CHECK(c.blendSource == before.state);
+      CHECK(c.countdown == kMergeBlendFrames);
+    }
   }
+  // After the blend has run out, a jump blends from the state left behind.
+  c.countdown = 0;
+  const uint32_t here = c.state;
+  CHECK(advanceCharacter(db, t, c, motionAt(2, 5, 0.5f)));  // (0, 3) → (1, 2): 5 frames on
+  CHECK(c.state == t.firstStateAtNode[nodeOf(db, 1, 2)]);
+  CHECK(c.blendSource == here);
+  CHECK(c.countdown == kMergeBlendFrames);
+}
+
+TEST_CASE("traversal: a merge while a blend is under way lets that blend go on") {
+  // Two copies per node: bucket 1's cycle end back into bucket 1 (successor 1) is a merge for
+  // copy 1, and so is bucket 0's cycle end into bucket 1 for copy 0.
+  ClothDatabase db = database(2);
+  PlaybackTables t = makePlaybackTables(db);
+  ClothCharacter c = noClothCharacter();
+  for (uint32_t f = 0; f < 6; ++f) CHECK_FALSE(advanceCharacter(db, t, c, motionAt(f, 6, 0.0f)));
+  const uint32_t left = c.state;
+  CHECK(advanceCharacter(db, t, c, motionAt(0, 5, 0.5f)));  // merge: the blend starts
+  CHECK(c.blendSource == left);
+  CHECK(c.countdown == kMergeBlendFrames);
+  for (uint32_t f = 1; f < 5; ++f) CHECK_FALSE(advanceCharacter(db, t, c, motionAt(f, 5, 0.5f)));
+  CHECK(c.countdown == kMergeBlendFrames - 4);
+  const uint32_t edge = edgeTo(db, c.state, nodeOf(db, 1, 0));
+  REQUIRE(db.graph.edgeIsMerge[edge] == 1);
+  CHECK(advanceCharacter(db, t, c, motionAt(0, 5, 0.5f)));  // a second merge, mid-blend
+  CHECK(c.state == db.graph.edgeTarget[edge]);
+  CHECK(c.blendSource == left);  // still blending from what the cape showed
+  CHECK(c.countdown == kMergeBlendFrames - 5);
 }
 
 TEST_CASE("traversal: a character that changes speed moves to the state of the new bucket's edge") {
