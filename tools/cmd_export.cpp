@@ -10,7 +10,9 @@
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "crowd/circle_paths.h"
 #include "scene_options.h"
+#include "scene_storyboard.h"
 
 namespace throng::tools {
 namespace {
@@ -84,18 +86,30 @@ void runExport(ExportOptions& o, const CLI::App& command) {
          " joints is more than ", kMaxExportSamples,
          " samples; choose fewer with --agents or --frames");
 
-  anim::RecordOptions record;
-  record.frames = o.frames;
-  record.dt = o.scene.dt;
-  record.steering = crowd.steering;
-  synth::SpeedSchedule speeds = sceneSpeedSchedule(o.scene);
-  for (int f = 0; f < o.frames; ++f) record.retargets.push_back(speeds.advance(o.scene.dt));
+  // The whole crowd moves (the steered circle scene avoids its neighbours); the chosen agents
+  // are recorded as it does.
+  crowd::AgentPaths paths;
+  crowd::AvoidanceParams avoidance;
+  const bool steered = steersCircle(o.scene);
+  if (steered) {
+    paths =
+        crowd::circlePaths(crowd, crowd::clipRootSpeed(pair.slow), crowd::clipRootSpeed(pair.fast));
+    crowd.steering = anim::Steering::KeepHeading;
+    avoidance.policy = scenePolicy(o.scene.story.policy);
+    avoidance.radius = o.scene.story.radius;
+    avoidance.seed = uint32_t(o.scene.scenario.seed);
+  }
+  crowd::SteeredCrowdCpu run(pair, std::move(crowd), steered ? &paths : nullptr, avoidance);
   std::vector<anim::JointAnimation> animations;
-  for (uint32_t agent : agents) {
-    record.character = agent;
-    animations.push_back(anim::recordCharacter(pair, clips.slow.skeleton, crowd.placement[agent],
-                                               crowd.motion[agent], record));
-    animations.back().name = "agent_" + std::to_string(agent);
+  for (uint32_t agent : agents)
+    animations.push_back(anim::beginAnimation(pair, clips.slow.skeleton, o.scene.dt,
+                                              "agent_" + std::to_string(agent)));
+  synth::SpeedSchedule speeds = sceneSpeedSchedule(o.scene);
+  for (int f = 0; f < o.frames; ++f) {
+    for (size_t k = 0; k < agents.size(); ++k)
+      anim::appendPose(pair, run.crowd().placement[agents[k]], run.crowd().motion[agents[k]],
+                       animations[k]);
+    run.step(o.scene.dt, speeds.advance(o.scene.dt));
   }
   if (extension == ".glb") {
     anim::writeGlb(out, animations);

@@ -17,9 +17,29 @@ glm::quat yaw(float heading) {
   return glm::angleAxis(heading, glm::vec3(0.0f, 1.0f, 0.0f));
 }
 
+}  // namespace
+
+JointAnimation beginAnimation(const MotionPair& pair, const Skeleton& skeleton, float dt,
+                              std::string name) {
+  if (skeleton.jointCount() != pair.jointCount())
+    fail("export: the skeleton has ", skeleton.jointCount(), " joints, the clip pair ",
+         pair.jointCount());
+  if (!(dt > 0.0f)) fail("export: expected a frame time > 0, got ", dt);
+  JointAnimation out;
+  out.name = std::move(name);
+  out.skeleton = skeleton;
+  out.frameTime = dt;
+  // Rest offsets are set from the first frame; the root's is zero because BVH adds a root's
+  // position channels to its OFFSET (other joints' position channels replace it).
+  for (Joint& joint : out.skeleton.joints) joint.offset = glm::vec3(0.0f);
+  return out;
+}
+
 // One frame: the pose in character space, made joint-local and placed in the world.
-void appendFrame(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
-                 std::vector<PoseJoint>& pose, JointAnimation& out) {
+void appendPose(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
+                JointAnimation& out) {
+  thread_local std::vector<PoseJoint> pose;
+  pose.resize(size_t(pair.jointCount()));
   poseCharacterSpace(pair, motion.x, motion.y, pose);
   const float scale = motion.w;
   for (int j = 0; j < pair.jointCount(); ++j) {
@@ -33,38 +53,24 @@ void appendFrame(const MotionPair& pair, const glm::vec4& placement, const glm::
       out.rotations.push_back(glm::normalize(parentInverse * rotation));
       out.translations.push_back(
           scale * (parentInverse * (pose[size_t(j)].position - pose[size_t(p)].position)));
+      if (out.frameCount == 0) out.skeleton.joints[size_t(j)].offset = out.translations.back();
     }
   }
+  ++out.frameCount;
 }
-
-}  // namespace
 
 JointAnimation recordCharacter(const MotionPair& pair, const Skeleton& skeleton,
                                glm::vec4 placement, glm::vec4 motion,
                                const RecordOptions& options) {
-  if (skeleton.jointCount() != pair.jointCount())
-    fail("export: the skeleton has ", skeleton.jointCount(), " joints, the clip pair ",
-         pair.jointCount());
-  if (options.frames < 1 || !(options.dt > 0.0f)) fail("export: expected frames >= 1 and dt > 0");
-  JointAnimation out;
-  out.skeleton = skeleton;
-  out.frameTime = options.dt;
-  out.frameCount = options.frames;
-  out.rotations.reserve(size_t(options.frames) * size_t(pair.jointCount()));
-  out.translations.reserve(out.rotations.capacity());
-  std::vector<PoseJoint> pose(size_t(pair.jointCount()));
+  if (options.frames < 1) fail("export: expected frames >= 1, got ", options.frames);
+  JointAnimation out = beginAnimation(pair, skeleton, options.dt, "");
   for (int f = 0; f < options.frames; ++f) {
-    appendFrame(pair, placement, motion, pose, out);
+    appendPose(pair, placement, motion, out);
     const SpeedRetarget retarget =
         size_t(f) < options.retargets.size() ? options.retargets[size_t(f)] : SpeedRetarget{};
     stepCharacter(pair, placement, motion, options.dt, options.steering, retarget,
                   options.character);
   }
-  // Rest offsets from the first frame; the root's is zero because BVH adds a root's position
-  // channels to its OFFSET (other joints' position channels replace it).
-  for (int j = 0; j < out.jointCount(); ++j)
-    out.skeleton.joints[size_t(j)].offset =
-        out.skeleton.joints[size_t(j)].parent < 0 ? glm::vec3(0.0f) : out.translation(0, j);
   return out;
 }
 

@@ -45,6 +45,13 @@ struct RecordOptions {
   uint32_t character = 0;  // the character's index (speed changes are drawn per character)
 };
 
+// An empty animation of `skeleton` (which must have the pair's joint count) at `dt` per frame;
+// appendPose adds the character's pose at its current state as the next frame.
+JointAnimation beginAnimation(const MotionPair& pair, const Skeleton& skeleton, float dt,
+                              std::string name);
+void appendPose(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
+                JointAnimation& animation);
+
 // Poses the character at its current state, then steps it, `frames` times. `skeleton` gives the
 // joint names (it must have the pair's joint count).
 JointAnimation recordCharacter(const MotionPair& pair, const Skeleton& skeleton,

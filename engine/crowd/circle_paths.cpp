@@ -83,46 +83,59 @@ uint32_t countClosePairs(std::span<const glm::vec4> placement, float distance) {
   return pairs;
 }
 
+SteeredCrowdCpu::SteeredCrowdCpu(const anim::MotionPair& pair, Crowd crowd, const AgentPaths* paths,
+                                 const AvoidanceParams& params)
+    : pair_(pair), crowd_(std::move(crowd)), paths_(paths), params_(params) {
+  const size_t n = crowd_.size();
+  if (paths_ && paths_->size() != n)
+    fail("steered crowd: ", n, " agents but ", paths_->size(), " paths");
+  goals_.assign(n, glm::vec4(0.0f));
+  steer_.assign(n, glm::vec4(0.0f));
+  frame_.sets = {{clipRootSpeed(pair.slow), clipRootSpeed(pair.fast), uint32_t(n)}};
+}
+
+void SteeredCrowdCpu::step(float dt, const anim::SpeedRetarget& retarget) {
+  const size_t n = crowd_.size();
+  if (paths_) {
+    const int64_t second = int64_t(std::floor(time_));
+    if (second != goalSecond_) writeGoals(*paths_, uint32_t(second), goals_);
+    goalSecond_ = second;
+    frame_.dt = dt;
+    frame_.secondsLeft = std::max(float(double(second + 1) - time_), 1e-3f);
+    frame_.step = steps_;
+    const Grid grid =
+        buildGridCpu(crowd_.placement, steer_, params_.cellSize, gridTable(uint32_t(n)));
+    steerCpu(grid, params_, frame_, crowd_.placement, crowd_.motion, goals_, steer_);
+  }
+  const anim::Steering steering = paths_ ? anim::Steering::KeepHeading : crowd_.steering;
+  for (size_t i = 0; i < n; ++i)
+    anim::stepCharacter(pair_, crowd_.placement[i], crowd_.motion[i], dt, steering, retarget,
+                        uint32_t(i));
+  ++steps_;
+  time_ = double(steps_) * double(dt);
+}
+
 CircleRunFigures runCircleCpu(const anim::MotionPair& pair, Crowd crowd, const AgentPaths* paths,
                               const AvoidanceParams& params, float dt, float seconds) {
   const size_t n = crowd.size();
-  if (paths && paths->size() != n)
-    fail("runCircleCpu: ", n, " runners but ", paths->size(), " paths");
   std::vector<float> startRadius(n);
   for (size_t i = 0; i < n; ++i)
     startRadius[i] = glm::length(glm::vec2(crowd.placement[i].x, crowd.placement[i].z));
-  const anim::Steering steering = paths ? anim::Steering::KeepHeading : crowd.steering;
-  std::vector<glm::vec4> goals(n, glm::vec4(0.0f)), steer(n, glm::vec4(0.0f));
-  SteerFrame frame;
-  frame.dt = dt;
-  frame.sets = {{clipRootSpeed(pair.slow), clipRootSpeed(pair.fast), uint32_t(n)}};
+  SteeredCrowdCpu run(pair, std::move(crowd), paths, params);
   CircleRunFigures figures;
   figures.minClosePairs = std::numeric_limits<uint32_t>::max();
   const int steps = int(std::lround(double(seconds) / double(dt)));
-  int64_t goalSecond = -1;
   double closeSum = 0.0;
   for (int k = 0; k < steps; ++k) {
-    const double time = double(k) * double(dt);
-    if (paths) {
-      const int64_t second = int64_t(std::floor(time));
-      if (second != goalSecond) writeGoals(*paths, uint32_t(second), goals);
-      goalSecond = second;
-      frame.secondsLeft = std::max(float(double(second + 1) - time), 1e-3f);
-      frame.step = uint32_t(k);
-      const Grid grid =
-          buildGridCpu(crowd.placement, steer, params.cellSize, gridTable(uint32_t(n)));
-      steerCpu(grid, params, frame, crowd.placement, crowd.motion, goals, steer);
-    }
-    for (size_t i = 0; i < n; ++i)
-      anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], dt, steering);
-    const uint32_t close = countClosePairs(crowd.placement, 0.6f);
+    run.step(dt);
+    const uint32_t close = countClosePairs(run.crowd().placement, 0.6f);
     figures.minClosePairs = std::min(figures.minClosePairs, close);
     figures.maxClosePairs = std::max(figures.maxClosePairs, close);
     closeSum += close;
   }
   for (size_t i = 0; i < n; ++i) {
-    const double drift =
-        double(glm::length(glm::vec2(crowd.placement[i].x, crowd.placement[i].z))) - startRadius[i];
+    const glm::vec4& p = run.crowd().placement[i];
+    const double drift = double(glm::length(glm::vec2(p.x, p.z))) - startRadius[i];
     figures.meanRadiusDrift += drift / double(n);
     figures.meanAbsRadiusError += std::abs(drift) / double(n);
   }

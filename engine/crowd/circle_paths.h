@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "anim/motion_texture.h"
+#include "anim/reference_synth.h"
 #include "crowd/avoidance.h"
 #include "crowd/crowd.h"
 #include "crowd/path_vectors.h"
@@ -27,6 +28,29 @@ AgentPaths circlePaths(const Crowd& crowd, float slowSpeed, float fastSpeed);
 
 // Pairs of runners closer than `distance` (m) on the ground plane.
 uint32_t countClosePairs(std::span<const glm::vec4> placement, float distance);
+
+// The steered crowd's motion on the CPU, one step at a time: the twin of the GPU frame's steering
+// (goals once per second, grid, avoidance) followed by root motion keeping the heading it set.
+// With no paths, root motion alone with the crowd's own steering.
+class SteeredCrowdCpu {
+ public:
+  SteeredCrowdCpu(const anim::MotionPair& pair, Crowd crowd, const AgentPaths* paths,
+                  const AvoidanceParams& params);
+  // `retarget`: the speed change this step applies (as the crowd's speed schedule gives it).
+  void step(float dt, const anim::SpeedRetarget& retarget = {});
+  const Crowd& crowd() const { return crowd_; }
+
+ private:
+  const anim::MotionPair& pair_;
+  Crowd crowd_;
+  const AgentPaths* paths_;
+  AvoidanceParams params_;
+  std::vector<glm::vec4> goals_, steer_;
+  SteerFrame frame_;
+  double time_ = 0.0;
+  uint32_t steps_ = 0;
+  int64_t goalSecond_ = -1;
+};
 
 struct CircleRunFigures {
   double meanRadiusDrift = 0.0;     // mean over runners of |p(end)| − |p(start)| (m)
