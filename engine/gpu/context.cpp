@@ -270,6 +270,8 @@ void Context::choosePhysicalDevice(const ContextOptions& options) {
   info_.maxStorageBufferRange = limits.maxStorageBufferRange;
   info_.maxUniformBufferRange = limits.maxUniformBufferRange;
   info_.maxTexelBufferElements = limits.maxTexelBufferElements;
+  info_.minStorageBufferOffsetAlignment = limits.minStorageBufferOffsetAlignment;
+  info_.minUniformBufferOffsetAlignment = limits.minUniformBufferOffsetAlignment;
   info_.maxImageDimension2D = limits.maxImageDimension2D;
   info_.maxFramebufferWidth = limits.maxFramebufferWidth;
   info_.maxFramebufferHeight = limits.maxFramebufferHeight;

@@ -35,6 +35,8 @@ struct DeviceInfo {
   uint32_t maxStorageBufferRange = 0;
   uint32_t maxUniformBufferRange = 0;
   uint32_t maxTexelBufferElements = 0;
+  uint64_t minStorageBufferOffsetAlignment = 1;
+  uint64_t minUniformBufferOffsetAlignment = 1;
   uint32_t maxImageDimension2D = 0;
   uint32_t maxFramebufferWidth = 0;
   uint32_t maxFramebufferHeight = 0;

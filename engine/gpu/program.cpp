@@ -58,6 +58,8 @@ PipelineLayout makePipelineLayout(const Context& context, std::span<const Shader
   PipelineLayout out;
   out.maxStorageBufferRange = context.info().maxStorageBufferRange;
   out.maxUniformBufferRange = context.info().maxUniformBufferRange;
+  out.minStorageBufferOffsetAlignment = context.info().minStorageBufferOffsetAlignment;
+  out.minUniformBufferOffsetAlignment = context.info().minUniformBufferOffsetAlignment;
   out.deviceName = context.info().name;
   for (const ShaderReflection& s : shaders) {
     out.stages |= s.stage;
@@ -117,6 +119,13 @@ void checkBufferRange(const PipelineLayout& layout, const Binding& given, VkDesc
          " overflows its buffer of ", given.bufferSize, " bytes");
   }
   const bool storage = type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  const uint64_t alignment =
+      storage ? layout.minStorageBufferOffsetAlignment : layout.minUniformBufferOffsetAlignment;
+  if (alignment > 1 && b.offset % alignment != 0)
+    fail(name, ": binding ", given.slot, " starts at byte ", b.offset, ", not a multiple of ",
+         layout.deviceName, "'s ",
+         storage ? "minStorageBufferOffsetAlignment" : "minUniformBufferOffsetAlignment", " of ",
+         alignment);
   const uint64_t limit = storage ? layout.maxStorageBufferRange : layout.maxUniformBufferRange;
   if (range > limit)
     throw LimitError(concat(name, " binding ", given.slot),

@@ -38,6 +38,8 @@ struct PipelineLayout {
   VkShaderStageFlags stages = 0;
   uint32_t maxStorageBufferRange = 0;  // the device's, checked for every binding pushed
   uint32_t maxUniformBufferRange = 0;
+  uint64_t minStorageBufferOffsetAlignment = 1;  // binding offsets are multiples of these
+  uint64_t minUniformBufferOffsetAlignment = 1;
   std::string deviceName;  // for LimitError's message
 };
 PipelineLayout makePipelineLayout(const Context& context, std::span<const ShaderReflection> shaders,
@@ -46,7 +48,7 @@ Handle<VkShaderModule> makeShaderModule(const Context& context, std::span<const 
 
 // Pushes the descriptors after checking every declared binding is given with its type, and
 // that each buffer range fits the device's maxStorageBufferRange / maxUniformBufferRange
-// (LimitError otherwise).
+// (LimitError otherwise) and starts at a multiple of its offset alignment.
 void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const PipelineLayout& layout,
                   std::span<const Binding> bindings, const std::string& name);
 

@@ -51,6 +51,14 @@ TEST_CASE(
     gpu::Binding overflow[] = {gpu::storageBinding(0, out, 128, 256), gpu::storageBinding(1, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, overflow, ScalePush{1.0f, n}, n),
                          doctest::Contains("overflows its buffer"), Error);
+    // An offset off the device's alignment is reported before Vulkan sees it.
+    const VkDeviceSize alignment = ctx.info().minStorageBufferOffsetAlignment;
+    if (alignment > 1) {
+      gpu::Binding misaligned[] = {gpu::storageBinding(0, big, alignment / 2, 256),
+                                   gpu::storageBinding(1, out)};
+      CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, misaligned, ScalePush{1.0f, n}, n),
+                           doctest::Contains("minStorageBufferOffsetAlignment"), Error);
+    }
     // The last `limit` bytes of the large buffer are a legal binding.
     gpu::Binding tail[] = {gpu::storageBinding(0, big, 256, limit), gpu::storageBinding(1, out)};
     gpu::dispatch(cmd, program, tail, ScalePush{1.0f, n}, n);
