@@ -27,13 +27,18 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
   const secondary::ClothDatabase db = secondary::readClothDatabase(o.cloth);
   const Size size = parseSize(o.size);
   anim::ClipPair clips = loadSceneClips(scene);
+  secondary::checkClothClips(db, o.cloth, clips);  // capes made for this skeleton and these clips
   synth::SpeedSchedule speeds = sceneSpeedSchedule(scene);
   const render::Camera camera = sceneCamera(scene);
   SceneCrowd crowd(context, scene, clips);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(),
-                               target.depth.view(), size.width,         size.height,
+  render::FrameTargets targets{target.color.get(),
+                               target.color.view(),
+                               target.depth.get(),
+                               target.depth.view(),
+                               size.width,
+                               size.height,
                                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
   secondary::ClothLayer cloth(context, db, crowd.crowd(), render::kColorFormat,
                               render::kDepthFormat, sceneClothOptions(scene));
@@ -49,9 +54,8 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
     crowd.addHooks(hooks, scene.dt);
     gpu::beginCommands(cmd);
     render::FrameTimestamps marks = render::recordCrowdFrame(
-        cmd, context, crowd.programs(), crowd.synth(), renderer, camera,
-        sceneGroundExtent(scene), targets, scene.dt, timestamps, 0, speeds.advance(scene.dt),
-        false, &hooks);
+        cmd, context, crowd.programs(), crowd.synth(), renderer, camera, sceneGroundExtent(scene),
+        targets, scene.dt, timestamps, 0, speeds.advance(scene.dt), false, &hooks);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();

@@ -46,6 +46,7 @@ struct ExploreArgs {
   std::optional<uint32_t> depth;
   std::optional<uint32_t> maxStates;
   std::optional<float> velocityScale;
+  std::string slow, fast;  // the run pair's BVH files (empty: the built-in run)
   uint64_t budgetExpansions = 0;
   double budgetSeconds = 0.0;
   float targetError = 0.0f;
@@ -137,6 +138,11 @@ json newGarmentConfig(const ExploreArgs& a) {
   }
   if (a.seed) garment["seed"] = *a.seed;
   if (a.initialNode) garment["initial_node"] = *a.initialNode;
+  if (!a.slow.empty()) {
+    if (garment["name"] != "cape") fail("--slow and --fast: only the cape runs on a clip pair");
+    garment["slow"] = a.slow;
+    garment["fast"] = a.fast;
+  }
   return sec::completeGarmentConfig(garment);
 }
 
@@ -152,6 +158,13 @@ void checkResumeArgs(const ExploreArgs& a, const json& config) {
   if (a.seed) differs("--seed", *a.seed, g.at("seed"));
   if (a.initialNode) differs("--initial-node", *a.initialNode, g.at("initial_node"));
   if (a.garmentConfig) fail("--garment-config cannot change a resumed exploration");
+  if (!a.slow.empty())
+    fail(
+        "--slow and --fast cannot change a resumed exploration (it keeps the clips it was "
+        "started with: ",
+        g.value("slow", "").empty() ? std::string("the built-in run")
+                                    : g.value("slow", "") + " + " + g.value("fast", ""),
+        ")");
   const json& e = config.at("explore");
   if (a.depth) differs("--depth", *a.depth, e.at("depth"));
   if (a.maxStates) differs("--max-states", *a.maxStates, e.at("max_states"));
@@ -180,6 +193,7 @@ void runExplore(const ExploreArgs& a) {
     fail("--mpi: this build has no Open MPI support (install libopenmpi-dev and reconfigure)");
 #endif
   const std::filesystem::path out = a.out;
+  if (a.slow.empty() != a.fast.empty()) fail("--slow and --fast must be given together");
   if (a.threads > 1024) fail("--threads ", a.threads, ": expected 0 (all cores) to 1024");
   // A run killed while it wrote a checkpoint left "<out>.tmp-PID": gone before this one starts.
   for (const std::filesystem::path& stale : sec::prepareOutputFile(out, "--out"))
@@ -203,6 +217,7 @@ void runExplore(const ExploreArgs& a) {
     checkResumeArgs(a, config);
     garment =
         sec::restoreGarment(config.at("garment"), std::move(file.primary), std::move(file.mesh));
+    garment.clips = std::move(file.clips);
     graph = std::move(file.graph);
     if (sec::countDeadEnds(graph))
       fail(out.string(), ": the graph has dead ends, it was not written by a finished step");
@@ -223,7 +238,7 @@ void runExplore(const ExploreArgs& a) {
     runner = std::make_unique<sec::ThreadedRunner>(*garment.primary, garment.step, a.threads);
 
   auto save = [&](const sec::SecondaryGraph& g) {
-    sec::saveExploreFile(out, config, *garment.primary, *garment.mesh, g);
+    sec::saveExploreFile(out, config, *garment.primary, *garment.mesh, g, garment.clips);
   };
   if (!a.resume) {
     if (!a.quiet && !a.json)
@@ -257,6 +272,7 @@ void runExplore(const ExploreArgs& a) {
   json r;
   r["file"] = out.string();
   r["garment"] = config["garment"]["name"];
+  r["clips"] = garment.clips.name;
   r["states"] = graph.stateCount();
   r["frames"] = graph.stateCount();
   r["vertices"] = graph.vertexCount;
@@ -285,6 +301,7 @@ void runExplore(const ExploreArgs& a) {
       out.string().c_str(), graph.stateCount(), garment.primary->nodes.size(),
       (unsigned long long)graph.queue.size(), (unsigned long long)sec::countDeadEnds(graph),
       (unsigned long long)graph.expansions, sec::exploreStopName(stop));
+  std::printf("  clips: %s\n", garment.clips.describe().c_str());
   std::printf("  largest merge error %.2f mm (%.2f mm after initialisation)\n",
               1000.0 * sec::maxMergeError(graph),
               1000.0 * r["initial_max_merge_error_m"].get<double>());
@@ -378,6 +395,10 @@ void addClothExploreCommands(CLI::App& app, int& /*exitCode*/) {
       ->check(CLI::Range(0.0, 1e3));
   explore->add_option("--threads", a->threads,
                       "Simulation threads (0: all cores; ignored with --mpi)");
+  explore->add_option("--slow", a->slow,
+                      "Slow cycle BVH of the run pair the cape is explored on (with --fast; any "
+                      "pair `throng render --slow --fast` accepts; default: the built-in run)");
+  explore->add_option("--fast", a->fast, "Fast cycle BVH of the run pair (with --slow)");
   explore->add_option("--seed", a->seed, "Seed of the initial cloth's velocity jitter (default 1)");
   explore->add_option("--initial-node", a->initialNode,
                       "Primary node the exploration starts at (default 0)");

@@ -125,6 +125,7 @@ void runCompress(const CompressArgs& a) {
       std::fprintf(stderr, "compress: %s (%u frames × %u vertices)\n", stage, frames.stateCount,
                    frames.vertexCount);
     };
+  options.clips = file.clips;
   sec::ClothDatabase db = sec::compressCloth(frames, file.mesh.triangles, std::move(primary),
                                              std::move(playback), options);
   sec::writeClothDatabase(outPath, db);

@@ -342,6 +342,7 @@ ClothDatabase compressCloth(const ClothFrames& frames, std::vector<uint32_t> tri
                                     [](const QuantizedBasis& q) { return q.bits == 8; }));
   r.bases16 = b - r.bases8;
   r.rawBytes = rawBytes;
+  db.clips = options.clips;
   r.storedBytes = encodeClothDatabase(db).size();
   return db;
 }
@@ -370,6 +371,9 @@ nlohmann::json compressionReportJson(const ClothDatabase& db) {
   j["max_reconstruction_error_m"] = r.maxError;
   j["mean_reconstruction_error_m"] = r.meanError;
   j["bucket_width"] = db.primary.run.bucketWidth;
+  const ClipPairIdentity& clips = db.clips.recorded() ? db.clips : builtInRunIdentity();
+  j["clips"] = clips.name;
+  j["clips_identity"] = clips.describe();
   return j;
 }
 

@@ -47,7 +47,8 @@ struct CompressOptions {
   uint32_t oversampling = 10;
   uint32_t powerIterations = 1;
   uint64_t seed = 1;
-  unsigned threads = 0;                             // 0: all cores
+  unsigned threads = 0;    // 0: all cores
+  ClipPairIdentity clips;  // recorded in the database (what the frames were simulated on)
   std::function<void(const char* stage)> progress;  // optional: called as each stage starts
 };
 

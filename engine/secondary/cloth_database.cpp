@@ -131,6 +131,7 @@ ChunkWriter writer(const ClothDatabase& db) {
   w.addScalar("REPT", ReportRecord{r.targetError, r.quantum, r.maxErrorBeforeQuantization,
                                    r.maxError, r.meanError, r.coefficientQuantum});
   w.add("SVAL", r.singularValues);
+  if (db.clips.recorded()) addClipIdentityChunks(w, db.clips);
   return w;
 }
 
@@ -139,9 +140,10 @@ ClothDatabase read(const ChunkReader& r) {
   const std::string& name = r.name();
   // Version 1 stored plain bases and coefficients; nothing reads it any more (recompressing the
   // .tsg takes a minute), so it is refused by name rather than half-read.
-  if (r.version() != kClothDatabaseVersion)
-    fail(name, ": ", kKind, " version ", r.version(), " unsupported (this build reads version ",
-         kClothDatabaseVersion, "): recompress it with `throng cloth compress`");
+  if (r.version() < 2)
+    fail(name, ": ", kKind, " version ", r.version(), " unsupported (this build reads versions 2 ",
+         "to ", kClothDatabaseVersion, "): recompress it with `throng cloth compress`");
+  if (r.has("CLPI")) db.clips = readClipIdentityChunks(r);
   db.vertexCount = r.scalar<uint32_t>("VERT");
   // Every count is checked against a chunk whose bytes are in the file before anything of that
   // size is allocated: the mean holds 3 floats a vertex, so VERT cannot claim more than the file.
@@ -332,6 +334,11 @@ void validateDatabase(const ClothDatabase& db, const std::string& name) {
   }
   for (int16_t c : db.coefficients)
     if (c < -32767) bad("a coefficient is -32768, outside [-32767, 32767]");
+}
+
+void checkClothClips(const ClothDatabase& db, const std::string& file,
+                     const anim::ClipPair& crowdClips) {
+  checkClipsMatch(db.clips, file, crowdClips);
 }
 
 std::vector<uint8_t> encodeClothDatabase(const ClothDatabase& db) {

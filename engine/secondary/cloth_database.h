@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "secondary/clip_identity.h"
 #include "secondary/secondary_types.h"
 
 namespace throng::secondary {
@@ -87,6 +88,8 @@ struct ClothDatabase {
   // Per basis: its coefficients are multiples of this step (a coarser coefficient quantum for
   // bases whose motion is small: the multiples entropy-code to fewer bits). Empty: all 1.
   std::vector<uint16_t> coefficientSteps;
+  // The skeleton and clip pair the capes were simulated on; not recorded: the built-in run.
+  ClipPairIdentity clips;
   CompressionReport report;
   uint32_t stateCount() const { return graph.stateCount(); }
   uint32_t basisCount() const { return uint32_t(bases.size()); }
@@ -99,9 +102,14 @@ void validateDatabase(const ClothDatabase& db, const std::string& sourceName);
 // A versioned chunked binary file (binary_io.h, magic kClothDatabaseMagic) with a checksum;
 // decode throws Error naming the source on a bad magic, version (version 1 files, with plain
 // bases and coefficients, are refused: recompress them), truncation, checksum or content.
-// write is atomic.
+// Version 3 adds the clip identity (clip_identity.h); version 2 files are read as made for the
+// built-in run. write is atomic.
 constexpr std::string_view kClothDatabaseMagic = "THRNGTSC";
-constexpr uint32_t kClothDatabaseVersion = 2;
+constexpr uint32_t kClothDatabaseVersion = 3;
+// Throws Error naming `file` and both pairs when the database was made for another skeleton or
+// other clips than `crowdClips` (what playback would show as a floating cape).
+void checkClothClips(const ClothDatabase& db, const std::string& file,
+                     const anim::ClipPair& crowdClips);
 std::vector<uint8_t> encodeClothDatabase(const ClothDatabase& db);
 ClothDatabase decodeClothDatabase(std::span<const uint8_t> bytes, const std::string& sourceName);
 void writeClothDatabase(const std::filesystem::path& path, const ClothDatabase& db);

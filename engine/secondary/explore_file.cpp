@@ -14,6 +14,15 @@ ChunkReader openTsg(const std::filesystem::path& path) {
   return ChunkReader::openFile(path, kTsgMagic, kTsgVersion, kKind);
 }
 
+// Version 1 predates the identity: the cape was always explored on the built-in run.
+ClipPairIdentity readClips(const ChunkReader& r, const nlohmann::json& config,
+                           const PrimaryGraph& primary) {
+  if (r.version() >= 2) return readClipIdentityChunks(r);
+  if (config.value("garment", nlohmann::json::object()).value("name", "") == "toy")
+    return skeletonIdentity("toy run graph", primary.jointNames, primary.parents);
+  return builtInRunIdentity();
+}
+
 nlohmann::json readConfig(const ChunkReader& r) {
   try {
     return nlohmann::json::parse(r.string("CONF"));
@@ -124,9 +133,10 @@ SecondaryGraph readSecondaryGraphChunks(const ChunkReader& r, const PrimaryGraph
 
 void saveExploreFile(const std::filesystem::path& path, const nlohmann::json& config,
                      const PrimaryGraph& primary, const ClothMesh& mesh,
-                     const SecondaryGraph& graph) {
+                     const SecondaryGraph& graph, const ClipPairIdentity& clips) {
   ChunkWriter w(kTsgMagic, kTsgVersion);
   w.addString("CONF", config.dump());
+  addClipIdentityChunks(w, clips);
   addPrimaryGraphChunks(w, primary);
   addClothMeshChunks(w, mesh);
   addSecondaryGraphChunks(w, graph);
@@ -143,6 +153,14 @@ ExploreFile loadExploreFile(const std::filesystem::path& path) {
   if (f.graph.vertexCount != f.mesh.vertexCount())
     fail(r.name(), ": frames of ", f.graph.vertexCount, " vertices for a mesh of ",
          f.mesh.vertexCount());
+  for (uint32_t joint : f.mesh.pinJoints)
+    if (joint >= f.primary.jointCount)
+      fail(r.name(), ": a cloth vertex is pinned to joint ", joint, " of a ", f.primary.jointCount,
+           "-joint skeleton");
+  f.clips = readClips(r, f.config, f.primary);
+  if (f.clips.jointCount != f.primary.jointCount)
+    fail(r.name(), ": the clip identity has ", f.clips.jointCount, " joints, the run graph ",
+         f.primary.jointCount);
   return f;
 }
 
@@ -178,6 +196,9 @@ nlohmann::json exploreFileInfo(const std::filesystem::path& path, bool withHisto
   j["format_version"] = r.version();
   j["bytes"] = r.totalBytes();
   j["garment"] = config.value("garment", nlohmann::json::object()).value("name", "");
+  const ClipPairIdentity clips = readClips(r, config, primary);
+  j["clips"] = clips.name;
+  j["clips_identity"] = clips.describe();
   j["config"] = config;
   j["states"] = stateNode.size();
   j["frames"] = stateNode.size();

@@ -2,19 +2,22 @@
 // The .tsg file: everything an exploration needs to be inspected, compressed or resumed —
 // the run config (garment and exploration options), the primary graph, the cloth mesh, the
 // secondary graph (states, edges, merge errors), every cloth frame (positions + velocities),
-// the merge queue, counters and the error history. binary_io chunks (magic "THRNGTSG"),
-// written atomically, so the file on disk is always a complete graph.
+// the merge queue, counters and the error history, and (from version 2) the identity of the
+// skeleton and clip pair the run graph was built from. binary_io chunks (magic "THRNGTSG"),
+// written atomically, so the file on disk is always a complete graph. Version 1 files are read as
+// made for the built-in run (the only pair `cloth explore` knew then).
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "secondary/binary_io.h"
+#include "secondary/clip_identity.h"
 #include "secondary/secondary_graph.h"
 
 namespace throng::secondary {
 
 constexpr std::string_view kTsgMagic = "THRNGTSG";
-constexpr uint32_t kTsgVersion = 1;
+constexpr uint32_t kTsgVersion = 2;
 
 struct ExploreFile {
   nlohmann::json
@@ -22,6 +25,7 @@ struct ExploreFile {
   PrimaryGraph primary;
   ClothMesh mesh;
   SecondaryGraph graph;
+  ClipPairIdentity clips;  // always recorded after loading
 };
 
 // Mesh chunks (tags 'M…'), for any file that embeds a garment.
@@ -33,7 +37,7 @@ SecondaryGraph readSecondaryGraphChunks(const ChunkReader& reader, const Primary
 
 void saveExploreFile(const std::filesystem::path& path, const nlohmann::json& config,
                      const PrimaryGraph& primary, const ClothMesh& mesh,
-                     const SecondaryGraph& graph);
+                     const SecondaryGraph& graph, const ClipPairIdentity& clips);
 // Throws Error naming the file on a bad magic, version, size, checksum or an inconsistent graph.
 ExploreFile loadExploreFile(const std::filesystem::path& path);
 // `throng cloth info` for a .tsg: counts, largest merge error, bytes; reads no frame.

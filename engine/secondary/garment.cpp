@@ -94,6 +94,8 @@ json defaultGarmentConfig(const std::string& name) {
   if (name == "toy") {
     c["toy"] = {{"links", 6}, {"link_length", 0.08}, {"substeps", 4}, {"drag", 10.0}};
   } else if (name == "cape") {
+    c["slow"] = "";
+    c["fast"] = "";
     c["cape"] = {
         {"columns", 32},   {"rows", 48},          {"bucket_width", 0.05},     {"substeps", 10},
         {"iterations", 1}, {"settle_frames", 60}, {"internal_damping", 150.0}};
@@ -123,6 +125,9 @@ json completeGarmentConfig(const json& config) {
   requireRange(field<double>(c, "shoulder_weight", "garment"), 0, 100, "shoulder_weight");
   field<uint64_t>(c, "seed", "garment");
   field<uint32_t>(c, "initial_node", "garment");
+  if (c.contains("slow") && field<std::string>(c, "slow", "garment").empty() !=
+                                field<std::string>(c, "fast", "garment").empty())
+    fail("garment config: slow and fast clips must be given together");
   return c;
 }
 
@@ -131,16 +136,23 @@ Garment buildGarment(const json& config) {
   if (c["name"] == "toy") {
     auto primary = std::make_shared<const PrimaryGraph>(makeToyPrimaryGraph());
     auto mesh = std::make_shared<const ClothMesh>(makeToyChain(*primary, toyOptions(c)));
-    return finish(c, primary, mesh);
+    Garment garment = finish(c, primary, mesh);
+    garment.clips = skeletonIdentity("toy run graph", primary->jointNames, primary->parents);
+    return garment;
   }
   const float bucketWidth = field<float>(c["cape"], "bucket_width", "cape");
   requireRange(bucketWidth, 1e-3, 1, "cape.bucket_width");
-  auto primary =
-      std::make_shared<const PrimaryGraph>(buildRunGraph(anim::defaultRunPair(), bucketWidth));
+  // The pair the crowd plays: the same preparation as the renderer's --slow/--fast.
+  const std::string slow = c["slow"], fast = c["fast"];
+  const anim::ClipPair clips =
+      slow.empty() ? anim::defaultRunPair() : anim::loadClipPair(slow, fast);
+  auto primary = std::make_shared<const PrimaryGraph>(buildRunGraph(clips, bucketWidth));
   if (field<uint32_t>(c, "initial_node", "garment") >= primary->nodes.size())
     fail("garment config: initial_node out of range (", primary->nodes.size(), " primary nodes)");
   auto mesh = std::make_shared<const ClothMesh>(makeCape(*primary, capeMeshOptions(c)));
-  return finish(c, primary, mesh);
+  Garment garment = finish(c, primary, mesh);
+  garment.clips = clipPairIdentity(clips);
+  return garment;
 }
 
 Garment restoreGarment(const json& config, PrimaryGraph primary, ClothMesh mesh) {

@@ -5,7 +5,7 @@
 //
 // Config (every field optional but "name"; defaultGarmentConfig fills them in):
 //   {"name": "cape", "seed": 1, "initial_node": 0, "velocity_jitter": 0.01, "shoulder_weight":
-//   0.05,
+//   0.05, "slow": "", "fast": "" (BVH files of the run pair; empty: the built-in run),
 //    "cape": {"columns": 32, "rows": 48, "bucket_width": 0.05, "substeps": 10, "iterations": 1,
 //             "settle_frames": 60, "internal_damping": 150},
 //    "toy": {"links": 6, "link_length": 0.08, "substeps": 4, "drag": 10}}
@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "secondary/clip_identity.h"
 #include "secondary/merge_metric.h"
 #include "secondary/secondary_types.h"
 
@@ -25,6 +26,9 @@ struct Garment {
   std::shared_ptr<const ClothMesh> mesh;
   StepFunction step;
   GarmentTerm term;  // over vs behind the shoulder
+  // The skeleton and clip pair the primary graph was built from (restoreGarment leaves it
+  // unrecorded: the caller has it from the file).
+  ClipPairIdentity clips;
 };
 
 // The config of `name` with every default; throws Error on an unknown garment.

@@ -69,7 +69,7 @@ TEST_CASE("a checkpoint resumed gives the uninterrupted graph") {
   hooks.checkpointEvery = 7;
   uint64_t saved = 0;
   hooks.checkpoint = [&](const SecondaryGraph& g) {
-    saveExploreFile(path, runConfig(garment), *garment.primary, *garment.mesh, g);
+    saveExploreFile(path, runConfig(garment), *garment.primary, *garment.mesh, g, garment.clips);
     saved = g.expansions;
   };
   explore(garment, 2, 30, 0, hooks);  // "interrupted" after 30; the last checkpoint is at 28
@@ -88,13 +88,13 @@ TEST_CASE(".tsg round trips bit for bit and reports its contents") {
   const Garment garment = toyGarment();
   const SecondaryGraph g = explore(garment, 1, 12);
   const auto path = outputPath("roundtrip.tsg");
-  saveExploreFile(path, runConfig(garment), *garment.primary, *garment.mesh, g);
+  saveExploreFile(path, runConfig(garment), *garment.primary, *garment.mesh, g, garment.clips);
   const ExploreFile f = loadExploreFile(path);
   requireSameGraph(f.graph, g);
   CHECK(f.mesh.restPositions == garment.mesh->restPositions);
   CHECK(f.primary.successors == garment.primary->successors);
   const auto again = outputPath("roundtrip2.tsg");
-  saveExploreFile(again, f.config, f.primary, f.mesh, f.graph);
+  saveExploreFile(again, f.config, f.primary, f.mesh, f.graph, f.clips);
   CHECK(fileBytes(path) == fileBytes(again));
 
   const nlohmann::json info = exploreFileInfo(path, true);
@@ -111,8 +111,8 @@ TEST_CASE(".tsg round trips bit for bit and reports its contents") {
 TEST_CASE("truncated or corrupted .tsg files give clear errors") {
   const Garment garment = toyGarment();
   const auto path = outputPath("good.tsg");
-  saveExploreFile(path, runConfig(garment), *garment.primary, *garment.mesh,
-                  explore(garment, 1, 5));
+  saveExploreFile(path, runConfig(garment), *garment.primary, *garment.mesh, explore(garment, 1, 5),
+                  garment.clips);
   const std::vector<char> good = fileBytes(path);
   const auto bad = outputPath("bad.tsg");
 
