@@ -28,6 +28,7 @@ cleanup() {
   [ -n "$viewer_pid" ] && kill "$viewer_pid" 2> /dev/null || true
   [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2> /dev/null || true
   wait 2> /dev/null || true
+  rm -rf "$work"
 }
 trap cleanup EXIT
 
@@ -152,5 +153,4 @@ if [ "$status" -ne 0 ] || [ "$messages" -ne 0 ]; then
 fi
 awk -v g="$growth" -v limit="$kMaxGrowthPercent" 'BEGIN { exit !(g > limit) }' && failed=1
 [ "$failed" -eq 0 ] && echo "soak: passed" || echo "soak: FAILED"
-rm -rf "$work"
 exit "$failed"
