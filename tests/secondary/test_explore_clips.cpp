@@ -2,6 +2,9 @@
 // .tsg and .tsc, and playback's check that names both pairs when the crowd plays other clips.
 #include <doctest/doctest.h>
 
+#include <cstring>
+#include <fstream>
+
 #include <nlohmann/json.hpp>
 
 #include "chunk_patch.h"
@@ -128,4 +131,25 @@ TEST_CASE(
                       " --out " + (dir / "x.tsg").string());
   CHECK(r.exitCode != 0);
   CHECK(r.output.find("--slow and --fast must be given together") != std::string::npos);
+}
+
+TEST_CASE(".tsg: a cloth vertex pinned to a joint the skeleton lacks is refused on load") {
+  const auto dir = test::freshDirectory("tsg_pin_joints");
+  const auto path = dir / "toy.tsg", bad = dir / "bad.tsg";
+  REQUIRE(test::runThrong("cloth explore --garment toy --budget-expansions 2 --quiet --out " +
+                          path.string())
+              .exitCode == 0);
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
+  const uint32_t joint = 999;
+  std::vector<uint8_t> patched = test::patchChunk(bytes, "MPJT", [&](test::RawChunk& c) {
+    REQUIRE(c.payload.size() >= 4);
+    std::memcpy(c.payload.data(), &joint, 4);
+  });
+  std::ofstream(bad, std::ios::binary)
+      .write(reinterpret_cast<const char*>(patched.data()), std::streamsize(patched.size()));
+  CHECK_NOTHROW(loadExploreFile(path));
+  CHECK_THROWS_WITH_AS(loadExploreFile(bad),
+                       doctest::Contains("a cloth vertex is pinned to joint 999"), Error);
 }
