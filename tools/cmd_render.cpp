@@ -1,17 +1,20 @@
 // `throng render`: headless frame dumps of a crowd (synthesis + draw on the GPU, PNG files).
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <future>
 #include <memory>
 
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/frame_output.h"
 #include "core/image.h"
 #include "core/log.h"
 #include "gpu/commands.h"
 #include "limit_option.h"
+#include "progress.h"
 #include "render/crowd_frame.h"
 #include "render/offscreen_target.h"
 #include "scene_options.h"
@@ -25,9 +28,27 @@ namespace {
 struct RenderOptions {
   SceneOptions scene;
   int frames = 90;
+  float seconds = 0.0f;  // > 0: frames = seconds / dt
   std::string out = "frames";
+  bool pngs = true;  // false with --video and no --out
+  std::string video;
+  float fps = 0.0f;  // 0: 1 / dt
+  bool overwrite = false;
   bool validation = false;
 };
+
+// An output folder with frames of an earlier run is refused unless --overwrite: mixing two
+// runs' frames under one numbering is never what anyone wants.
+void checkOutputFolder(const std::filesystem::path& dir, bool overwrite) {
+  ensureWritableDirectory(dir);
+  if (overwrite) return;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("frame_", 0) == 0 && entry.path().extension() == ".png")
+      fail(dir.string(), ": holds frames of an earlier run (", name,
+           "); use --overwrite or another --out");
+  }
+}
 
 void printClothSummary(const secondary::ClothLayer& cloth,
                        const std::vector<secondary::ClothTimings>& clothTimes,
@@ -76,11 +97,18 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in);
 
 void runRender(RenderOptions& o) {
   validateSceneOptions(o.scene);
+  if (o.seconds > 0.0f) o.frames = int(std::lround(o.seconds / o.scene.dt));
   if (o.frames < 1 || o.frames > 100000) fail("--frames: expected 1..100000, got ", o.frames);
   RenderInputs in;
   in.size = parseSize(o.scene.size);
   in.outDir = o.out;
-  ensureWritableDirectory(in.outDir);
+  if (o.pngs) checkOutputFolder(in.outDir, o.overwrite);
+  if (!o.video.empty()) {
+    if (o.fps == 0.0f) o.fps = 1.0f / o.scene.dt;
+    checkVideoOptions(o.video, {int(in.size.width), int(in.size.height), o.fps});
+    if (!o.overwrite && std::filesystem::exists(o.video))
+      fail(o.video, ": exists; use --overwrite or another --video");
+  }
   // The cloth database is read (and checked) before the GPU starts.
   if (!o.scene.cloth.empty())
     in.clothDb =
@@ -129,7 +157,15 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   gpu::Fence fence(context);
   gpu::TimestampPool timestamps(context, 8);
   std::vector<double> synthMs, renderMs;
-  std::future<void> pendingWrite;
+  FrameOutputOptions outputOptions;
+  if (o.pngs) outputOptions.pngFolder = outDir;
+  if (!o.video.empty()) outputOptions.video = o.video;
+  outputOptions.width = int(size.width);
+  outputOptions.height = int(size.height);
+  outputOptions.fps = o.fps > 0.0f ? o.fps : 1.0f / o.scene.dt;
+  FrameOutput output(outputOptions);  // encodes on a worker: off the frame's timing path
+  Progress progress("render", o.frames);
+  const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
     timestamps.reset();
     render::FrameHooks hooks;
@@ -148,23 +184,29 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     synthMs.push_back(timings.synthesisMs);
     renderMs.push_back(timings.renderMs);
     if (cloth) clothTimes.push_back(cloth->timings(0));
-    if (pendingWrite.valid()) pendingWrite.get();  // at most one PNG encoding in flight
-    auto image = std::make_shared<ImageRgba8>(render::readbackImage(target));
-    char name[32];
-    std::snprintf(name, sizeof(name), "frame_%04d.png", frame);
-    pendingWrite = std::async(std::launch::async,
-                              [image, path = outDir / name] { writePngAtomic(path, *image); });
-    if (o.frames >= 10 && (frame + 1) % std::max(1, o.frames / 10) == 0)
-      logInfo(concat("frame ", frame + 1, "/", o.frames, "  synthesis ", timings.synthesisMs,
-                     " ms, render ", timings.renderMs, " ms"));
+    output.push(std::make_shared<ImageRgba8>(render::readbackImage(target)), frame);
+    progress.update(frame + 1, concat("synthesis ", timings.synthesisMs, " ms, render ",
+                                      timings.renderMs, " ms"));
   }
-  if (pendingWrite.valid()) pendingWrite.get();
+  output.finish();
+  progress.finish();
+  const double wallMs =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart)
+          .count() /
+      o.frames;
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
+  std::string where = o.pngs ? outDir.string() : "";
+  if (!o.video.empty()) where += (where.empty() ? "" : " and ") + o.video;
   std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames,
-              scene.count(), synth.jointCount(), size.width, size.height, outDir.string().c_str());
+              scene.count(), synth.jointCount(), size.width, size.height, where.c_str());
   std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
               median(synthMs), median(renderMs), context.info().name.c_str());
+  const FrameOutputStats encoded = output.stats();
+  std::printf(
+      "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on a worker, %.2f ms per "
+      "frame waiting for it\n",
+      wallMs, encoded.encodeMs / o.frames, encoded.waitedMs / o.frames);
   if (cloth) printClothSummary(*cloth, clothTimes, o.scene.cloth);
   if (synth.cache.options.enabled) {
     synth::MotionCacheStats c = synth::readCacheStats(synth.cache);
@@ -176,13 +218,27 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
 
 void addRenderCommand(CLI::App& app, int&) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a crowd headless and write PNG frames");
+  CLI::App* cmd =
+      app.add_subcommand("render", "Render a crowd headless into PNG frames and/or an MP4 video");
   addSceneOptions(*cmd, options->scene);
-  cmd->add_option("--frames", options->frames, "Number of frames")->capture_default_str();
-  cmd->add_option("--out,-o", options->out, "Output directory (frame_0000.png ...)")
+  cmd->add_option("--frames", options->frames, "Number of frames")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--seconds", options->seconds, "Seconds of animation (instead of --frames)")
+      ->check(CLI::Range(0.001f, 3600.0f))
+      ->excludes("--frames");
+  cmd->add_option("--out,-o", options->out, "Output directory for PNG frames (frame_0000.png ...)")
       ->capture_default_str();
+  cmd->add_option("--video", options->video,
+                  "Also (without --out: only) an H.264 MP4 video, e.g. crowd.mp4");
+  cmd->add_option("--fps", options->fps, "Video frame rate (default: 1 / --dt)")
+      ->check(CLI::Range(1.0f, 240.0f));
+  cmd->add_flag("--overwrite", options->overwrite, "Replace frames or a video of an earlier run");
   cmd->add_flag("--validation", options->validation, "Enable the Khronos validation layer");
-  cmd->callback([options] { runRender(*options); });
+  cmd->callback([options, cmd] {
+    options->pngs = options->video.empty() || cmd->count("--out") > 0;
+    runRender(*options);
+  });
 }
 
 const CommandRegistration kRegistration("render", addRenderCommand);
