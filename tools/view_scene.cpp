@@ -40,6 +40,9 @@ PreparedCrowd prepareCrowd(const ViewScene& scene, const SceneOptions& options) 
   if (options.storyboard()) {
     prepared.story = std::make_unique<render::SteeredCrowdSetup>(
         makeStoryboardSetup(options, scene.userClips ? &*scene.userClips : nullptr));
+  } else if (steersCircle(options)) {
+    // The circle scene's runners follow their lanes with avoidance, as in `throng render`.
+    prepared.story = std::make_unique<render::SteeredCrowdSetup>(makeCircleSetup(options, scene.pair));
   } else {
     prepared.crowd = makeSceneCrowd(options);
   }

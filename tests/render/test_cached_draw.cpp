@@ -54,7 +54,9 @@ TEST_CASE("cached draw: the frame equals the frame with every joint synthesized"
     ImageRgba8 b = renderFrames(ctx, programs, plain, camera, 3);
     ImageDiff diff = compareImages(a, b, 24);
     MESSAGE("cached vs synthesized frame: mean ", diff.meanAbsError, ", max ", diff.maxError);
-    CHECK(diff.fractionDifferent < 0.001);
+    // A cached pose is the nearest of 480 stored rows per second of cycle, not the continuous
+    // sample itself (within 1/960 s of phase): limbs may move by a pixel at an edge.
+    CHECK(diff.fractionDifferent < 0.005);
     CHECK(diff.meanAbsError < 0.2);
     // And the cached characters really took the composed path.
     auto sources = gpu::readback<uint32_t>(ctx, cached.poseSource, crowd.size());

@@ -283,7 +283,9 @@ TEST_CASE("coverage LOD in the synthesis: thresholds 0 equal the full path; mask
     }
   }
   MESSAGE("LOD levels far/mid/near: ", levels[0], "/", levels[1], "/", levels[2], "; joints skipped ", skipped, " of ", n);
-  CHECK(skipped > n / 4);
+  // Far characters synthesize 21 of the built-in 25 joints (every level keeps four limbs), so a
+  // crowd mostly far skips about a sixth of the joints.
+  CHECK(skipped > n / 8);
   CHECK(levels[0] + levels[1] > 0);
   CHECK(ctx.validationMessageCount() == 0);
 }
