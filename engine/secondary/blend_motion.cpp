@@ -103,16 +103,21 @@ BlendMotionReport measureBlendMotion(const ExploreFile& file, const BlendMotionO
 }
 
 BlendMotionReport measureBlendMotion(const ClothDatabase& db, const BlendMotionOptions& o) {
+  // States are decoded as they are shown, into a few slots (a step reads a state, then its blend
+  // source): memory stays at a few frames however large the database.
   const DecodedBases bases = dequantize(db);
-  std::vector<std::vector<glm::vec3>> decoded(db.stateCount());
+  std::vector<std::vector<glm::vec3>> slots(4, std::vector<glm::vec3>(db.vertexCount));
+  std::vector<uint32_t> slotState(slots.size(), kNoClothState);
+  size_t next = 0;
   return measureBlendMotion(
       db,
       [&](uint32_t s) -> std::span<const glm::vec3> {
-        if (decoded[s].empty()) {
-          decoded[s].resize(db.vertexCount);
-          decodeState(bases, s, decoded[s]);
-        }
-        return decoded[s];
+        for (size_t i = 0; i < slots.size(); ++i)
+          if (slotState[i] == s) return slots[i];
+        next = (next + 1) % slots.size();
+        slotState[next] = s;
+        decodeState(bases, s, slots[next]);
+        return slots[next];
       },
       o);
 }

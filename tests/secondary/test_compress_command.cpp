@@ -48,6 +48,15 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
   nlohmann::json j = nlohmann::json::parse(info.output);
   CHECK(j["format"] == "tsc");
   CHECK(j["bases"] == report["bases"]);
+  // Capes played along the decoded database: how far a merge frame moves them.
+  test::CommandResult blend =
+      test::runThrong("cloth info " + tsc.string() + " --json --blend-motion");
+  INFO(blend.output);
+  REQUIRE(blend.exitCode == 0);
+  const nlohmann::json b = nlohmann::json::parse(blend.output);
+  CHECK(b["blend_ordinary_steps"].get<int>() > 1000);
+  CHECK(b["blend_p95_move_ordinary_m"].get<double>() > 0.0);
+  CHECK(b["blend_merge_over_ordinary"].get<double>() >= 0.0);
   CHECK(j["max_reconstruction_error_m"] == report["max_reconstruction_error_m"]);
 
   // A fixed basis count and a coarser quantum.
