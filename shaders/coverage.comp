@@ -4,7 +4,7 @@
 // Coverage LOD pass, one invocation per character: its projected height picks a level (with
 // hysteresis, changing at a cycle end) whose joints the pose pass synthesizes and the renderer
 // draws; a sphere around the whole body tells whether any of it is on screen (the five part
-// spheres of DESIGN eqs. 1–9 are still measured, for the areas output and the state's bits).
+// spheres of the paper's eqs. 1–9, docs/design.md are still measured, for the areas output and the state's bits).
 // CPU twin: synth::coverageCharacter (engine/synth/coverage.cpp), mirrored operation for
 // operation (the math is in coverage_common.glsl).
 #include "coverage_types.h"

@@ -1,4 +1,4 @@
-// The pixel-coverage math (DESIGN eqs. 1–9) as functions of explicit inputs, so any pass that
+// The pixel-coverage math (the paper's eqs. 1–9, docs/design.md) as functions of explicit inputs, so any pass that
 // already walks the characters (e.g. root motion) can include it instead of a separate
 // dispatch. Needs coverage_types.h first. Mirrors engine/synth/coverage.cpp operation for
 // operation; the case analysis of sphereCoverage is documented there.

@@ -1,4 +1,4 @@
-// Structs of the pixel-coverage pass (DESIGN eqs. 1–9), shared by C++ and GLSL like
+// Structs of the pixel-coverage pass (the paper's eqs. 1–9, docs/design.md), shared by C++ and GLSL like
 // shared_types.h; C++ includes this file through synth/coverage.h, which checks the sizes.
 #ifndef THRONG_COVERAGE_TYPES_H
 #define THRONG_COVERAGE_TYPES_H

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-// Root motion (DESIGN eq. 10), one invocation per character: advance the phase, move the root by
+// Root motion (the paper's eq. 10, docs/design.md), one invocation per character: advance the phase, move the root by
 // the blended displacement between the two phases (each clip's root lerped between its rows, so
 // the step is continuous in the phase) rotated by the heading and scaled; w changes to wTarget
 // only when the cycle ends. CPU twin: anim::stepCharacter.

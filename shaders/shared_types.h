@@ -27,7 +27,7 @@ THRONG_STRUCT(JointMatrix) {
   vec4 row2;
 };
 
-// Push constants of the root-motion pass (DESIGN eq. 10).
+// Push constants of the root-motion pass (the paper's eq. 10, docs/design.md).
 THRONG_STRUCT(RootMotionPush) {
   uint characterCount;
   uint slowFrames;
@@ -63,7 +63,7 @@ THRONG_STRUCT(PosePush) {
 
 const uint kPoseUseMasks = 1u;
 
-// The motion cache's counters and FIFO state (DESIGN §3.4), kept on the GPU.
+// The motion cache's counters and FIFO state (the paper's §3.4, docs/design.md), kept on the GPU.
 THRONG_STRUCT(CacheCounters) {
   uint hits;              // requested buckets found resident (one lookup per bucket per frame)
   uint misses;            // requested buckets synthesized and inserted

@@ -5,7 +5,7 @@
 // Pose pass, one invocation per character: per joint, each motion texture slerped between the
 // two rows on either side of the phase (continuous sampling, no judder), then slow and fast
 // slerped by w (shortest arc); hierarchy composition down the parent array, and the joint draw
-// matrices A = M·O·F (DESIGN eq. 11). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
+// matrices A = M·O·F (the paper's eq. 11, docs/design.md). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
 // the motion cache skip all of that in synth_pose_cached.comp.
 #include "shared_types.h"
 #include "motion_common.glsl"

@@ -187,7 +187,7 @@ void addSimulate(CLI::App& parent) {
   cmd->add_option("--trajectories", args->trajectories,
                   "Tracked people: 'frame ped x y' text or ETH obsmat.txt")
       ->required();
-  cmd->add_option("--legend", args->legend, "Colour legend JSON (default: DESIGN.md's colours)");
+  cmd->add_option("--legend", args->legend, "Colour legend JSON (default: the default colours of docs/formats.md)");
   cmd->add_option("--seconds", args->run.seconds, "Seconds simulated (default 20)");
   cmd->add_option("--cell", args->cell, "Metres per storyboard pixel (default 0.5)");
   cmd->add_option("--jitter", args->jitter, "Random offset of each agent, +- metres (default 0.1)");

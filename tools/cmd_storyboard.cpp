@@ -1,4 +1,4 @@
-// throng storyboard decode|encode|example|quilt: the glyph storyboards of DESIGN.md.
+// throng storyboard decode|encode|example|quilt: the glyph storyboards of docs/design.md.
 #include <charconv>
 #include <cstdio>
 #include <map>
@@ -49,7 +49,7 @@ struct LegendOptions {
     return legend;
   }
   void add(CLI::App* command) {
-    command->add_option("--legend", path, "Colour legend JSON (default: DESIGN.md's colours)");
+    command->add_option("--legend", path, "Colour legend JSON (default: the default colours of docs/formats.md)");
     command->add_option("--colour-tolerance", tolerance, "Largest per-channel difference of near colours (default 40)");
   }
 };

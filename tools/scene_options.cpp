@@ -17,7 +17,7 @@ void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
                      "Tracked people ('frame ped x y' text or ETH obsmat.txt) whose path vectors "
                      "the agents follow");
   command.add_option("--legend", o.legend,
-                     "Storyboard colour legend JSON (default: DESIGN.md's colours)");
+                     "Storyboard colour legend JSON (default: the default colours of docs/formats.md)");
   command.add_option("--cell", o.cell, "Storyboard: metres per storyboard pixel")
       ->capture_default_str();
   command.add_option("--jitter", o.jitter, "Storyboard: random offset of each agent, +- metres")

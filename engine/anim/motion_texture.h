@@ -1,5 +1,5 @@
 #pragma once
-// Motion textures (DESIGN.md): width 2·J, height F, RGBA32F. Texel (2j, f) is joint j's local
+// Motion textures (docs/design.md): width 2·J, height F, RGBA32F. Texel (2j, f) is joint j's local
 // rotation at frame f (x,y,z,w); texel (2j+1, f) its offset from the parent (root: global
 // position at frame f).
 #include <cstdint>

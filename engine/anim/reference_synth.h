@@ -1,5 +1,5 @@
 #pragma once
-// The CPU reference synthesizer: DESIGN.md's blend, hierarchy and root motion for one
+// The CPU reference synthesizer: docs/design.md's blend, hierarchy and root motion for one
 // character, in plain C++. Every GPU synthesis pass is tested against it, and the bench runs
 // it (one and many threads) as the paper's CPU baseline.
 #include <span>

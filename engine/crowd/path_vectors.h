@@ -1,5 +1,5 @@
 #pragma once
-// Path vectors (DESIGN.md "Storyboards"): a tracked person i resampled once per second,
+// Path vectors (docs/design.md, "Storyboard crowds"): a tracked person i resampled once per second,
 // P_ij = pos_i(j) − pos_i(j−1). An agent copies one source person's vectors in order from its
 // own start: during second j it heads for start + R·Σ_{k≤j} P_ik, R turning the source's
 // overall direction of travel onto the agent's heading (so a storyboard glyph still says where

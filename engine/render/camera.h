@@ -16,7 +16,7 @@ struct Camera {
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   glm::mat4 viewProjection(float aspect) const { return projection(aspect) * view(); }
-  // Focal length in pixels for a viewport `height` pixels tall (DESIGN eq. 9's f).
+  // Focal length in pixels for a viewport `height` pixels tall (the paper's eq. 9, docs/design.md's f).
   float focalLengthPixels(float height) const;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// A storyboard crowd in the frame (DESIGN.md "Storyboards"): agents follow path vectors with
+// A storyboard crowd in the frame (docs/design.md, "Storyboard crowds"): agents follow path vectors with
 // collision avoidance on the GPU and are animated by one motion pair per clip set (walk, run,
 // talk, jump). Per frame, through FrameHooks of recordCrowdFrame:
 //   * before the synthesis passes: the path-vector goals (once per simulated second), the grid

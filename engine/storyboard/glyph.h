@@ -1,5 +1,5 @@
 #pragma once
-// The storyboard glyph (DESIGN.md "Storyboards"): a T of 4 pixels in a 3×3 cell. The outer
+// The storyboard glyph (docs/design.md, "Storyboard crowds"): a T of 4 pixels in a 3×3 cell. The outer
 // pixels are numbered in reading order (TL=1 T=2 TR=4 L=8 R=16 BL=32 B=64 BR=128) and their
 // sum names one of eight headings.
 #include <array>
@@ -21,7 +21,7 @@ struct Offset {
   int dx = 0, dy = 0;
 };
 
-// One row of the DESIGN.md table: the code sum, the pointer and the two bar pixels.
+// One row of the heading table (docs/formats.md): the code sum, the pointer and the two bar pixels.
 struct HeadingShape {
   Heading heading;
   int sum;

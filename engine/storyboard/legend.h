@@ -1,6 +1,6 @@
 #pragma once
 // The colour legend of a storyboard: which colours mean which state, action and (named)
-// group. The built-in default is exactly DESIGN.md's; a JSON file may redefine any part:
+// group. The built-in default is exactly docs/formats.md's; a JSON file may redefine any part:
 //   {"tolerance": 40,
 //    "states":  {"stroll": [255,128,0], "hurried": "#ff0000"},
 //    "actions": {"walk": [0,200,0], "run": [255,255,0], "talk": [255,105,180], "jump": [255,0,0]},

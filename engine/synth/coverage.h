@@ -1,7 +1,7 @@
 #pragma once
 // Coverage LOD: per character, a level (far / mid / near, synth::levelJoints) chosen from
 // its projected height with hysteresis, changing only at a walk-cycle end and at most once a
-// second while on screen; five bounding spheres (elbows, mid-spine, knees; DESIGN eqs. 1–9)
+// second while on screen; five bounding spheres (elbows, mid-spine, knees; the paper's eqs. 1–9, docs/design.md)
 // tell whether any of it is on screen. Output per character: the 64-bit mask of joints to
 // synthesize, the level and the pass's state; optionally the five areas. CPU twin: coverageCpu.
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// The motion cache of DESIGN §3.4, resident on the GPU: key = speed weight quantized to a
+// The motion cache of the paper's §3.4, docs/design.md, resident on the GPU: key = speed weight quantized to a
 // bucket, data = the synthesized character-space clip at that speed (cacheRowCount poses evenly
 // spaced in phase, all joints). Lookup before synthesis, a miss synthesizes and
 // inserts, FIFO eviction of the oldest entry when the byte budget is full. A character whose

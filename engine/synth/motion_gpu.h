@@ -21,7 +21,7 @@ bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity);
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;
-  gpu::Buffer parents;                // int32 per joint, root −1 (DESIGN's parent array)
+  gpu::Buffer parents;                // int32 per joint, root −1 (the parent array of docs/design.md)
   std::vector<int32_t> parentsHost;   // the same on the host (the pose pipeline bakes it in)
   std::vector<bool> animatedOffset;   // baked into the pose pipeline too
   gpu::Buffer jointRadius;

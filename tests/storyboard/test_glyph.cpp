@@ -4,7 +4,7 @@
 
 using namespace throng::storyboard;
 
-TEST_CASE("glyph: the heading table is DESIGN.md's and every entry is a T") {
+TEST_CASE("glyph: the heading table is docs/formats.md's and every entry is a T") {
   const int expected[kHeadingCount] = {26, 74, 88, 82, 37, 133, 161, 164};
   for (const HeadingShape& shape : headingShapes()) {
     CAPTURE(headingName(shape.heading));

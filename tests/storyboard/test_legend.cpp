@@ -9,7 +9,7 @@ using namespace throng;
 using namespace throng::storyboard;
 using throng::test::drawSum;
 
-TEST_CASE("legend: the default is exactly DESIGN.md's") {
+TEST_CASE("legend: the default is exactly docs/formats.md's") {
   const Legend legend;
   CHECK(legend.states[int(State::Stroll)] == Rgba8{255, 128, 0, 255});
   CHECK(legend.states[int(State::Hurried)] == Rgba8{255, 0, 0, 255});

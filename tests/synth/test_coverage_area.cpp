@@ -6,7 +6,7 @@
 
 #include "synth/coverage.h"
 
-// The closed-form sphere coverage (DESIGN eqs. 1–9) against pixels counted by ray casting.
+// The closed-form sphere coverage (the paper's eqs. 1–9, docs/design.md) against pixels counted by ray casting.
 using namespace throng;
 
 namespace {

@@ -1,4 +1,4 @@
-// Motion textures: the layout of DESIGN.md baked from a clip, uploaded as a Vulkan image and read
+// Motion textures: the layout of docs/design.md baked from a clip, uploaded as a Vulkan image and read
 // back through texelFetch in a compute shader, with the parent array SSBO.
 #include <doctest/doctest.h>
 
@@ -47,7 +47,7 @@ void checkRoundTrip(const anim::MotionPair& pair) {
 }
 }  // namespace
 
-TEST_CASE("motion texture: layout of DESIGN.md (rotation at 2j, offset at 2j+1, root position)") {
+TEST_CASE("motion texture: layout of docs/design.md (rotation at 2j, offset at 2j+1, root position)") {
   anim::ClipPair clips = anim::defaultRunPair();
   anim::MotionTexture tex = anim::bakeMotionTexture(clips.slow);
   CHECK(tex.width() == 2 * clips.slow.jointCount());

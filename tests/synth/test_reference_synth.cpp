@@ -1,4 +1,4 @@
-// The CPU reference synthesizer against DESIGN.md: slerp properties, w = 0/1 reproduce the
+// The CPU reference synthesizer against docs/design.md: slerp properties, w = 0/1 reproduce the
 // clips, root motion (eq. 10), heading about +y, and no foot skate on the built-in run.
 #include <doctest/doctest.h>
 
