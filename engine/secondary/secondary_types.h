@@ -1,5 +1,5 @@
 #pragma once
-// Types shared by the parts of the secondary-motion module (DESIGN.md "Secondary motion
+// Types shared by the parts of the secondary-motion module (docs/design.md "Secondary motion
 // graphs", Kim et al. 2013): the primary motion graph the crowd plays, cloth states, the
 // cape mesh, and the black-box simulator interface the exploration calls.
 #include <cstdint>
