@@ -1,6 +1,7 @@
 #include "crowd/trajectories.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -42,8 +43,30 @@ bool parseNumber(std::string_view s, double& value) {
 }
 
 const char* columnsText(TrajectoryFormat format) {
-  return format == TrajectoryFormat::EthObsmat ? "8 numbers 'frame ped x z y vx vz vy' (ETH obsmat)"
-                                               : "4 numbers 'frame ped_id x y'";
+  switch (format) {
+    case TrajectoryFormat::EthObsmat:
+      return "8 numbers 'frame ped x z y vx vz vy' (ETH obsmat)";
+    case TrajectoryFormat::PedPy:
+      return "5 numbers 'id frame x y z' (PedPy)";
+    default:
+      return "4 numbers 'frame ped_id x y'";
+  }
+}
+
+// Which fields hold the frame, the person and the ground position (x, y).
+struct Columns {
+  size_t count, frame, ped, x, y;
+};
+
+Columns columnsOf(TrajectoryFormat format) {
+  switch (format) {
+    case TrajectoryFormat::EthObsmat:
+      return {8, 0, 1, 2, 4};  // x, z (height, unused), y
+    case TrajectoryFormat::PedPy:
+      return {5, 1, 0, 2, 3};
+    default:
+      return {4, 0, 1, 2, 3};
+  }
 }
 
 class LineParser {
@@ -53,29 +76,31 @@ class LineParser {
 
   Sample parse(std::string_view text, size_t line) const {
     std::vector<std::string_view> fields = splitFields(text);
-    const size_t want = format_ == TrajectoryFormat::EthObsmat ? 8 : 4;
-    if (fields.size() != want)
+    const Columns c = columnsOf(format_);
+    // PedPy files may carry further columns after x y z.
+    const bool countOk =
+        format_ == TrajectoryFormat::PedPy ? fields.size() >= c.count : fields.size() == c.count;
+    if (!countOk)
       fail(source_, ":", line, ": expected ", columnsText(format_), ", got ", fields.size(),
            " field", fields.size() == 1 ? "" : "s");
     double v[8] = {};
-    for (size_t k = 0; k < want; ++k)
+    for (size_t k = 0; k < c.count; ++k)
       if (!parseNumber(fields[k], v[k]))
         fail(source_, ":", line, ": field ", k + 1, " '", fields[k],
              "' is not a finite number (expected ", columnsText(format_), ")");
-    Sample s{integer(v[0], "frame number", kMaxFrameNumber, line),
-             int(integer(v[1], "person id", 1e9, line)),
+    Sample s{integer(v[c.frame], "frame number", kMaxFrameNumber, line),
+             int(integer(v[c.ped], "person id", 1e9, line)),
              {},
              line};
     if (s.frame < 0) fail(source_, ":", line, ": frame number ", s.frame, " is negative");
-    // obsmat: x, z (height, unused), y; the ground plane is (x, y).
-    s.position =
-        format_ == TrajectoryFormat::EthObsmat ? glm::vec2(v[2], v[4]) : glm::vec2(v[2], v[3]);
+    s.position = glm::vec2(v[c.x] * scale_, v[c.y] * scale_);
     if (!std::isfinite(s.position.x) || !std::isfinite(s.position.y) ||
         std::abs(s.position.x) > 1e6f || std::abs(s.position.y) > 1e6f)
-      fail(source_, ":", line, ": position (", v[2], ", ",
-           v[format_ == TrajectoryFormat::EthObsmat ? 4 : 3], ") is not within 1e6 metres");
+      fail(source_, ":", line, ": position (", v[c.x], ", ", v[c.y], ") is not within 1e6 metres");
     return s;
   }
+
+  void setScale(double metresPerUnit) { scale_ = metresPerUnit; }
 
  private:
   long long integer(double value, const char* what, double limit, size_t line) const {
@@ -87,6 +112,7 @@ class LineParser {
 
   const std::string& source_;
   TrajectoryFormat format_;
+  double scale_ = 1.0;  // metres per file unit
 };
 
 std::vector<std::pair<std::string_view, size_t>> dataLines(std::string_view text) {
@@ -104,6 +130,42 @@ std::vector<std::pair<std::string_view, size_t>> dataLines(std::string_view text
     pos = end + 1;
   }
   return lines;
+}
+
+// PedPy's header: "# framerate: F" (frames per second) and the unit ("x/cm" or "in cm": cm).
+struct PedPyHeader {
+  double framerate = 0.0;  // 0: no framerate comment (not a PedPy file)
+  size_t line = 0;
+  double metresPerUnit = 1.0;
+};
+
+PedPyHeader pedPyHeader(std::string_view text, const std::string& source) {
+  PedPyHeader header;
+  size_t number = 0, pos = 0;
+  while (pos < text.size()) {
+    size_t end = std::min(text.find('\n', pos), text.size());
+    std::string_view line = text.substr(pos, end - pos);
+    ++number;
+    pos = end + 1;
+    size_t first = line.find_first_not_of(" \t");
+    if (first == std::string_view::npos) continue;
+    if (line[first] != '#') break;  // the header ends at the first data line
+    std::string lower(line);
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char ch) { return char(std::tolower(ch)); });
+    if (lower.find("x/cm") != std::string::npos || lower.find("in cm") != std::string::npos)
+      header.metresPerUnit = 0.01;
+    size_t key = lower.find("framerate:");
+    if (key == std::string::npos) continue;
+    std::vector<std::string_view> rest = splitFields(line.substr(key + 10));
+    double fps = 0.0;
+    if (rest.empty() || !parseNumber(rest[0], fps) || !(fps > 0.0 && fps <= 10000.0))
+      fail(source, ":", number,
+           ": expected '# framerate: F' with 0 < F <= 10000 frames per second");
+    header.framerate = fps;
+    header.line = number;
+  }
+  return header;
 }
 
 TrajectoryFormat detectFormat(const std::string& source, std::string_view firstLine, size_t line) {
@@ -169,10 +231,14 @@ Trajectories parseTrajectories(std::string_view text, const std::string& source,
     fail(source, ": no trajectory samples (expected lines of 'frame ped_id x y' or ETH obsmat)");
   Trajectories out;
   out.source = source;
-  out.format = options.format != TrajectoryFormat::Auto
-                   ? options.format
-                   : detectFormat(source, lines[0].first, lines[0].second);
+  const PedPyHeader pedpy = pedPyHeader(text, source);
+  out.format = options.format != TrajectoryFormat::Auto ? options.format
+               : pedpy.framerate > 0.0                  ? TrajectoryFormat::PedPy
+                                       : detectFormat(source, lines[0].first, lines[0].second);
+  if (out.format == TrajectoryFormat::PedPy && pedpy.framerate == 0.0)
+    fail(source, ":1: expected a '# framerate: F' comment before the data (PedPy format)");
   LineParser parser(source, out.format);
+  parser.setScale(pedpy.metresPerUnit);
   std::map<int, std::vector<Sample>> byPerson;
   for (auto [line, number] : lines) {
     Sample s = parser.parse(line, number);
@@ -194,9 +260,14 @@ Trajectories parseTrajectories(std::string_view text, const std::string& source,
     fail(source, ": the most common step between a person's annotated frames is ", step,
          " frames (expected at most ", std::numeric_limits<int>::max(), ")");
   out.frameStep = int(step);
-  out.secondsPerStep = double(options.secondsPerStep > 0.0f ? options.secondsPerStep
-                                                            : defaultSecondsPerStep(source));
-  out.secondsPerFrame = out.secondsPerStep / double(out.frameStep);
+  if (out.format == TrajectoryFormat::PedPy) {
+    out.secondsPerFrame = 1.0 / pedpy.framerate;
+    out.secondsPerStep = out.secondsPerFrame * double(out.frameStep);
+  } else {
+    out.secondsPerStep = double(options.secondsPerStep > 0.0f ? options.secondsPerStep
+                                                              : defaultSecondsPerStep(source));
+    out.secondsPerFrame = out.secondsPerStep / double(out.frameStep);
+  }
   for (const auto& [ped, samples] : byPerson) splitTrack(ped, samples, out);
   return out;
 }

@@ -6,6 +6,9 @@
 //     one step is 0.4 s, except biwi_eth whose step is 0.667 s.
 //   * ETH's obsmat.txt: "frame ped x z y vx vz vy" in scientific notation (z unused), one
 //     annotation every 0.4 s (the frame step differs per sequence: 6 for seq_eth, 10 for hotel).
+//   * PedPy's text format (what `--trajectories-out FILE.txt` writes): a "# framerate: F"
+//     comment, then "id frame x y z" (further columns ignored), metres unless a comment says
+//     "x/cm" or "in cm"; the ground plane is (x, y) and one frame is 1/F s.
 // Time of a sample = frame · secondsPerFrame, secondsPerFrame = step time / modal frame step,
 // in double: frame numbers up to 1e9 (≈ 4e7 s) keep their 0.04 s steps apart (a float's step
 // there is 4 s). A person's annotations more than kMaxTrackGapSeconds apart are two tracks:
@@ -20,11 +23,12 @@
 
 namespace throng::crowd {
 
-enum class TrajectoryFormat { Auto, FramePedXY, EthObsmat };
+enum class TrajectoryFormat { Auto, FramePedXY, EthObsmat, PedPy };
 
 struct TrajectoryOptions {
   TrajectoryFormat format = TrajectoryFormat::Auto;  // Auto: by file name, else column count
   // Seconds between two annotations; 0: by dataset (biwi_eth 0.667 s, every other set 0.4 s).
+  // PedPy files take their frame time from their framerate comment instead.
   float secondsPerStep = 0.0f;
 };
 
