@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "cli_errors.h"
 #include "command.h"
@@ -15,7 +17,16 @@ std::map<std::string, AddCommandFn>& registry() {
   static std::map<std::string, AddCommandFn> commands;
   return commands;
 }
+
+std::vector<char*>& arguments() {
+  static std::vector<char*> argv;
+  return argv;
+}
 }  // namespace
+
+std::span<char* const> commandLine() {
+  return arguments();
+}
 
 CommandRegistration::CommandRegistration(const char* name, AddCommandFn add) {
   registry()[name] = add;
@@ -41,6 +52,8 @@ int main(int argc, char** argv) {
   CLI::App app{"Throng: GPU crowd animation (motion synthesis, storyboards, secondary motion)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "throng " THRONG_VERSION);
+  throng::tools::arguments().assign(argv, argv + argc);
+  throng::tools::arguments().push_back(nullptr);
   int exitCode = 0;
   throng::tools::addRegisteredCommands(app, exitCode);
   try {

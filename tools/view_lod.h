@@ -7,7 +7,7 @@
 #include <span>
 
 #include "gpu/buffer.h"
-#include "render/window_presenter.h"
+#include "viewer/window_presenter.h"
 #include "synth/crowd_synth.h"
 
 namespace throng::tools {

@@ -1,4 +1,4 @@
-#include "render/imgui_layer.h"
+#include "viewer/imgui_layer.h"
 
 #include <algorithm>
 

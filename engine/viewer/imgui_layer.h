@@ -7,8 +7,8 @@
 
 #include "gpu/context.h"
 #include "gpu/handle.h"
-#include "render/swapchain.h"
-#include "render/window.h"
+#include "viewer/swapchain.h"
+#include "viewer/window.h"
 
 namespace throng::render {
 

@@ -1,4 +1,4 @@
-#include "render/input_script.h"
+#include "viewer/input_script.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "render/swapchain.h"
+#include "viewer/swapchain.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "render/view_controls.h"
+#include "viewer/view_controls.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>

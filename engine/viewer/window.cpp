@@ -1,4 +1,4 @@
-#include "render/window.h"
+#include "viewer/window.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "render/window_presenter.h"
+#include "viewer/window_presenter.h"
 
 #include <cstring>
 

@@ -13,8 +13,8 @@
 #include "gpu/image.h"
 #include "gpu/timestamps.h"
 #include "render/crowd_frame.h"
-#include "render/swapchain.h"
-#include "render/window.h"
+#include "viewer/swapchain.h"
+#include "viewer/window.h"
 
 namespace throng::render {
 

@@ -5,7 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include "core/error.h"
-#include "render/input_script.h"
+#include "viewer/input_script.h"
 
 using namespace throng;
 using render::ScriptEvent;

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "render/swapchain.h"
+#include "viewer/swapchain.h"
 
 using namespace throng;
 

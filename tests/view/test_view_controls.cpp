@@ -6,7 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include "render/camera_control.h"
-#include "render/view_controls.h"
+#include "viewer/view_controls.h"
 
 using namespace throng;
 using render::Camera;

@@ -1,0 +1,42 @@
+# cmake -DTHRONG=<throng> -DTHRONG_VIEW=<throng-view> -P CheckViewerLinkage.cmake
+# Fails unless THRONG_VIEW needs libglfw and holds Dear ImGui while THRONG does neither: the
+# window libraries belong to the viewer alone.
+foreach(var THRONG THRONG_VIEW)
+  if(NOT EXISTS "${${var}}")
+    message(FATAL_ERROR "${var}: '${${var}}' does not exist")
+  endif()
+endforeach()
+
+# needs(<binary> <out-glfw> <out-imgui>): whether it names libglfw/libimgui as a needed shared
+# library or defines Dear ImGui symbols (the Vulkan backend is compiled in).
+function(needs binary out_glfw out_imgui)
+  execute_process(COMMAND readelf -d ${binary} OUTPUT_VARIABLE dynamic RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "readelf -d ${binary} failed (${rc})")
+  endif()
+  execute_process(COMMAND nm -C --defined-only ${binary} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "nm ${binary} failed (${rc})")
+  endif()
+  string(REGEX MATCH "NEEDED[^\n]*libglfw" glfw "${dynamic}")
+  string(REGEX MATCH "NEEDED[^\n]*libimgui" imgui_lib "${dynamic}")
+  string(REGEX MATCH " ImGui(_ImplVulkan)?[:_][^\n]*" imgui_symbol "${symbols}")
+  set(${out_glfw} "${glfw}" PARENT_SCOPE)
+  set(${out_imgui} "${imgui_lib}${imgui_symbol}" PARENT_SCOPE)
+endfunction()
+
+needs(${THRONG} throng_glfw throng_imgui)
+needs(${THRONG_VIEW} view_glfw view_imgui)
+if(throng_glfw)
+  message(FATAL_ERROR "${THRONG} needs GLFW: ${throng_glfw}")
+endif()
+if(throng_imgui)
+  message(FATAL_ERROR "${THRONG} holds Dear ImGui: ${throng_imgui}")
+endif()
+if(NOT view_glfw)
+  message(FATAL_ERROR "${THRONG_VIEW} does not need libglfw: the check no longer sees it")
+endif()
+if(NOT view_imgui)
+  message(FATAL_ERROR "${THRONG_VIEW} has no Dear ImGui: the check no longer sees it")
+endif()
+message(STATUS "throng: no GLFW, no Dear ImGui; throng-view: ${view_glfw}")
