@@ -31,7 +31,7 @@ void runGenerate(const AssetsOptions& options) {
   }
 }
 
-void addAssetsCommands(CLI::App& app, int& /*exitCode*/) {
+void addAssetsCommands(CLI::App& app) {
   CLI::App* assets = app.add_subcommand("assets", "The project's own default assets");
   assets->require_subcommand(1);
   CLI::App* generate = assets->add_subcommand(

@@ -298,7 +298,7 @@ void runBench(BenchOptions& o) {
   }
 }
 
-void addBenchCommand(CLI::App& app, int&) {
+void addBenchCommand(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
   CLI::App* cmd = app.add_subcommand("bench", "Measure synthesis (GPU vs CPU twin) and rendering speed");
   cmd->add_option("--json", options->json, "Also write the results as JSON to this file");

@@ -128,7 +128,7 @@ void runClipInfo(const ClipInfoOptions& options) {
   }
 }
 
-void addClipCommands(CLI::App& app, int& /*exitCode*/) {
+void addClipCommands(CLI::App& app) {
   CLI::App* clip = app.add_subcommand("clip", "Inspect motion-capture clips");
   clip->require_subcommand(1);
   CLI::App* info = clip->add_subcommand("info", "Joints, frames, units and best loop of a BVH file");

@@ -369,7 +369,7 @@ CLI::App* clothCommand(CLI::App& app) {
   return commandGroup(app, "cloth", "Secondary motion: cloth exploration, compression, info");
 }
 
-void addClothExploreCommands(CLI::App& app, int& /*exitCode*/) {
+void addClothExploreCommands(CLI::App& app) {
   CLI::App* cloth = clothCommand(app);
 
   auto a = std::make_shared<ExploreArgs>();

@@ -159,7 +159,7 @@ CLI::App* clothCommand(CLI::App& app) {
   return commandGroup(app, "cloth", "Secondary motion: cloth exploration, compression, info");
 }
 
-void addClothCompressCommand(CLI::App& app, int& /*exitCode*/) {
+void addClothCompressCommand(CLI::App& app) {
   CLI::App* cloth = clothCommand(app);
   auto a = std::make_shared<CompressArgs>();
   CLI::App* cmd = cloth->add_subcommand("compress",

@@ -314,7 +314,7 @@ void addBench(CLI::App& parent) {
   });
 }
 
-void addCrowdCommands(CLI::App& app, int& /*exitCode*/) {
+void addCrowdCommands(CLI::App& app) {
   auto* crowd =
       app.add_subcommand("crowd", "Storyboard crowds on path vectors with collision avoidance");
   crowd->require_subcommand(1);

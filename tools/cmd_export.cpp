@@ -122,7 +122,7 @@ void runExport(ExportOptions& o, const CLI::App& command) {
               o.frames, pair.jointCount(), 1.0 / o.scene.dt, out.string().c_str());
 }
 
-void addExportCommand(CLI::App& app, int&) {
+void addExportCommand(CLI::App& app) {
   auto options = std::make_shared<ExportOptions>();
   options->scene.characters = 10;
   CLI::App* cmd =

@@ -29,7 +29,7 @@ void printHelp(const CLI::App& root, const std::vector<std::string>& words) {
   std::fputs(command->help().c_str(), stdout);
 }
 
-void addHelpCommand(CLI::App& app, int&) {
+void addHelpCommand(CLI::App& app) {
   auto words = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand(
       "help", "Show the help of a command: throng help render, throng help cloth explore");

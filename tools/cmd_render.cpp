@@ -216,7 +216,7 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   }
 }
 
-void addRenderCommand(CLI::App& app, int&) {
+void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd =
       app.add_subcommand("render", "Render a crowd headless into PNG frames and/or an MP4 video");

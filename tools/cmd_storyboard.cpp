@@ -179,7 +179,7 @@ void addQuilt(CLI::App& parent) {
   });
 }
 
-void addStoryboardCommands(CLI::App& app, int& /*exitCode*/) {
+void addStoryboardCommands(CLI::App& app) {
   auto* storyboard = app.add_subcommand("storyboard", "Glyph storyboards: decode, encode, example, quilt");
   storyboard->require_subcommand(1);
   addDecode(*storyboard);

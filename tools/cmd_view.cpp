@@ -8,7 +8,7 @@
 namespace throng::tools {
 namespace {
 
-void addViewCommand(CLI::App& app, int&) {
+void addViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewOptions>();
   CLI::App* cmd =
       app.add_subcommand("view", "Fly around a crowd in a window (Vulkan + Dear ImGui)");

@@ -7,13 +7,13 @@
 
 namespace throng::tools {
 
-using AddCommandFn = void (*)(CLI::App& app, int& exitCode);
+using AddCommandFn = void (*)(CLI::App& app);
 
 struct CommandRegistration {
   CommandRegistration(const char* name, AddCommandFn add);
 };
 
-void addRegisteredCommands(CLI::App& app, int& exitCode);
+void addRegisteredCommands(CLI::App& app);
 
 // The program's argv as main received it, ending in a null pointer (for handing the same
 // command line to another executable).

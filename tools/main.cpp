@@ -32,8 +32,8 @@ CommandRegistration::CommandRegistration(const char* name, AddCommandFn add) {
   registry()[name] = add;
 }
 
-void addRegisteredCommands(CLI::App& app, int& exitCode) {
-  for (auto& [name, add] : registry()) add(app, exitCode);
+void addRegisteredCommands(CLI::App& app) {
+  for (auto& [name, add] : registry()) add(app);
 }
 
 CLI::App* commandGroup(CLI::App& app, const char* name, const char* description) {
@@ -54,8 +54,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "throng " THRONG_VERSION);
   throng::tools::arguments().assign(argv, argv + argc);
   throng::tools::arguments().push_back(nullptr);
-  int exitCode = 0;
-  throng::tools::addRegisteredCommands(app, exitCode);
+  throng::tools::addRegisteredCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -76,5 +75,5 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "internal error: %s\n", e.what());
     return 1;
   }
-  return exitCode;
+  return 0;
 }
