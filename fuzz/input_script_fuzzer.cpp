@@ -2,7 +2,7 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "render/input_script.h"
+#include "viewer/input_script.h"
 
 using namespace throng;
 

@@ -52,26 +52,31 @@ JSON
 echo '{"actions": {"jump": "#102030"}, "groups": []}' > corpus/legend/actions_only.json
 
 # Trajectories (the real ETH/UCY files are third-party data and stay out of the repository):
-# a few people walking in both formats. The first byte picks the harness's format variant
-# (byte % 5: 0 auto, 1 auto as biwi_eth, 2 auto as obsmat.txt, 3 frame-ped-x-y, 4 obsmat),
-# so '0' (48) reads frame-ped-x-y, '3' (51) biwi_eth and '4' (52) obsmat.txt.
+# a few people walking in each format. The first byte's digit picks the harness's variant
+# (byte % 6: 0 auto, 1 auto as biwi_eth.txt, 2 auto as obsmat.txt, 3 frame-ped-x-y, 4 obsmat,
+# 5 PedPy).
 reset trajectories
 awk 'BEGIN {
-  printf "0"
+  printf "3"
   for (f = 0; f <= 200; f += 10)
     for (p = 1; p <= 3; ++p)
       if (f >= p * 20) printf "%d\t%d\t%.2f\t%.2f\n", f, p, 0.05 * f + p, 0.5 * p - 0.01 * f
 }' > corpus/trajectories/frame_ped_xy.txt
 awk 'BEGIN {
-  printf "4"
+  printf "2"
   for (f = 0; f <= 120; f += 6)
     for (p = 1; p <= 2; ++p)
       printf "%.7e %.7e %.7e %.7e %.7e %.7e %.7e %.7e\n", f, p, 0.03 * f * p, 0, 1 - 0.02 * f, 1.2, 0, -0.5
 }' > corpus/trajectories/obsmat.txt
 awk 'BEGIN {
-  printf "3"
+  printf "1"
   for (f = 780; f <= 900; f += 6) printf "%d %d %.3f %.3f\n", f, 7, f / 100.0, 2.5
 }' > corpus/trajectories/biwi_eth.txt
+awk 'BEGIN {
+  printf "5# framerate: 25.0\n# id frame x/m y/m z/m\n"
+  for (f = 0; f <= 100; f += 5)
+    for (p = 1; p <= 2; ++p) printf "%d %d %.4f %.4f 1.7\n", p, f, 0.05 * f, p - 0.02 * f
+}' > corpus/trajectories/pedpy.txt
 
 # Viewer input scripts: every command of docs/viewer.md.
 reset input_script

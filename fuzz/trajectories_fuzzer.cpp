@@ -1,5 +1,6 @@
-// Trajectory text (both formats, chosen by the first byte, as the file name or the column
-// count would) → tracks → path vectors, speeds, source assignment, a replay and its goals.
+// Trajectory text (every format, chosen by the first byte, as the file name, the column count or
+// the framerate comment would) → tracks → path vectors, speeds, source assignment, a replay and its
+// goals.
 #include <array>
 
 #include "crowd/path_vectors.h"
@@ -13,12 +14,15 @@ struct Variant {
   const char* name;
   crowd::TrajectoryFormat format;
 };
-constexpr std::array<Variant, 5> kVariants = {{
+// The first byte's digit (byte % 6) picks one: '0' auto, '1' biwi_eth, '2' obsmat.txt by name,
+// '3' frame-ped-x-y, '4' obsmat, '5' PedPy.
+constexpr std::array<Variant, 6> kVariants = {{
     {"fuzz.txt", crowd::TrajectoryFormat::Auto},
     {"biwi_eth.txt", crowd::TrajectoryFormat::Auto},
     {"obsmat.txt", crowd::TrajectoryFormat::Auto},
     {"fuzz.txt", crowd::TrajectoryFormat::FramePedXY},
     {"fuzz.txt", crowd::TrajectoryFormat::EthObsmat},
+    {"fuzz.txt", crowd::TrajectoryFormat::PedPy},
 }};
 
 void usePaths(const std::vector<crowd::PathSource>& sources) {
