@@ -3,20 +3,6 @@
 #ifndef THRONG_MOTION_COMMON_GLSL
 #define THRONG_MOTION_COMMON_GLSL
 
-vec4 slerpShortest(vec4 a, vec4 b, float t) {
-  float cosTheta = dot(a, b);
-  if (cosTheta < 0.0) {
-    b = -b;
-    cosTheta = -cosTheta;
-  }
-  if (cosTheta > 0.9995) return normalize(a + t * (b - a));
-  float theta = acos(cosTheta);
-  float sinTheta = sin(theta);
-  float wa = sin((1.0 - t) * theta) / sinTheta;
-  float wb = sin(t * theta) / sinTheta;
-  return wa * a + wb * b;
-}
-
 // Series slerp, mirrors slerpFast in engine/core/math.h (see there for the error bound). The
 // t-dependent terms are computed once per character (makeSlerpWeights) and reused by all joints.
 const int kSlerpTerms = 4;

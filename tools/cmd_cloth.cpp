@@ -23,11 +23,8 @@
 #include "secondary/explore.h"
 #include "secondary/explore_file.h"
 #include "secondary/garment.h"
-#if __has_include("secondary/cloth_compress.h")
 #include "secondary/cloth_compress.h"
 #include "secondary/cloth_database.h"
-#define THRONG_HAVE_CLOTH_COMPRESS 1
-#endif
 #ifdef THRONG_HAVE_MPI
 #include "secondary/mpi/explore_mpi.h"
 #endif
@@ -336,12 +333,7 @@ json blendMotionJson(const std::filesystem::path& path) {
 json fileInfo(const std::filesystem::path& path, bool history) {
   const std::string magic = sec::readMagic(path);
   if (magic == sec::kTsgMagic) return sec::exploreFileInfo(path, history);
-#ifdef THRONG_HAVE_CLOTH_COMPRESS
   if (magic == sec::kClothDatabaseMagic) return sec::clothCompressedInfo(path);
-#else
-  if (magic == "THRNGTSC")
-    fail(path.string(), ": compressed cloth (.tsc) files are unsupported yet");
-#endif
   std::string shown;
   for (char c : magic) shown += (c >= 32 && c < 127) ? c : '?';
   fail(path.string(), ": not a secondary graph (.tsg) or compressed cloth (.tsc) file (magic '",
