@@ -19,6 +19,7 @@
 #include "render/offscreen_target.h"
 #include "scene_options.h"
 #include "scene_storyboard.h"
+#include "scene_trajectories.h"
 #include "secondary/cloth_gpu_layer.h"
 #include "stats.h"
 
@@ -164,6 +165,7 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   outputOptions.height = int(size.height);
   outputOptions.fps = o.fps > 0.0f ? o.fps : 1.0f / o.scene.dt;
   FrameOutput output(outputOptions);  // encodes on a worker: off the frame's timing path
+  SceneTrajectories trajectories(o.scene, scene, uint64_t(o.frames));
   Progress progress("render", o.frames);
   const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
@@ -185,10 +187,12 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     renderMs.push_back(timings.renderMs);
     if (cloth) clothTimes.push_back(cloth->timings(0));
     output.push(std::make_shared<ImageRgba8>(render::readbackImage(target)), frame);
+    trajectories.record(context, scene, double(frame) * o.scene.dt);
     progress.update(frame + 1, concat("synthesis ", timings.synthesisMs, " ms, render ",
                                       timings.renderMs, " ms"));
   }
   output.finish();
+  trajectories.finish();
   progress.finish();
   const double wallMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart)
@@ -207,6 +211,9 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
       "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on a worker, %.2f ms per "
       "frame waiting for it\n",
       wallMs, encoded.encodeMs / o.frames, encoded.waitedMs / o.frames);
+  if (trajectories.enabled())
+    std::printf("trajectories of %u agents over %d frames written to %s\n", scene.count(), o.frames,
+                o.scene.trajectoriesOut.c_str());
   if (cloth) printClothSummary(*cloth, clothTimes, o.scene.cloth);
   if (synth.cache.options.enabled) {
     synth::MotionCacheStats c = synth::readCacheStats(synth.cache);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "crowd/trajectory_writer.h"
 #include "limit_option.h"
 #include "render/offscreen_target.h"
 #include "scene_storyboard.h"
@@ -16,8 +17,9 @@ void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
   command.add_option("--trajectories", o.trajectories,
                      "Tracked people ('frame ped x y' text or ETH obsmat.txt) whose path vectors "
                      "the agents follow");
-  command.add_option("--legend", o.legend,
-                     "Storyboard colour legend JSON (default: the default colours of docs/formats.md)");
+  command.add_option(
+      "--legend", o.legend,
+      "Storyboard colour legend JSON (default: the default colours of docs/formats.md)");
   command.add_option("--cell", o.cell, "Storyboard: metres per storyboard pixel")
       ->capture_default_str();
   command.add_option("--jitter", o.jitter, "Storyboard: random offset of each agent, +- metres")
@@ -84,6 +86,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       .add_option("--lod-near-pixels", o.lodNearPixels, "Limb sphere area (pixels) for all joints")
       ->capture_default_str();
   addStoryboardSceneOptions(command, o.story);
+  command.add_option("--trajectories-out", o.trajectoriesOut,
+                     "Every agent's position per frame: FILE.txt in PedPy's 'id frame x y z' "
+                     "(metres, x y = engine x z) or FILE.csv with time, heading, speed, group "
+                     "and state");
   command.add_option(
       "--cloth", o.cloth,
       "Compressed cloth database (.tsc from `throng cloth compress`): capes on every character");
@@ -119,6 +125,7 @@ void validateSceneOptions(SceneOptions& o) {
   if ((o.clothTint || o.clothFull) && o.cloth.empty())
     fail("--cloth-tint and --cloth-full need --cloth");
   validateSceneCacheOptions(o);
+  if (!o.trajectoriesOut.empty()) crowd::checkTrajectoryOutput(o.trajectoriesOut, 0, 0);
   // --storyboard alone picks the storyboard scene (--scene defaults to random).
   if (!o.story.storyboard.empty() && o.scenario.name == "random") o.scenario.name = "storyboard";
   if (o.storyboard()) {

@@ -49,6 +49,7 @@ struct SceneOptions {
   bool clothTint = false;  // colour capes by garment level
   bool clothFull = false;  // every visible cape at full detail (no garment LOD)
   StoryboardSceneOptions story;
+  std::string trajectoriesOut;  // every agent's position per frame (.txt PedPy or .csv)
   bool storyboard() const { return scenario.name == "storyboard"; }
 };
 

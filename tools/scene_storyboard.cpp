@@ -168,11 +168,13 @@ SceneCrowd::SceneCrowd(const gpu::Context& context, const SceneOptions& o,
                        const anim::ClipPair& clips) {
   if (o.storyboard() || steersCircle(o)) {
     const anim::ClipPair* user = o.slowClip.empty() ? nullptr : &clips;
-    steered_ = std::make_unique<render::SteeredCrowd>(
-        context,
+    render::SteeredCrowdSetup setup =
         o.storyboard() ? makeStoryboardSetup(o, user)
-                       : makeCircleSetup(o, anim::makeMotionPair(clips.slow, clips.fast)),
-        sceneCacheOptions(o), sceneLodOptions(o, clips.slow.skeleton));
+                       : makeCircleSetup(o, anim::makeMotionPair(clips.slow, clips.fast));
+    if (o.storyboard()) groups_ = setup.tints;  // the circle's tints are a hue per runner
+    paths_ = setup.paths;
+    steered_ = std::make_unique<render::SteeredCrowd>(
+        context, std::move(setup), sceneCacheOptions(o), sceneLodOptions(o, clips.slow.skeleton));
     return;
   }
   pair_ = std::make_unique<anim::MotionPair>(anim::makeMotionPair(clips.slow, clips.fast));
@@ -196,6 +198,14 @@ uint32_t SceneCrowd::count() const {
 
 void SceneCrowd::addHooks(render::FrameHooks& hooks, float dt) {
   if (steered_) steered_->addHooks(hooks, dt);
+}
+
+std::vector<uint8_t> SceneCrowd::activeAt(double seconds) const {
+  std::vector<uint8_t> active(count(), 1);
+  if (paths_.size() != active.size()) return active;
+  const uint32_t second = uint32_t(std::clamp(std::floor(seconds), 0.0, 4.0e9));
+  for (size_t i = 0; i < active.size(); ++i) active[i] = paths_.active(i, second) ? 1 : 0;
+  return active;
 }
 
 }  // namespace throng::tools

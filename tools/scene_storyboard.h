@@ -5,6 +5,7 @@
 // the clip pair of its action (built-in walk, run, idle/talk and hop pairs; --slow/--fast give
 // one pair to every action) and tinted by its group. The frame work is render::SteeredCrowd.
 #include <memory>
+#include <vector>
 
 #include "gpu/context.h"
 #include "render/steered_crowd.h"
@@ -42,12 +43,19 @@ class SceneCrowd {
   const render::SteeredCrowd* steered() const { return steered_.get(); }
   // The storyboard's work of this frame (nothing for a plain scene); once per frame.
   void addHooks(render::FrameHooks& hooks, float dt);
+  // Per agent: the storyboard group (empty for other scenes).
+  const std::vector<uint32_t>& groups() const { return groups_; }
+  // Per agent: whether it is on the scene at `seconds` (steered scenes follow their paths'
+  // first and last seconds; everyone else always is).
+  std::vector<uint8_t> activeAt(double seconds) const;
 
  private:
   std::unique_ptr<anim::MotionPair> pair_;
   std::unique_ptr<synth::SynthPrograms> programs_;
   synth::CrowdSynth synth_;
   std::unique_ptr<render::SteeredCrowd> steered_;
+  std::vector<uint32_t> groups_;
+  crowd::AgentPaths paths_;  // steered scenes
 };
 
 }  // namespace throng::tools

@@ -57,7 +57,7 @@ TrajectoryWriter::TrajectoryWriter(std::filesystem::path path, double framerate,
   if (!(framerate > 0.0 && framerate <= 10000.0))
     fail(path_.string(), ": framerate ", framerate, ": expected 0 < frames per second <= 10000");
   if (format_ == TrajectoryFileFormat::PedPy) {
-    append(text_, "# framerate: %.9g\n", framerate_);
+    append(text_, "# framerate: %.6g\n", framerate_);
     text_ +=
         "# throng trajectories in metres: x = engine x, y = engine z (the ground plane), "
         "z = engine y (height)\n# id frame x/m y/m z/m\n";

@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "cli_support.h"
+#include "core/file_io.h"
 #include "core/image.h"
+#include "crowd/trajectories.h"
 #include "gpu_fixture.h"
 #include "test_support.h"
 
@@ -137,4 +142,52 @@ TEST_CASE("render: options past the device's limits name the option and the limi
     CHECK(run.output.find("vulkan validation") == std::string::npos);
     CHECK(fileCount(out) == 0);
   }
+}
+
+// --trajectories-out: the PedPy text and the CSV of one run hold the same positions, and
+// `crowd metrics` reads the PedPy text back.
+TEST_CASE("render: --trajectories-out writes PedPy text and CSV that crowd metrics reads") {
+  fs::path out = test::freshDirectory("trajectories_out");
+  const std::string scene =
+      "render --scene circle -n 30 --frames 40 --size 96x64 --overwrite --out " +
+      (out / "frames").string();
+  for (const char* name : {"t.txt", "t.csv"}) {
+    test::CommandResult run =
+        test::runThrong(scene + " --trajectories-out " + (out / name).string());
+    INFO(run.output);
+    REQUIRE(run.exitCode == 0);
+    CHECK(run.output.find("trajectories of 30 agents over 40 frames") != std::string::npos);
+  }
+  const crowd::Trajectories text = crowd::loadTrajectories(out / "t.txt");
+  REQUIRE(text.tracks.size() == 30);
+  CHECK(text.secondsPerFrame == doctest::Approx(1.0 / 30.0).epsilon(1e-5));
+  // CSV rows: id,frame,time,x,y,z,... in engine coordinates; PedPy (x, y) = engine (x, z).
+  std::istringstream csv(readTextFile(out / "t.csv"));
+  std::string line;
+  std::getline(csv, line);
+  CHECK(line == "id,frame,time,x,y,z,heading,speed,group,state");
+  size_t rows = 0;
+  double worst = 0.0;
+  while (std::getline(csv, line)) {
+    int id = 0, frame = 0;
+    double time = 0, x = 0, y = 0, z = 0;
+    REQUIRE(std::sscanf(line.c_str(), "%d,%d,%lf,%lf,%lf,%lf", &id, &frame, &time, &x, &y, &z) ==
+            6);
+    REQUIRE(id < 30);
+    const glm::vec2 p = text.tracks[size_t(id)].points.at(size_t(frame)).position;
+    worst = std::max({worst, std::abs(p.x - x), std::abs(p.y - z)});
+    ++rows;
+  }
+  CHECK(rows == 30 * 40);
+  CHECK(worst <= 1e-4);
+  test::CommandResult metrics = test::runThrong(
+      "crowd metrics --cpu --policy none --trajectories " + (out / "t.txt").string());
+  INFO(metrics.output);
+  CHECK(metrics.exitCode == 0);
+  CHECK(metrics.output.find("30 people") != std::string::npos);
+  test::CommandResult bad =
+      test::runThrong(scene + " --trajectories-out " + (out / "t.json").string());
+  CHECK(bad.exitCode != 0);
+  CHECK(bad.output.find("--trajectories-out") != std::string::npos);
+  CHECK(!fs::exists(out / "t.json"));
 }
