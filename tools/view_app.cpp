@@ -92,6 +92,7 @@ void ViewSession::run() {
     const bool requested = lastFrame && !o_.screenshot.empty();
     const bool capture = requested || panel_.screenshot;
     presenter_.endFrame(*frame, capture);
+    recordTrajectories();
     scene_->simulatedSeconds += dt;
     stats_.frameDone(wall);
     if ((titleSeconds_ += wall) >= 1.0) {
@@ -104,6 +105,7 @@ void ViewSession::run() {
     if (lastFrame) break;
   }
   context_.waitIdle();
+  if (trajectories_) trajectories_->finish();
   for (uint32_t slot = 0; slot < render::kPresenterFrames; ++slot) {
     collectTimes(slot);
     lod_.collect(slot);

@@ -52,6 +52,12 @@ ViewSession::ViewSession(ViewOptions& o, Size size, render::InputScript script,
       panelVisible_(o.panel),
       fixedClock_(o.clock == "fixed" || (o.clock.empty() && o.frames > 0)) {
   logInfo(concat("clips: ", scene_->clipDescription));
+  if (!o.scene.trajectoriesOut.empty()) {
+    crowd::checkTrajectoryOutput(o.scene.trajectoriesOut, characterCount(*scene_),
+                                 uint64_t(std::max(o.frames, 0)));
+    trajectories_ = std::make_unique<crowd::TrajectoryWriter>(
+        o.scene.trajectoriesOut, 1.0 / double(o.scene.dt), std::vector<uint32_t>{});
+  }
   window_.setCallbacks({
       [this](double x, double y) { controls_.cursor(x, y); },
       [this](int button, bool pressed) { controls_.button(button, pressed, uiWantsMouse()); },
@@ -257,6 +263,14 @@ render::FrameTimestamps ViewSession::recordCrowd(const render::PresentFrame& fra
     revertRespawn(e);
     return recordCrowdOnce(frame, dt);
   }
+}
+
+void ViewSession::recordTrajectories() {
+  if (!trajectories_ || respawns_ > 0) return;
+  context_.waitIdle();
+  const crowd::CrowdBuffers& buffers =
+      scene_->steered ? scene_->steered->crowd() : scene_->synth.crowd;
+  trajectories_->addFrame(gpu::readback<glm::vec4>(context_, buffers.placement, buffers.count));
 }
 
 void ViewSession::revertRespawn(const gpu::LimitError& error) {

@@ -7,18 +7,19 @@
 #include <string>
 #include <vector>
 
+#include "crowd/trajectory_writer.h"
 #include "gpu/context.h"
 #include "gpu/limits.h"
 #include "render/crowd_frame.h"
-#include "viewer/imgui_layer.h"
-#include "viewer/input_script.h"
-#include "viewer/view_controls.h"
-#include "viewer/window_presenter.h"
 #include "view_lod.h"
 #include "view_options.h"
 #include "view_panel.h"
 #include "view_scene.h"
 #include "view_stats.h"
+#include "viewer/imgui_layer.h"
+#include "viewer/input_script.h"
+#include "viewer/view_controls.h"
+#include "viewer/window_presenter.h"
 
 namespace throng::tools {
 
@@ -37,6 +38,9 @@ class ViewSession {
   void applyLodPanel();
   // `label` names the request in errors ("s.txt:3: respawn 4000000", "the panel's respawn").
   void respawn(const SceneOptions& next, const std::string& label);
+  // --trajectories-out: the crowd's placement after a presented frame (waits for the GPU);
+  // the crowd the viewer started with only (a respawn ends the record).
+  void recordTrajectories();
   // Records the crowd's part of a frame. A device limit met by a respawned crowd brings back the
   // last crowd that recorded, and records that instead; the crowd the viewer started with
   // fails with an error naming -n.
@@ -76,6 +80,7 @@ class ViewSession {
   bool pending_[render::kPresenterFrames] = {};
   std::string screenshotWritten_;
   uint64_t speedChanges_ = 0, respawns_ = 0;
+  std::unique_ptr<crowd::TrajectoryWriter> trajectories_;
   std::optional<SceneOptions> recorded_;  // the options of the last crowd that recorded a frame
   bool respawned_ = false;                // the crowd has not recorded a frame since its respawn
   std::string respawnLabel_;              // names the latest respawn in errors

@@ -10,6 +10,7 @@
 
 #include "core/image.h"
 #include "crowd/scenario.h"
+#include "crowd/trajectories.h"
 #include "render/camera.h"
 #include "render/camera_control.h"
 #include "test_support.h"
@@ -313,4 +314,17 @@ TEST_CASE("view: bad options fail like throng render, before any window opens") 
     CHECK(run.output.find("no display") == std::string::npos);
   }
   CHECK_FALSE(fs::exists(out / "x.png"));
+}
+
+TEST_CASE("view: --trajectories-out records the crowd of every presented frame as PedPy text") {
+  fs::path out = test::freshDirectory("view_trajectories");
+  ViewRun run = runView(std::string(kScene) + " --frames 6 --no-panel --trajectories-out " +
+                        (out / "t.txt").string());
+  INFO(run.result.output);
+  REQUIRE(run.result.exitCode == 0);
+  const crowd::Trajectories t = crowd::loadTrajectories(out / "t.txt");
+  CHECK(t.format == crowd::TrajectoryFormat::PedPy);
+  CHECK(t.sampleCount == 200 * 6);
+  CHECK(t.tracks.size() == 200);
+  CHECK(t.secondsPerFrame == doctest::Approx(1.0 / 30.0).epsilon(1e-5));
 }
