@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "secondary/binary_io.h"
+#include "core/binary_io.h"
 
 namespace throng::fuzz {
 namespace {
@@ -17,10 +17,10 @@ void putLittleEndian(uint8_t* at, T value) {
 
 std::vector<uint8_t> withValidChunkTrailer(std::span<const uint8_t> input) {
   std::vector<uint8_t> bytes(input.begin(), input.end());
-  if (bytes.size() < secondary::kFileHeaderBytes + secondary::kTrailerBytes) return bytes;
+  if (bytes.size() < throng::kFileHeaderBytes + throng::kTrailerBytes) return bytes;
   putLittleEndian<uint64_t>(bytes.data() + kTotalBytesOffset, bytes.size());
-  const size_t body = bytes.size() - secondary::kTrailerBytes;
-  putLittleEndian<uint32_t>(bytes.data() + body, secondary::crc32Ieee({bytes.data(), body}));
+  const size_t body = bytes.size() - throng::kTrailerBytes;
+  putLittleEndian<uint32_t>(bytes.data() + body, throng::crc32Ieee({bytes.data(), body}));
   std::memcpy(bytes.data() + body + 4, "TEND", 4);
   return bytes;
 }

@@ -2,7 +2,7 @@
 // cloth mesh, secondary graph with its consistency checks) and `cloth info`'s summary.
 #include "chunk_fixup.h"
 #include "fuzz_support.h"
-#include "secondary/explore_file.h"
+#include "secondary/offline/explore_file.h"
 
 using namespace throng;
 

@@ -16,15 +16,15 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "core/binary_io.h"
 #include "core/error.h"
 #include "core/file_io.h"
-#include "secondary/binary_io.h"
-#include "secondary/blend_motion.h"
-#include "secondary/explore.h"
-#include "secondary/explore_file.h"
-#include "secondary/garment.h"
-#include "secondary/cloth_compress.h"
 #include "secondary/cloth_database.h"
+#include "secondary/offline/blend_motion.h"
+#include "secondary/offline/cloth_compress.h"
+#include "secondary/offline/explore.h"
+#include "secondary/offline/explore_file.h"
+#include "secondary/offline/garment.h"
 #ifdef THRONG_HAVE_MPI
 #include "secondary/mpi/explore_mpi.h"
 #endif
@@ -193,7 +193,7 @@ void runExplore(const ExploreArgs& a) {
   if (a.slow.empty() != a.fast.empty()) fail("--slow and --fast must be given together");
   if (a.threads > 1024) fail("--threads ", a.threads, ": expected 0 (all cores) to 1024");
   // A run killed while it wrote a checkpoint left "<out>.tmp-PID": gone before this one starts.
-  for (const std::filesystem::path& stale : sec::prepareOutputFile(out, "--out"))
+  for (const std::filesystem::path& stale : prepareOutputFile(out, "--out"))
     if (!a.quiet && !a.json)
       std::fprintf(stderr, "removed %s (left by a run that was killed)\n", stale.c_str());
 
@@ -319,7 +319,7 @@ json blendMotionJson(const std::filesystem::path& path) {
   options.characters = 64;
   options.steps = 600;
   const sec::BlendMotionReport r =
-      sec::readMagic(path) == sec::kTsgMagic
+      readMagic(path) == sec::kTsgMagic
           ? sec::measureBlendMotion(sec::loadExploreFile(path), options)
           : sec::measureBlendMotion(sec::readClothDatabase(path), options);
   return {{"merge_steps", r.mergeSteps.size()},
@@ -331,7 +331,7 @@ json blendMotionJson(const std::filesystem::path& path) {
 
 // One function per file kind, chosen by the magic.
 json fileInfo(const std::filesystem::path& path, bool history) {
-  const std::string magic = sec::readMagic(path);
+  const std::string magic = readMagic(path);
   if (magic == sec::kTsgMagic) return sec::exploreFileInfo(path, history);
   if (magic == sec::kClothDatabaseMagic) return sec::clothCompressedInfo(path);
   std::string shown;

@@ -14,12 +14,12 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "core/binary_io.h"
 #include "core/error.h"
 #include "core/file_io.h"
-#include "secondary/binary_io.h"
-#include "secondary/cloth_compress.h"
-#include "secondary/explore_file.h"
-#include "secondary/secondary_graph.h"
+#include "secondary/offline/cloth_compress.h"
+#include "secondary/offline/explore_file.h"
+#include "secondary/offline/secondary_graph.h"
 #include "synth/motion_cache.h"
 
 namespace throng::tools {
@@ -90,7 +90,7 @@ void runCompress(const CompressArgs& a) {
   const std::filesystem::path outPath = a.out;
   // Refuse an output that cannot be written (a directory, an unwritable folder) before the long
   // part, and clear what a killed earlier run left behind.
-  for (const std::filesystem::path& stale : sec::prepareOutputFile(outPath, "--out"))
+  for (const std::filesystem::path& stale : prepareOutputFile(outPath, "--out"))
     if (!a.quiet)
       std::fprintf(stderr, "removed %s (left by a run that was killed)\n", stale.c_str());
 

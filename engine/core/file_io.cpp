@@ -1,5 +1,6 @@
 #include "core/file_io.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -22,24 +23,72 @@ std::string readTextFile(const fs::path& path) {
   return data.str();
 }
 
-void writeFileAtomic(const fs::path& path, std::span<const uint8_t> bytes) {
+fs::path temporaryPathFor(const fs::path& path, const std::string& suffix) {
   fs::path tmp = path;
-  tmp += concat(".tmp-", ::getpid());
-  std::FILE* file = std::fopen(tmp.c_str(), "wb");
-  if (!file) fail(path.string(), ": cannot open for writing (", std::strerror(errno), ")");
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
-  ok = (std::fflush(file) == 0) && ok;
-  ok = (std::fclose(file) == 0) && ok;
-  if (!ok) {
-    std::remove(tmp.c_str());
-    fail(path.string(), ": write failed (", std::strerror(errno), ")");
-  }
+  tmp += concat(".tmp-", ::getpid(), suffix);
+  return tmp;
+}
+
+namespace {
+// fsync of a path opened read-only (a file written by another process, or a directory).
+bool syncPath(const fs::path& path, int flags) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | flags);
+  if (fd < 0) return false;
+  const bool ok = ::fsync(fd) == 0;
+  return (::close(fd) == 0) && ok;
+}
+
+void renameAndSyncDirectory(const fs::path& tmp, const fs::path& path) {
   std::error_code ec;
   fs::rename(tmp, path, ec);
   if (ec) {
-    std::remove(tmp.c_str());
+    fs::remove(tmp, ec);
     fail(path.string(), ": cannot rename temporary file into place (", ec.message(), ")");
   }
+  const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!syncPath(dir, O_DIRECTORY))
+    fail(dir.string(), ": cannot sync the directory after writing ", path.filename().string(), " (",
+         std::strerror(errno), ")");
+}
+}  // namespace
+
+void writeFileAtomic(const fs::path& path, const std::function<void(const ByteSink&)>& produce) {
+  const fs::path tmp = temporaryPathFor(path);
+  std::FILE* file = std::fopen(tmp.c_str(), "wb");
+  if (!file) fail(path.string(), ": cannot open for writing (", std::strerror(errno), ")");
+  bool ok = true;
+  try {
+    produce([&](const uint8_t* data, size_t size) {
+      ok = ok && std::fwrite(data, 1, size, file) == size;
+    });
+  } catch (...) {
+    std::fclose(file);
+    std::remove(tmp.c_str());
+    throw;
+  }
+  ok = (std::fflush(file) == 0) && ok;
+  ok = (::fsync(fileno(file)) == 0) && ok;
+  const int err = errno;
+  ok = (std::fclose(file) == 0) && ok;
+  if (!ok) {
+    std::remove(tmp.c_str());
+    fail(path.string(), ": write failed (", std::strerror(err), ")");
+  }
+  renameAndSyncDirectory(tmp, path);
+}
+
+void writeFileAtomic(const fs::path& path, std::span<const uint8_t> bytes) {
+  writeFileAtomic(path, [bytes](const ByteSink& sink) { sink(bytes.data(), bytes.size()); });
+}
+
+void commitTemporaryFile(const fs::path& temporary, const fs::path& path) {
+  if (!syncPath(temporary, 0)) {
+    const int err = errno;
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    fail(path.string(), ": cannot sync the written file (", std::strerror(err), ")");
+  }
+  renameAndSyncDirectory(temporary, path);
 }
 
 void writeTextFileAtomic(const fs::path& path, const std::string& text) {

@@ -81,10 +81,8 @@ void checkVideoOptions(const fs::path& path, const VideoOptions& o) {
 VideoWriter::VideoWriter(fs::path path, const VideoOptions& options)
     : path_(std::move(path)), options_(options) {
   checkVideoOptions(path_, options_);
-  tmp_ = path_;
-  tmp_ += concat(".tmp-", ::getpid(), ".mp4");
-  log_ = path_;
-  log_ += concat(".tmp-", ::getpid(), ".log");
+  tmp_ = temporaryPathFor(path_, ".mp4");
+  log_ = temporaryPathFor(path_, ".log");
   ::signal(SIGPIPE, SIG_IGN);  // a dead encoder must give EPIPE, not kill the engine
 
   int fds[2];
@@ -178,12 +176,7 @@ void VideoWriter::finish() {
     fail(path_.string(), ": ffmpeg could not encode the video (", frames_ == 0 ? "no frames" : why,
          ")");
   }
-  fs::rename(tmp_, path_, ec);
-  if (ec) {
-    std::string message = ec.message();
-    fs::remove(tmp_, ec);
-    fail(path_.string(), ": cannot rename the finished video into place (", message, ")");
-  }
+  commitTemporaryFile(tmp_, path_);
 }
 
 }  // namespace throng

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "anim/default_clips.h"
-#include "secondary/binary_io.h"
+#include "core/binary_io.h"
 
 namespace throng::secondary {
 

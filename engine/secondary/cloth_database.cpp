@@ -4,9 +4,9 @@
 #include <cstring>
 #include <limits>
 
+#include "core/binary_io.h"
 #include "core/error.h"
 #include "core/file_io.h"
-#include "secondary/binary_io.h"
 #include "secondary/cloth_entropy.h"
 #include "synth/motion_cache.h"
 

@@ -26,7 +26,8 @@ ClothLayer::ClothLayer(const gpu::Context& context, const ClothDatabase& db,
       cloth_(uploadCloth(context, db)),
       buffers_(makeClothCrowdBuffers(context, cloth_, crowd.count, options.fineBudgetBytes)) {
   for (uint32_t i = 0; i < render::kFramesInFlight; ++i) {
-    // A uniform buffer for the mark and the draw, a storage buffer for the splat (its shader says why).
+    // A uniform buffer for the mark and the draw, a storage buffer for the splat (its shader says
+    // why).
     views_.emplace_back(context, sizeof(gpu_types::ClothView),
                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                         gpu::MemoryUse::HostVisible);
@@ -110,8 +111,10 @@ ClothStats ClothLayer::stats(uint32_t slot) const {
   std::memcpy(&c, bytes, sizeof(c));
   uint32_t draws[kClothLevels * 5];
   std::memcpy(draws, bytes + kCounterBytes, sizeof(draws));
-  ClothStats stats{std::min(c.usedStates, buffers_.maxUsedStates), c.demoted,
-                   std::min(c.fineCursor, buffers_.fineBudget), {}};
+  ClothStats stats{std::min(c.usedStates, buffers_.maxUsedStates),
+                   c.demoted,
+                   std::min(c.fineCursor, buffers_.fineBudget),
+                   {}};
   for (uint32_t L = 0; L < kClothLevels; ++L) stats.capes[L] = draws[5 * L + 1];
   return stats;
 }

@@ -61,7 +61,7 @@ class ClothLayer {
   ClothCrowdBuffers buffers_;
   std::vector<gpu::Buffer> views_;
   std::vector<std::unique_ptr<gpu::TimestampPool>> timestamps_;
-  std::vector<gpu::Buffer> statsCopies_;  // per slot: ClothCounters, then the draws
+  std::vector<gpu::Buffer> statsCopies_;          // per slot: ClothCounters, then the draws
   std::vector<uint32_t> splatMarks_, drawMarks_;  // per slot: first of the two marks, or none
   std::vector<bool> splatted_;                    // per slot: far capes went to the splat
   std::vector<uint64_t> frameNumbers_;            // per slot: the frame recorded into it

@@ -80,7 +80,9 @@ void splatCapesCpu(const SplatInputs& in, std::span<const uint32_t> splatted,
       const glm::ivec2 to =
           glm::min(glm::ivec2(glm::floor(hi - 0.5f)), glm::ivec2(width, height) - 1);
       const bool skip = std::abs(area) < 1e-8f || from.x > to.x || from.y > to.y;
-      if (!skip) cape = glm::ivec4(glm::min(glm::ivec2(cape), from), glm::max(glm::ivec2(cape.z, cape.w), to));
+      if (!skip)
+        cape =
+            glm::ivec4(glm::min(glm::ivec2(cape), from), glm::max(glm::ivec2(cape.z, cape.w), to));
       const float inverse = 1.0f / area;
       const glm::vec2 e0 = glm::vec2(p1.y - p2.y, p2.x - p1.x) * inverse;
       const glm::vec2 e1 = glm::vec2(p2.y - p0.y, p0.x - p2.x) * inverse;

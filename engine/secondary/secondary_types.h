@@ -32,11 +32,11 @@ struct NodeJoint {
 struct PrimaryGraph {
   float frameTime = 1.0f / 30.0f;
   uint32_t jointCount = 0;
-  std::vector<int32_t> parents;                  // per joint, −1 for the root
-  std::vector<std::string> jointNames;           // per joint (BVH names: finds neck, shoulders)
+  std::vector<int32_t> parents;         // per joint, −1 for the root
+  std::vector<std::string> jointNames;  // per joint (BVH names: finds neck, shoulders)
   std::vector<PrimaryNode> nodes;
   std::vector<std::vector<uint32_t>> successors;
-  std::vector<NodeJoint> poses;                  // nodes × jointCount
+  std::vector<NodeJoint> poses;  // nodes × jointCount
   // Root displacement in character space from a node to each successor (same shape as
   // successors): the simulator moves the cloth's world frame by it.
   std::vector<std::vector<glm::vec3>> rootStep;

@@ -8,7 +8,7 @@
 
 #include <doctest/doctest.h>
 
-#include "secondary/binary_io.h"
+#include "core/binary_io.h"
 
 namespace throng::test {
 
@@ -23,14 +23,14 @@ inline std::vector<RawChunk> rawChunks(const std::vector<uint8_t>& file) {
   uint32_t chunkCount;
   std::memcpy(&chunkCount, file.data() + 12, 4);
   std::vector<RawChunk> chunks;
-  size_t at = secondary::kFileHeaderBytes;
+  size_t at = throng::kFileHeaderBytes;
   for (uint32_t i = 0; i < chunkCount; ++i) {
     RawChunk c;
     c.tag.assign(reinterpret_cast<const char*>(file.data() + at), 4);
     std::memcpy(&c.type, file.data() + at + 4, 4);
     std::memcpy(&c.elementBytes, file.data() + at + 8, 4);
     std::memcpy(&c.count, file.data() + at + 16, 8);
-    at += secondary::kChunkHeaderBytes;
+    at += throng::kChunkHeaderBytes;
     const size_t bytes = size_t(c.count * c.elementBytes);
     c.payload.assign(file.begin() + long(at), file.begin() + long(at + bytes));
     at += (bytes + 7) & ~size_t(7);
@@ -52,9 +52,9 @@ std::vector<uint8_t> patchChunk(const std::vector<uint8_t>& file, const std::str
       found = true;
     }
   REQUIRE(found);
-  std::vector<uint8_t> out(file.begin(), file.begin() + secondary::kFileHeaderBytes);
+  std::vector<uint8_t> out(file.begin(), file.begin() + throng::kFileHeaderBytes);
   for (const RawChunk& c : chunks) {
-    uint8_t h[secondary::kChunkHeaderBytes] = {};
+    uint8_t h[throng::kChunkHeaderBytes] = {};
     std::memcpy(h, c.tag.data(), 4);
     std::memcpy(h + 4, &c.type, 4);
     std::memcpy(h + 8, &c.elementBytes, 4);
@@ -63,9 +63,9 @@ std::vector<uint8_t> patchChunk(const std::vector<uint8_t>& file, const std::str
     out.insert(out.end(), c.payload.begin(), c.payload.end());
     out.resize((out.size() + 7) & ~size_t(7), 0);
   }
-  const uint64_t total = out.size() + secondary::kTrailerBytes;
+  const uint64_t total = out.size() + throng::kTrailerBytes;
   std::memcpy(out.data() + 16, &total, 8);
-  const uint32_t crc = secondary::crc32Ieee(out);
+  const uint32_t crc = throng::crc32Ieee(out);
   const uint8_t* c = reinterpret_cast<const uint8_t*>(&crc);
   out.insert(out.end(), c, c + 4);
   out.insert(out.end(), {'T', 'E', 'N', 'D'});

@@ -9,8 +9,8 @@
 #include <glm/glm.hpp>
 
 #include "core/rng.h"
-#include "secondary/cloth_compress.h"
 #include "secondary/cloth_database.h"
+#include "secondary/offline/cloth_compress.h"
 
 namespace throng::test {
 

@@ -5,8 +5,8 @@
 
 #include <doctest/doctest.h>
 
-#include "secondary/explore.h"
-#include "secondary/garment.h"
+#include "secondary/offline/explore.h"
+#include "secondary/offline/garment.h"
 
 namespace throng::secondary::fixtures {
 

@@ -5,7 +5,7 @@
 
 #include "anim/default_clips.h"
 #include "anim/gait.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::test {
 

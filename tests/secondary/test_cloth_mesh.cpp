@@ -4,7 +4,7 @@
 #include "core/error.h"
 #include "core/math.h"
 #include "primary_fixtures.h"
-#include "secondary/cloth_mesh.h"
+#include "secondary/offline/cloth_mesh.h"
 
 using namespace throng;
 using namespace throng::secondary;

@@ -8,8 +8,8 @@
 #include "core/error.h"
 #include "core/math.h"
 #include "primary_fixtures.h"
-#include "secondary/cloth_mesh.h"
-#include "secondary/cloth_sim.h"
+#include "secondary/offline/cloth_mesh.h"
+#include "secondary/offline/cloth_sim.h"
 
 using namespace throng;
 using namespace throng::secondary;

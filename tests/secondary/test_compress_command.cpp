@@ -7,7 +7,7 @@
 
 #include "cli_support.h"
 #include "core/file_io.h"
-#include "secondary/cloth_compress.h"
+#include "secondary/offline/cloth_compress.h"
 
 using namespace throng;
 

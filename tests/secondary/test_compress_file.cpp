@@ -5,9 +5,9 @@
 
 #include "chunk_patch.h"
 #include "cloth_fixtures.h"
+#include "core/binary_io.h"
 #include "core/error.h"
 #include "core/file_io.h"
-#include "secondary/binary_io.h"
 #include "test_support.h"
 
 using namespace throng;

@@ -5,7 +5,7 @@
 #include "cloth_fixtures.h"
 #include "core/error.h"
 #include "secondary/cloth_decoder.h"
-#include "secondary/cloth_refine.h"
+#include "secondary/offline/cloth_refine.h"
 
 using namespace throng;
 using namespace throng::secondary;

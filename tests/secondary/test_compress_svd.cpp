@@ -3,7 +3,7 @@
 
 #include "core/error.h"
 #include "core/rng.h"
-#include "secondary/cloth_svd.h"
+#include "secondary/offline/cloth_svd.h"
 
 using namespace throng;
 using namespace throng::secondary;

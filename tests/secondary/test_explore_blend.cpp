@@ -2,10 +2,10 @@
 // frame that crosses a merge edge than in any other frame (p95 of the largest vertex move).
 #include <doctest/doctest.h>
 
-#include "secondary/blend_motion.h"
-#include "secondary/explore.h"
-#include "secondary/explore_file.h"
-#include "secondary/garment.h"
+#include "secondary/offline/blend_motion.h"
+#include "secondary/offline/explore.h"
+#include "secondary/offline/explore_file.h"
+#include "secondary/offline/garment.h"
 
 using namespace throng;
 using namespace throng::secondary;

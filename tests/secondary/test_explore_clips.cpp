@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "secondary/clip_identity.h"
 #include "secondary/cloth_database.h"
-#include "secondary/explore_file.h"
+#include "secondary/offline/explore_file.h"
 #include "test_support.h"
 
 using namespace throng;

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "explore_fixtures.h"
-#include "secondary/toy_garment.h"
+#include "secondary/offline/toy_garment.h"
 
 using namespace throng;
 using namespace throng::secondary;

@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "explore_fixtures.h"
-#include "secondary/explore_file.h"
+#include "secondary/offline/explore_file.h"
 #include "test_support.h"
 
 using namespace throng;

@@ -7,10 +7,10 @@
 #include <string>
 #include <thread>
 
+#include "core/binary_io.h"
 #include "core/error.h"
-#include "secondary/binary_io.h"
-#include "secondary/explore_file.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/explore_file.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::secondary::mpi {
 namespace {

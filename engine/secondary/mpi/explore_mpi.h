@@ -6,8 +6,8 @@
 // the sequential order, so the graph is the threaded run's for the same budget and seed.
 #include <memory>
 
-#include "secondary/explore.h"
-#include "secondary/garment.h"
+#include "secondary/offline/explore.h"
+#include "secondary/offline/garment.h"
 
 namespace throng::secondary::mpi {
 

@@ -1,4 +1,4 @@
-#include "secondary/cloth_refine.h"
+#include "secondary/offline/cloth_refine.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "secondary/cloth_decoder.h"
-#include "secondary/worker_pool.h"
+#include "secondary/offline/worker_pool.h"
 
 namespace throng::secondary {
 namespace {

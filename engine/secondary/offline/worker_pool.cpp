@@ -1,4 +1,4 @@
-#include "secondary/worker_pool.h"
+#include "secondary/offline/worker_pool.h"
 
 namespace throng::secondary {
 

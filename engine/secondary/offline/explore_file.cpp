@@ -1,10 +1,10 @@
-#include "secondary/explore_file.h"
+#include "secondary/offline/explore_file.h"
 
 #include <algorithm>
 #include <numeric>
 
 #include "core/error.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::secondary {
 namespace {

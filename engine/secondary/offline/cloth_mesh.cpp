@@ -1,11 +1,11 @@
-#include "secondary/cloth_mesh.h"
+#include "secondary/offline/cloth_mesh.h"
 
 #include <cmath>
 #include <limits>
 
 #include "core/error.h"
 #include "core/math.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::secondary {
 namespace {

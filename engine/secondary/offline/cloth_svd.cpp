@@ -1,4 +1,4 @@
-#include "secondary/cloth_svd.h"
+#include "secondary/offline/cloth_svd.h"
 
 #include <algorithm>
 #include <atomic>

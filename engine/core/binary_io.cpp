@@ -1,4 +1,4 @@
-#include "secondary/binary_io.h"
+#include "core/binary_io.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 
-namespace throng::secondary {
+namespace throng {
 static_assert(std::endian::native == std::endian::little,
               "the chunk format is written little endian");
 
@@ -190,26 +190,7 @@ std::vector<uint8_t> ChunkWriter::bytes() const {
 }
 
 void ChunkWriter::writeFileAtomic(const std::filesystem::path& path) const {
-  std::filesystem::path tmp = path;
-  tmp += concat(".tmp-", ::getpid());
-  std::FILE* file = std::fopen(tmp.c_str(), "wb");
-  if (!file) fail(path.string(), ": cannot open for writing (", std::strerror(errno), ")");
-  bool ok = true;
-  emit([&](const uint8_t* p, size_t n) { ok = ok && std::fwrite(p, 1, n, file) == n; });
-  ok = (std::fflush(file) == 0) && ok;
-  ok = (::fsync(fileno(file)) == 0) && ok;
-  ok = (std::fclose(file) == 0) && ok;
-  if (!ok) {
-    const int err = errno;
-    std::remove(tmp.c_str());
-    fail(path.string(), ": write failed (", std::strerror(err), ")");
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    fail(path.string(), ": cannot rename temporary file into place (", ec.message(), ")");
-  }
+  throng::writeFileAtomic(path, [this](const ByteSink& sink) { emit(sink); });
 }
 
 // ---- reader ----------------------------------------------------------------------------
@@ -450,4 +431,4 @@ std::string readMagic(const std::filesystem::path& path) {
   return n == kMagicBytes ? std::string(magic, kMagicBytes) : std::string();
 }
 
-}  // namespace throng::secondary
+}  // namespace throng

@@ -1,4 +1,4 @@
-#include "secondary/cloth_compress.h"
+#include "secondary/offline/cloth_compress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include "core/error.h"
 #include "secondary/cloth_decoder.h"
-#include "secondary/cloth_refine.h"
-#include "secondary/cloth_svd.h"
+#include "secondary/offline/cloth_refine.h"
+#include "secondary/offline/cloth_svd.h"
 
 namespace throng::secondary {
 

@@ -1,9 +1,9 @@
 // The primary graph on disk: chunks of binary_io.h (versioned, checksummed, atomic writes).
 #include <numeric>
 
+#include "core/binary_io.h"
 #include "core/error.h"
-#include "secondary/binary_io.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::secondary {
 namespace {

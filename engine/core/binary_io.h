@@ -21,7 +21,7 @@
 
 #include <glm/glm.hpp>
 
-namespace throng::secondary {
+namespace throng {
 
 enum class ElementType : uint32_t {
   Bytes = 0,  // opaque records (elementBytes says how long)
@@ -222,4 +222,4 @@ std::vector<std::filesystem::path> removeStaleTemporaries(const std::filesystem:
 // The first 8 bytes of a file ("" when it is shorter), to dispatch on the file kind.
 std::string readMagic(const std::filesystem::path& path);
 
-}  // namespace throng::secondary
+}  // namespace throng

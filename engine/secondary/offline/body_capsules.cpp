@@ -1,4 +1,4 @@
-#include "secondary/body_capsules.h"
+#include "secondary/offline/body_capsules.h"
 
 #include <algorithm>
 #include <cctype>

@@ -13,9 +13,9 @@
 #include <memory>
 #include <vector>
 
-#include "secondary/expansion.h"
-#include "secondary/merge_metric.h"
-#include "secondary/secondary_graph.h"
+#include "secondary/offline/expansion.h"
+#include "secondary/offline/merge_metric.h"
+#include "secondary/offline/secondary_graph.h"
 
 namespace throng::secondary {
 

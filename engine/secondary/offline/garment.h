@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "secondary/clip_identity.h"
-#include "secondary/merge_metric.h"
+#include "secondary/offline/merge_metric.h"
 #include "secondary/secondary_types.h"
 
 namespace throng::secondary {

@@ -8,8 +8,8 @@
 // is met or `maxSteps` is spent. The decoder is unchanged.
 #include <cstdint>
 
-#include "secondary/cloth_compress.h"
 #include "secondary/cloth_database.h"
+#include "secondary/offline/cloth_compress.h"
 
 namespace throng::secondary {
 

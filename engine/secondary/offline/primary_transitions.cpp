@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::secondary {
 namespace {

@@ -18,7 +18,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "secondary/body_capsules.h"
+#include "secondary/offline/body_capsules.h"
 #include "secondary/secondary_types.h"
 
 namespace throng::secondary {
@@ -27,7 +27,7 @@ struct ClothSimOptions {
   uint32_t substeps = 10;   // per frame
   uint32_t iterations = 1;  // constraint sweeps per substep
   glm::vec3 gravity{0.0f, -9.81f, 0.0f};
-  float drag = 1.0f;               // 1/s: velocity against still air decays as exp(−drag · t)
+  float drag = 1.0f;  // 1/s: velocity against still air decays as exp(−drag · t)
   // 1/s, the cloth's own friction (0: none): each substep h, every constraint takes
   // 1 − exp(−internalDamping · h) of its two vertices' relative velocity away. Flutter dies out,
   // so explored states stay close enough to compress well (on the cape: max error 35 → 6 mm).

@@ -1,4 +1,4 @@
-#include "secondary/secondary_graph.h"
+#include "secondary/offline/secondary_graph.h"
 
 #include <algorithm>
 #include <cmath>

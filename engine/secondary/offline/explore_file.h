@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "secondary/binary_io.h"
+#include "core/binary_io.h"
 #include "secondary/clip_identity.h"
-#include "secondary/secondary_graph.h"
+#include "secondary/offline/secondary_graph.h"
 
 namespace throng::secondary {
 

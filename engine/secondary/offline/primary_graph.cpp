@@ -1,4 +1,4 @@
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 #include <algorithm>
 #include <cmath>

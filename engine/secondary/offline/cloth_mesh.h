@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "secondary/body_capsules.h"
+#include "secondary/offline/body_capsules.h"
 #include "secondary/secondary_types.h"
 
 namespace throng::secondary {

@@ -9,12 +9,11 @@
 #include <fstream>
 #include <string>
 
+#include "core/binary_io.h"
 #include "core/error.h"
-#include "secondary/binary_io.h"
 #include "test_support.h"
 
 using namespace throng;
-using namespace throng::secondary;
 
 namespace {
 constexpr std::string_view kMagic = "THRNGTST";

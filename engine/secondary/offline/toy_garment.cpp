@@ -1,4 +1,4 @@
-#include "secondary/toy_garment.h"
+#include "secondary/offline/toy_garment.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "secondary/secondary_graph.h"
+#include "secondary/offline/secondary_graph.h"
 
 namespace throng::secondary {
 

@@ -1,13 +1,13 @@
-#include "secondary/garment.h"
+#include "secondary/offline/garment.h"
 
 #include "anim/default_clips.h"
 #include "core/error.h"
 #include "core/rng.h"
-#include "secondary/body_capsules.h"
-#include "secondary/cloth_mesh.h"
-#include "secondary/cloth_sim.h"
-#include "secondary/primary_graph.h"
-#include "secondary/toy_garment.h"
+#include "secondary/offline/body_capsules.h"
+#include "secondary/offline/cloth_mesh.h"
+#include "secondary/offline/cloth_sim.h"
+#include "secondary/offline/primary_graph.h"
+#include "secondary/offline/toy_garment.h"
 
 namespace throng::secondary {
 namespace {

@@ -1,4 +1,4 @@
-#include "secondary/blend_motion.h"
+#include "secondary/offline/blend_motion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "secondary/cloth_decoder.h"
-#include "secondary/explore_file.h"
+#include "secondary/offline/explore_file.h"
 #include "synth/motion_cache.h"
 
 namespace throng::secondary {

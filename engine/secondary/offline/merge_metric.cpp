@@ -1,4 +1,4 @@
-#include "secondary/merge_metric.h"
+#include "secondary/offline/merge_metric.h"
 
 #include <algorithm>
 #include <cmath>

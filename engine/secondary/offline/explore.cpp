@@ -1,4 +1,4 @@
-#include "secondary/explore.h"
+#include "secondary/offline/explore.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "core/error.h"
-#include "secondary/worker_pool.h"
+#include "secondary/offline/worker_pool.h"
 
 namespace throng::secondary {
 

@@ -14,7 +14,7 @@
 #include "anim/clip.h"
 #include "anim/default_clips.h"
 #include "anim/motion_texture.h"
-#include "secondary/binary_io.h"
+#include "core/binary_io.h"
 #include "secondary/secondary_types.h"
 
 namespace throng::secondary {

@@ -1,4 +1,4 @@
-#include "secondary/cloth_sim.h"
+#include "secondary/offline/cloth_sim.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "core/math.h"
-#include "secondary/primary_graph.h"
+#include "secondary/offline/primary_graph.h"
 
 namespace throng::secondary {
 

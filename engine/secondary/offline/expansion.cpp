@@ -1,7 +1,7 @@
-#include "secondary/expansion.h"
+#include "secondary/offline/expansion.h"
 
+#include "core/binary_io.h"
 #include "core/error.h"
-#include "secondary/binary_io.h"
 
 namespace throng::secondary {
 namespace {
