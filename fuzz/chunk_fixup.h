@@ -1,5 +1,5 @@
 #pragma once
-// The .tsg/.tsc container (engine/secondary/binary_io.h) ends with a CRC-32 of everything
+// The .tsg/.tsc container (engine/core/binary_io.h) ends with a CRC-32 of everything
 // before it and records its total size in the header; random mutations would almost never
 // get past those checks. The harnesses rewrite both (and the "TEND" end marker) so the
 // fuzzer reaches the chunk table and the readers behind it.
