@@ -43,7 +43,7 @@ TEST_CASE("render: the storyboard scene renders every glyph's agent with its cli
                 " --policy published --slow " +
                 (throng::test::sourceDir() / "assets/walk_slow.bvh").string() + " --fast " +
                 (throng::test::sourceDir() / "assets/walk_fast.bvh").string() +
-                " --cache --lod --frames 2 --size 160x90 --validation --out " + out.string());
+                " --cache --lod --frames 2 --size 160x90 --validation --overwrite --out " + out.string());
   INFO(r.output);
   CHECK(r.exitCode == 0);
   CHECK(r.output.find("avoidance rule") != std::string::npos);
