@@ -9,7 +9,7 @@
 // lavapipe would execute both sides of a divergent branch).
 #include "shared_types.h"
 #include "motion_common.glsl"
-#include "cache_common.glsl"
+#include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };

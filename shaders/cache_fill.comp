@@ -8,7 +8,7 @@
 // CPU twin: synth::MotionCacheCpu::update.
 #include "shared_types.h"
 #include "motion_common.glsl"
-#include "cache_common.glsl"
+#include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
 #include "motion_texels.glsl"

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Motion cache, step 1 (one invocation per character): flag the speed bucket it needs this frame.
 #include "shared_types.h"
-#include "cache_common.glsl"
+#include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };

@@ -13,7 +13,7 @@ layout(push_constant) uniform Push { ClothAdvancePush push; };
 uint table(uint which, uint index) { return graph[graph[which] + index]; }
 
 uint characterNode(vec4 m) {
-  uint bucket = clothSpeedBucket(m.y, push.bucketWidth, push.bucketCount);
+  uint bucket = speedBucket(m.y, push.bucketWidth, push.bucketCount);
   uint first = table(kTableRunFirst, bucket);
   uint frames = table(kTableRunFirst, bucket + 1u) - first;
   if (frames == 0u) return kClothNone;

@@ -1,5 +1,6 @@
 // Cloth playback helpers shared by the cloth passes; mirrors engine/secondary/cloth_playback.cpp.
 #include "cloth_types.h"
+#include "speed_buckets.glsl"
 
 // The graph tables live in one uint buffer; its first words are the offsets of each table
 // (cloth_gpu.h, ClothGraphTable).
@@ -12,9 +13,6 @@ const uint kTableEdgeTarget = 5u;
 const uint kTableEdgeIsMerge = 6u;
 const uint kTableFirstStateAtNode = 7u;
 const uint kTableNaturalSuccessor = 8u;
-
-// synth::speedBucket (cache_common.glsl).
-uint clothSpeedBucket(float w, float width, uint bucketCount) { return min(uint(w / width + 0.5), bucketCount - 1u); }
 
 // Rotation about +y by `heading` (the yaw quaternion of the synthesis) applied to p.
 vec3 clothRotateY(float heading, vec3 p) {

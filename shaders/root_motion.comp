@@ -8,6 +8,7 @@
 // only when the cycle ends. CPU twin: anim::stepCharacter.
 #include "shared_types.h"
 #include "motion_common.glsl"
+#include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
 // The motion texels like the pose pass reads them (motion_texels.glsl): on lavapipe a texelFetch
@@ -56,7 +57,7 @@ void main() {
   place.z += scale * (-d.x * s + d.z * c);
   if (push.retargetEpoch > 0u) {
     float target = retargetSpeed(i, push.retargetEpoch, push.seed, push.minSpeedWeight, push.maxSpeedWeight);
-    m.z = push.bucketWidth > 0.0 ? min(floor(target / push.bucketWidth + 0.5) * push.bucketWidth, 1.0) : target;
+    m.z = push.bucketWidth > 0.0 ? quantizeSpeed(target, push.bucketWidth) : target;
   }
   float wraps = floor(phase1);
   m.x = phase1 - wraps;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "anim/speed_buckets.h"
 #include "core/error.h"
 #include "core/math.h"
 
@@ -95,9 +96,7 @@ float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo,
 void applyRetarget(uint32_t character, const SpeedRetarget& r, glm::vec4& motion) {
   if (r.epoch == 0) return;
   float target = retargetSpeed(character, r.epoch, r.seed, r.lo, r.hi);
-  motion.z = r.bucketWidth > 0.0f
-                 ? std::min(std::floor(target / r.bucketWidth + 0.5f) * r.bucketWidth, 1.0f)
-                 : target;
+  motion.z = r.bucketWidth > 0.0f ? quantizeSpeed(target, r.bucketWidth) : target;
 }
 
 float circleHeading(glm::vec2 p) {

@@ -10,22 +10,6 @@
 
 namespace throng::synth {
 
-uint32_t speedBucketCount(float bucketWidth) {
-  return static_cast<uint32_t>(std::lround(1.0f / bucketWidth)) + 1u;
-}
-
-uint32_t speedBucket(float w, float bucketWidth, uint32_t bucketCount) {
-  return std::min(static_cast<uint32_t>(w / bucketWidth + 0.5f), bucketCount - 1u);
-}
-
-float bucketSpeed(uint32_t bucket, float bucketWidth) {
-  return std::min(float(bucket) * bucketWidth, 1.0f);
-}
-
-float quantizeSpeed(float w, float bucketWidth) {
-  return bucketSpeed(speedBucket(w, bucketWidth, speedBucketCount(bucketWidth)), bucketWidth);
-}
-
 uint32_t cacheRowCount(const anim::MotionPair& pair) {
   const float longest = std::max(pair.slow.duration(), pair.fast.duration());
   const auto dense = static_cast<uint32_t>(std::ceil(kCacheRowsPerSecond * longest));

@@ -1,7 +1,7 @@
 #pragma once
-// The motion cache of the paper's §3.4, docs/design.md, resident on the GPU: key = speed weight quantized to a
-// bucket, data = the synthesized character-space clip at that speed (cacheRowCount poses evenly
-// spaced in phase, all joints). Lookup before synthesis, a miss synthesizes and
+// The motion cache of the paper's §3.4, docs/design.md, resident on the GPU: key = speed weight
+// quantized to a bucket, data = the synthesized character-space clip at that speed (cacheRowCount
+// poses evenly spaced in phase, all joints). Lookup before synthesis, a miss synthesizes and
 // inserts, FIFO eviction of the oldest entry when the byte budget is full. A character whose
 // bucket is resident does no blending and no hierarchy: A = M · cached pose.
 #include <cstdint>
@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "anim/motion_texture.h"
+#include "anim/speed_buckets.h"
 #include "crowd/crowd.h"
 #include "gpu/buffer.h"
 #include "gpu/program.h"
@@ -29,11 +30,11 @@ struct MotionCacheStats {
   uint64_t bytesUsed = 0, budgetBytes = 0;
 };
 
-uint32_t speedBucketCount(float bucketWidth);
-uint32_t speedBucket(float w, float bucketWidth, uint32_t bucketCount);
-float bucketSpeed(uint32_t bucket, float bucketWidth);
-// w rounded to its bucket's speed (what the cached pose is synthesized at).
-float quantizeSpeed(float w, float bucketWidth);
+// The cache keys characters by speed bucket (anim/speed_buckets.h).
+using anim::bucketSpeed;
+using anim::quantizeSpeed;
+using anim::speedBucket;
+using anim::speedBucketCount;
 
 // Rows per cache entry: row r is the pose at phase r / R, sampled like the pose pass samples
 // (continuously between motion-texture rows), and a cached character shows the row nearest its
