@@ -21,6 +21,9 @@ constexpr float kCmuMetresPerUnit = 0.056444f;  // (1/0.45) inch: the CMU ASF le
 constexpr float kUprightRatio = 0.7f;
 constexpr float kMinCycleSeconds = 0.4f;  // a fast run
 constexpr float kMaxCycleSeconds = 1.6f;  // a slow walk
+// Longest capture prepared: the loop search compares every start with every cycle length, so
+// its time grows with the clip's length (a 3-frame file with `Frame Time: 3333` is 2.8 hours).
+constexpr float kMaxClipSeconds = 600.0f;
 constexpr int kMaxFrames = 1 << 20;       // 9.7 hours at 30 fps
 
 std::string lower(std::string text) {
@@ -124,6 +127,9 @@ Clip wholeCycle(const Clip& clip, int first, LoopCut& cut) {
 
 Clip prepareClip(const RawClip& raw, const PairOptions& options, LoopCut& cut) {
   Clip clip = toClip(raw);
+  if (!(clip.duration() <= kMaxClipSeconds))
+    fail("clip ", clip.name, ": ", clip.frameCount, " frames of ", clip.frameTime, " s is ", clip.duration(),
+         " s; clips of up to ", kMaxClipSeconds, " s are prepared");
   float metresPerUnit = options.metresPerUnit > 0.0f ? options.metresPerUnit
                                                      : detectUnits(clip.skeleton).metresPerUnit;
   clip = resample(scaleToMetres(clip, metresPerUnit), options.frameTime);

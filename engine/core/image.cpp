@@ -35,19 +35,21 @@ namespace {
 // Every chunk's length must fit in the file: stb grows its buffer to a claimed IDAT length
 // before reading it, so a 200-byte file claiming 1.8 GB would allocate that much first.
 void checkPngChunks(const std::filesystem::path& path, const std::string& bytes) {
-  constexpr size_t kSignature = 8, kChunkOverhead = 12;  // length, type, CRC
+  constexpr size_t kSignature = 8, kHeader = 8, kCrc = 4;  // chunk: length, type, data, CRC
   if (bytes.size() < kSignature || bytes.compare(0, kSignature, "\x89PNG\r\n\x1a\n") != 0) return;
   size_t pos = kSignature;
-  while (pos + kChunkOverhead <= bytes.size()) {
+  // Every chunk whose length field is present is checked, the last one too: a chunk cut off
+  // before its CRC still makes the decoder allocate what its length claims.
+  while (pos + kHeader <= bytes.size()) {
     const auto byte = [&](size_t k) { return uint32_t(uint8_t(bytes[pos + k])); };
     const uint32_t length = byte(0) << 24 | byte(1) << 16 | byte(2) << 8 | byte(3);
     const std::string type = bytes.substr(pos + 4, 4);
-    const size_t left = bytes.size() - pos - kChunkOverhead;
-    if (length > left)
-      fail(path.string(), ": PNG chunk '", type, "' at byte ", pos, " claims ", length,
-           " bytes but ", left, " remain (truncated or corrupt file)");
+    const size_t left = bytes.size() - pos - kHeader;
+    if (size_t(length) + kCrc > left)
+      fail(path.string(), ": PNG chunk '", type, "' at byte ", pos, " claims ", length, " bytes and its CRC but ",
+           left, " remain (truncated or corrupt file)");
     if (type == "IEND") return;
-    pos += kChunkOverhead + length;
+    pos += kHeader + length + kCrc;
   }
 }
 }  // namespace

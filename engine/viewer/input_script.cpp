@@ -159,7 +159,8 @@ int keyCodeFromName(const std::string& name) {
   std::string n = upper(name);
   if (n.size() == 1 && n[0] >= 'A' && n[0] <= 'Z') return GLFW_KEY_A + (n[0] - 'A');
   if (n.size() == 1 && n[0] >= '0' && n[0] <= '9') return GLFW_KEY_0 + (n[0] - '0');
-  if (n.size() >= 2 && n[0] == 'F' &&
+  // F1..F12: at most two digits, so the number always fits an int.
+  if (n.size() >= 2 && n.size() <= 3 && n[0] == 'F' &&
       std::all_of(n.begin() + 1, n.end(), [](unsigned char c) { return std::isdigit(c) != 0; })) {
     int f = std::stoi(n.substr(1));
     if (f >= 1 && f <= 12) return GLFW_KEY_F1 + (f - 1);

@@ -14,11 +14,20 @@ ChunkReader openTsg(const std::filesystem::path& path) {
   return ChunkReader::openFile(path, kTsgMagic, kTsgVersion, kKind);
 }
 
+// The garment's name from a file's configuration, "" when it is missing or not a string (the
+// configuration is the file's own JSON: any shape must be read without throwing).
+std::string garmentName(const nlohmann::json& config) {
+  const auto garment = config.find("garment");
+  if (garment == config.end() || !garment->is_object()) return "";
+  const auto name = garment->find("name");
+  return name != garment->end() && name->is_string() ? name->get<std::string>() : "";
+}
+
 // Version 1 predates the identity: the cape was always explored on the built-in run.
 ClipPairIdentity readClips(const ChunkReader& r, const nlohmann::json& config,
                            const PrimaryGraph& primary) {
   if (r.version() >= 2) return readClipIdentityChunks(r);
-  if (config.value("garment", nlohmann::json::object()).value("name", "") == "toy")
+  if (garmentName(config) == "toy")
     return skeletonIdentity("toy run graph", primary.jointNames, primary.parents);
   return builtInRunIdentity();
 }
@@ -195,7 +204,7 @@ nlohmann::json exploreFileInfo(const std::filesystem::path& path, bool withHisto
   j["kind"] = "secondary graph";
   j["format_version"] = r.version();
   j["bytes"] = r.totalBytes();
-  j["garment"] = config.value("garment", nlohmann::json::object()).value("name", "");
+  j["garment"] = garmentName(config);
   const ClipPairIdentity clips = readClips(r, config, primary);
   j["clips"] = clips.name;
   j["clips_identity"] = clips.describe();

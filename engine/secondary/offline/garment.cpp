@@ -131,7 +131,8 @@ json completeGarmentConfig(const json& config) {
   return c;
 }
 
-Garment buildGarment(const json& config) {
+namespace {
+Garment buildGarmentFrom(const json& config) {
   const json c = completeGarmentConfig(config);
   if (c["name"] == "toy") {
     auto primary = std::make_shared<const PrimaryGraph>(makeToyPrimaryGraph());
@@ -155,7 +156,7 @@ Garment buildGarment(const json& config) {
   return garment;
 }
 
-Garment restoreGarment(const json& config, PrimaryGraph primary, ClothMesh mesh) {
+Garment restoreGarmentFrom(const json& config, PrimaryGraph primary, ClothMesh mesh) {
   json stored = config;
   // Graphs explored before the cape had internal damping resume without it.
   if (stored.is_object() && stored.contains("cape") && stored["cape"].is_object() &&
@@ -164,6 +165,26 @@ Garment restoreGarment(const json& config, PrimaryGraph primary, ClothMesh mesh)
   return finish(completeGarmentConfig(stored),
                 std::make_shared<const PrimaryGraph>(std::move(primary)),
                 std::make_shared<const ClothMesh>(std::move(mesh)));
+}
+
+}  // namespace
+
+// The configuration is user JSON (--garment-config, a .tsg's CONF chunk): a value of the wrong
+// type anywhere is an Error naming the garment configuration, never a JSON library exception.
+Garment buildGarment(const json& config) {
+  try {
+    return buildGarmentFrom(config);
+  } catch (const json::exception& e) {
+    fail("garment config: ", e.what());
+  }
+}
+
+Garment restoreGarment(const json& config, PrimaryGraph primary, ClothMesh mesh) {
+  try {
+    return restoreGarmentFrom(config, std::move(primary), std::move(mesh));
+  } catch (const json::exception& e) {
+    fail("garment config: ", e.what());
+  }
 }
 
 uint32_t initialNode(const Garment& garment) {
