@@ -16,6 +16,7 @@
 #include "crowd/crowd_sim.h"
 #include "crowd/trajectories.h"
 #include "gpu/context.h"
+#include "scene_storyboard.h"
 #include "storyboard/codec.h"
 #include "storyboard/legend.h"
 #include "storyboard/storyboard_placement.h"
@@ -24,9 +25,12 @@ namespace throng::tools {
 namespace {
 namespace sb = throng::storyboard;
 
+// The scenes' policy names (scene_storyboard.h), their aliases, and every policy in turn.
+const CLI::IsMember kPolicyNames({"anticipatory", "published", "none", "ttc", "rule", "all"});
+
 // Options shared by simulate and metrics.
 struct RunOptions {
-  std::vector<std::string> policies{"ttc"};
+  std::vector<std::string> policies{"anticipatory"};
   float seconds = 20.0f;
   float dt = 0.05f;
   float radius = 0.3f;
@@ -37,7 +41,7 @@ struct RunOptions {
   std::string device;
 
   void add(CLI::App* cmd, const char* policyHelp) {
-    cmd->add_option("--policy", policies, policyHelp);
+    cmd->add_option("--policy", policies, policyHelp)->check(kPolicyNames);
     cmd->add_option("--dt", dt, "Simulation step in seconds, 1/n of a second (default 0.05)");
     cmd->add_option("--radius", radius,
                     "Safe radius of each agent in metres, kept by avoidance; overlaps of it are "
@@ -62,9 +66,7 @@ struct RunOptions {
                    {crowd::SteerPolicy::None, crowd::SteerPolicy::Rule, crowd::SteerPolicy::Ttc});
         continue;
       }
-      std::optional<crowd::SteerPolicy> p = crowd::parseSteerPolicy(name);
-      if (!p) fail("--policy '", name, "': expected none, rule, ttc or all");
-      out.push_back(*p);
+      out.push_back(scenePolicy(name));
     }
     return out;
   }
@@ -107,16 +109,14 @@ std::unique_ptr<gpu::Context> makeContext(const RunOptions& o) {
 
 nlohmann::json runJson(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
   nlohmann::json j = nlohmann::json::parse(crowd::metricsJson(r.metrics));
-  j["policy"] = std::string(crowd::steerPolicyName(policy));
+  j["policy"] = std::string(policyName(policy));
   j["steps"] = r.steps;
   j["wall_seconds"] = r.wallSeconds;
   return j;
 }
 
 void printRun(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
-  std::printf(
-      "%s",
-      crowd::formatMetrics(concat("policy ", crowd::steerPolicyName(policy)), r.metrics).c_str());
+  std::printf("%s", crowd::formatMetrics(concat("policy ", policyName(policy)), r.metrics).c_str());
   std::printf("  %u steps in %.2f s wall\n", r.steps, r.wallSeconds);
 }
 
@@ -155,6 +155,8 @@ void runSimulate(const SimulateArgs& a) {
 
   std::unique_ptr<gpu::Context> context = makeContext(a.run);
   nlohmann::json doc;
+  doc["schema"] = "throng.crowd_simulate";
+  doc["version"] = 1;
   doc["storyboard"] = a.storyboard;
   doc["trajectories"] = a.trajectories;
   doc["agents"] = board.glyphs.size();
@@ -187,11 +189,14 @@ void addSimulate(CLI::App& parent) {
   cmd->add_option("--trajectories", args->trajectories,
                   "Tracked people: 'frame ped x y' text or ETH obsmat.txt")
       ->required();
-  cmd->add_option("--legend", args->legend, "Colour legend JSON (default: the default colours of docs/formats.md)");
+  cmd->add_option("--legend", args->legend,
+                  "Colour legend JSON (default: the default colours of docs/formats.md)");
   cmd->add_option("--seconds", args->run.seconds, "Seconds simulated (default 20)");
   cmd->add_option("--cell", args->cell, "Metres per storyboard pixel (default 0.5)");
   cmd->add_option("--jitter", args->jitter, "Random offset of each agent, +- metres (default 0.1)");
-  args->run.add(cmd, "Avoidance: none, rule (published), ttc (anticipatory) or all (default ttc)");
+  args->run.add(cmd,
+                "Avoidance: anticipatory, published, none or all (default anticipatory; ttc and "
+                "rule are aliases)");
   cmd->callback([args] { runSimulate(*args); });
 }
 
@@ -203,6 +208,8 @@ struct MetricsArgs {
 void runMetrics(MetricsArgs a) {
   std::unique_ptr<gpu::Context> context = makeContext(a.run);
   nlohmann::json doc;
+  doc["schema"] = "throng.crowd_metrics";
+  doc["version"] = 1;
   doc["device"] = context ? context->info().name : std::string("cpu twin");
   for (const std::string& file : a.trajectories) {
     const crowd::Trajectories tracks = crowd::loadTrajectories(file, a.run.trajectoryOptions());
@@ -251,7 +258,9 @@ void addMetrics(CLI::App& parent) {
                   "Tracked people files ('frame ped x y' or obsmat.txt)")
       ->required();
   cmd->add_option("--seconds", args->run.seconds, "Seconds replayed (default: the whole file)");
-  args->run.add(cmd, "Avoidance policies: none, rule, ttc or all (default all)");
+  args->run.add(cmd,
+                "Avoidance policies: anticipatory, published, none or all (default all; ttc and "
+                "rule are aliases)");
   cmd->callback([args] {
     if (args->run.seconds == 0.0f) args->run.seconds = 100000.0f;
     runMetrics(*args);
@@ -260,7 +269,7 @@ void addMetrics(CLI::App& parent) {
 
 struct BenchArgs {
   std::vector<uint32_t> agents{10000, 100000};
-  std::vector<std::string> policies{"rule", "ttc"};
+  std::vector<std::string> policies{"published", "anticipatory"};
   int steps = 10;
   float density = 0.5f;
   std::string numbering = "grid";
@@ -273,7 +282,10 @@ void addBench(CLI::App& parent) {
       "GPU time of one steering step (grid + avoidance), against the CPU twin on one thread");
   auto args = std::make_shared<BenchArgs>();
   cmd->add_option("--agents", args->agents, "Crowd sizes (default 10000 100000)");
-  cmd->add_option("--policy", args->policies, "Policies (default rule ttc)");
+  cmd->add_option("--policy", args->policies,
+                  "Policies: anticipatory, published, none or all (default published "
+                  "anticipatory; ttc and rule are aliases)")
+      ->check(kPolicyNames);
   cmd->add_option("--steps", args->steps, "Measured steps per row (median, default 10)");
   cmd->add_option("--density", args->density, "Agents per square metre (default 0.5)");
   cmd->add_option("--numbering", args->numbering,
@@ -306,9 +318,8 @@ void addBench(CLI::App& parent) {
         crowd::AvoidanceTiming t =
             crowd::benchmarkAvoidance(context, n, params, args->steps, args->density, numbering);
         std::printf("%-8s %9u %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %8.2f\n",
-                    std::string(crowd::steerPolicyName(policy)).c_str(), n, t.countMs, t.scanMs,
-                    t.scatterMs, t.gridMs, t.steerMs, t.totalMs, t.cpuMs,
-                    t.cpuMs / std::max(t.totalMs, 1e-6));
+                    std::string(policyName(policy)).c_str(), n, t.countMs, t.scanMs, t.scatterMs,
+                    t.gridMs, t.steerMs, t.totalMs, t.cpuMs, t.cpuMs / std::max(t.totalMs, 1e-6));
         std::fflush(stdout);
       }
   });

@@ -227,6 +227,8 @@ void addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* cmd =
       app.add_subcommand("render", "Render a crowd headless into PNG frames and/or an MP4 video");
+  // The method's defaults: the coverage LOD and the motion cache (--no-lod, --no-cache).
+  options->scene.lod = options->scene.cache = true;
   addSceneOptions(*cmd, options->scene);
   cmd->add_option("--frames", options->frames, "Number of frames")
       ->capture_default_str()

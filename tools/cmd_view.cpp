@@ -12,6 +12,8 @@ void addViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewOptions>();
   CLI::App* cmd =
       app.add_subcommand("view", "Fly around a crowd in a window (Vulkan + Dear ImGui)");
+  // The method's defaults: the coverage LOD and the motion cache (--no-lod, --no-cache).
+  options->scene.lod = options->scene.cache = true;
   addSceneOptions(*cmd, options->scene);
   cmd->add_option("--frames", options->frames,
                   "Show this many frames, then exit (0: until the window closes)")

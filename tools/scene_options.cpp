@@ -26,17 +26,48 @@ void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
       ->capture_default_str();
   command
       .add_option("--policy", o.policy,
-                  "Storyboard avoidance: anticipatory (TTC), published (the rule) or none")
-      ->capture_default_str();
-  command.add_option("--radius", o.radius, "Storyboard: safe radius of each agent in metres")
-      ->capture_default_str();
+                  "Avoidance of the storyboard and circle scenes: anticipatory (time to "
+                  "collision), published (the rule) or none; ttc and rule are accepted as "
+                  "aliases")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"anticipatory", "published", "none", "ttc", "rule"}));
+  command
+      .add_option("--radius", o.radius,
+                  "Storyboard and circle scenes: safe radius of each agent in metres")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01f, 10.0f));
   command.add_option(
       "--step-time", o.stepTime,
       "Storyboard: seconds per annotation step of the trajectories (default: by dataset)");
 }
+bool given(const SceneOptions& o, const char* name) {
+  return o.command && o.command->count(name) > 0;
+}
+
+// An option that changes nothing in the chosen scene is an error, not silently ignored.
+void checkUsedOptions(const SceneOptions& o) {
+  const std::string& scene = o.scenario.name;
+  const bool steered = o.storyboard() || steersCircle(o);
+  for (const char* name : {"--policy", "--radius"})
+    if (given(o, name) && !steered)
+      fail(name, ": steers the storyboard and circle scenes (without --speed-period), not '", scene,
+           "'");
+  if (o.storyboard() && given(o, "--characters"))
+    fail("-n/--characters: the storyboard's glyphs make the crowd; drop -n with --storyboard");
+  for (const char* name : {"--cell", "--jitter", "--step-time", "--legend"})
+    if (given(o, name) && !o.storyboard())
+      fail(name, ": belongs to the storyboard scene (--storyboard FILE), not '", scene, "'");
+  if (given(o, "--density") && scene != "random")
+    fail("--density: spaces the random scene, not '", scene, "'");
+  for (const char* name : {"--cache-budget", "--bucket-width"})
+    if (given(o, name) && !o.cache) fail(name, ": needs the motion cache (drop --no-cache)");
+  for (const char* name : {"--lod-mid-pixels", "--lod-near-pixels"})
+    if (given(o, name) && !o.lod) fail(name, ": needs the coverage LOD (drop --no-lod)");
+}
 }  // namespace
 
 void addSceneOptions(CLI::App& command, SceneOptions& o) {
+  o.command = &command;
   command
       .add_option("--scene", o.scenario.name,
                   "Scenario: random, circle or storyboard (with --storyboard)")
@@ -62,8 +93,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command.add_option("--size", o.size, "Image size WxH")->capture_default_str();
   command.add_option("--device", o.device, "Vulkan device by index or name (also $THRONG_DEVICE)");
   command.add_option("--dt", o.dt, "Simulated seconds per frame")->capture_default_str();
-  command.add_flag("--cache", o.cache,
-                   "Motion cache: characters share synthesized clips per speed bucket");
+  command
+      .add_flag("--cache,!--no-cache", o.cache,
+                "Motion cache: characters share synthesized clips per speed bucket")
+      ->capture_default_str();
   command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB")
       ->capture_default_str();
   command
@@ -74,17 +107,24 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       .add_option("--speed-period", o.speedPeriod,
                   "Seconds between speed changes (0: never; paper: 5)")
       ->capture_default_str();
-  command.add_flag("--lod", o.lod,
-                   "Pixel-coverage joint LOD: far characters synthesize and draw fewer joints");
+  command
+      .add_flag("--lod,!--no-lod", o.lod,
+                "Coverage LOD: characters small on screen synthesize and draw fewer joints")
+      ->capture_default_str();
   command.add_flag("--lod-tint", o.lodTint,
                    "With --lod, colour characters by level (green near, yellow mid, red far)");
   command
       .add_option("--lod-mid-pixels", o.lodMidPixels,
-                  "Torso sphere area (pixels) for the mid level")
-      ->capture_default_str();
+                  "Coverage LOD: projected standing height in pixels from which a character "
+                  "gets the mid level (torso, head, upper limbs)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0f, 1e9f));
   command
-      .add_option("--lod-near-pixels", o.lodNearPixels, "Limb sphere area (pixels) for all joints")
-      ->capture_default_str();
+      .add_option("--lod-near-pixels", o.lodNearPixels,
+                  "Coverage LOD: projected standing height in pixels from which a character "
+                  "gets every joint")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0f, 1e9f));
   addStoryboardSceneOptions(command, o.story);
   command.add_option("--trajectories-out", o.trajectoriesOut,
                      "Every agent's position per frame: FILE.txt in PedPy's 'id frame x y z' "
@@ -120,7 +160,7 @@ void validateSceneOptions(SceneOptions& o) {
   parseSize(o.size);
   if (!(o.lodMidPixels >= 0.0f && o.lodNearPixels >= 0.0f))
     fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
-  if (o.lodTint && !o.lod) fail("--lod-tint needs --lod");
+  if (o.lodTint && !o.lod) fail("--lod-tint: needs the coverage LOD (drop --no-lod)");
   if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
   if ((o.clothTint || o.clothFull) && o.cloth.empty())
     fail("--cloth-tint and --cloth-full need --cloth");
@@ -128,6 +168,7 @@ void validateSceneOptions(SceneOptions& o) {
   if (!o.trajectoriesOut.empty()) crowd::checkTrajectoryOutput(o.trajectoriesOut, 0, 0);
   // --storyboard alone picks the storyboard scene (--scene defaults to random).
   if (!o.story.storyboard.empty() && o.scenario.name == "random") o.scenario.name = "storyboard";
+  checkUsedOptions(o);
   if (o.storyboard()) {
     validateStoryboardScene(o);
   } else {

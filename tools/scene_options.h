@@ -50,12 +50,17 @@ struct SceneOptions {
   bool clothFull = false;  // every visible cape at full detail (no garment LOD)
   StoryboardSceneOptions story;
   std::string trajectoriesOut;  // every agent's position per frame (.txt PedPy or .csv)
+  // The command the options were parsed by (null when built in code): which options were given,
+  // so that one that does nothing in the chosen scene is an error.
+  const CLI::App* command = nullptr;
   bool storyboard() const { return scenario.name == "storyboard"; }
 };
 
 // The motion cache keeps a few small per-bucket buffers: --bucket-width may not make more.
 constexpr uint32_t kMaxSpeedBuckets = 4096;
 
+// `options` holds the defaults shown in help (render and view turn the coverage LOD and the
+// motion cache on before calling this; --no-lod and --no-cache turn them off).
 void addSceneOptions(CLI::App& command, SceneOptions& options);
 
 struct Size {

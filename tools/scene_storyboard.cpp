@@ -58,6 +58,18 @@ crowd::SteerPolicy scenePolicy(const std::string& name) {
   fail("--policy '", name, "': expected anticipatory, published or none");
 }
 
+std::string_view policyName(crowd::SteerPolicy policy) {
+  switch (policy) {
+    case crowd::SteerPolicy::Rule:
+      return "published";
+    case crowd::SteerPolicy::Ttc:
+      return "anticipatory";
+    case crowd::SteerPolicy::None:
+      break;
+  }
+  return "none";
+}
+
 void validateStoryboardScene(SceneOptions& o) {
   StoryboardSceneOptions& s = o.story;
   if (s.storyboard.empty() || s.trajectories.empty())
@@ -138,7 +150,7 @@ render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
                  placed.setBegin[3] - placed.setBegin[2], ", jump ",
                  placed.setBegin[4] - placed.setBegin[3], "; ", board.invalid.size(),
                  " invalid glyphs skipped) following ", sources.size(), " tracked people of ",
-                 s.trajectories, ", avoidance ", crowd::steerPolicyName(setup.avoidance.policy)));
+                 s.trajectories, ", avoidance ", policyName(setup.avoidance.policy)));
   return setup;
 }
 

@@ -16,7 +16,10 @@ namespace throng::tools {
 // Checks the storyboard options and reads the storyboard's size (sets options.story.extent);
 // throws Error naming the option or file.
 void validateStoryboardScene(SceneOptions& options);
-crowd::SteerPolicy scenePolicy(const std::string& name);  // published|rule, anticipatory|ttc, none
+// The one vocabulary of avoidance policies: anticipatory (time to collision), published (the
+// rule) and none; ttc and rule are accepted as aliases.
+crowd::SteerPolicy scenePolicy(const std::string& name);
+std::string_view policyName(crowd::SteerPolicy policy);
 
 // Loads the storyboard and the trajectories and builds the agents, their paths and the pairs.
 // `userClips`: the --slow/--fast pair for every action (null: the built-in pair per action).

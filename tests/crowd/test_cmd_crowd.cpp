@@ -36,7 +36,10 @@ TEST_CASE("throng crowd simulate: a storyboard on tracked paths, every policy, a
   CHECK(doc["sources"] == 2);
   REQUIRE(doc["runs"].size() == 3);
   CHECK(doc["runs"][0]["policy"] == "none");
-  CHECK(doc["runs"][2]["policy"] == "ttc");
+  CHECK(doc["runs"][1]["policy"] == "published");
+  CHECK(doc["runs"][2]["policy"] == "anticipatory");
+  CHECK(doc["schema"] == "throng.crowd_simulate");
+  CHECK(doc["version"] == 1);
   for (const auto& run : doc["runs"]) {
     CHECK(run["steps"] == 80);
     CHECK(run["speed_samples"].get<int>() == 4 * doc["agents"].get<int>());
@@ -47,14 +50,14 @@ TEST_CASE("throng crowd simulate: a storyboard on tracked paths, every policy, a
 TEST_CASE("throng crowd metrics: replays the people with the CPU twin") {
   auto dir = test::freshDirectory("crowd_metrics");
   auto tracks = writeTracks(dir);
-  test::CommandResult r =
-      test::runThrong("crowd metrics --trajectories " + tracks.string() + " --cpu --policy ttc");
+  test::CommandResult r = test::runThrong("crowd metrics --trajectories " + tracks.string() +
+                                          " --cpu --policy ttc");  // the alias
   REQUIRE_MESSAGE(r.exitCode == 0, r.output);
   CHECK(r.output.find(
             "2 people (2 span 2+ s), frame step 10 = 0.400 s, replay of 12 s on cpu twin") !=
         std::string::npos);
   CHECK(r.output.find("real people: 2 agents") != std::string::npos);
-  CHECK(r.output.find("policy ttc: 2 agents, 12 s") != std::string::npos);
+  CHECK(r.output.find("policy anticipatory: 2 agents, 12 s") != std::string::npos);
   CHECK(r.output.find("at body radius 0.2 m") != std::string::npos);
   CHECK(r.output.find("safe-radius (0.3 m) intrusions per agent-second") != std::string::npos);
 }
@@ -71,9 +74,15 @@ TEST_CASE("throng crowd: bad input is reported, not crashed on") {
     CHECK(r.exitCode == 1);
     CHECK(r.output.find("error: " + text) != std::string::npos);
   };
-  expectError("crowd simulate --storyboard " + board.string() + " --trajectories " +
-                  tracks.string() + " --policy boids",
-              "--policy 'boids': expected none, rule, ttc or all");
+  // An unknown policy is a usage error (exit 2) that lists the names.
+  test::CommandResult boids =
+      test::runThrong("crowd simulate --storyboard " + board.string() + " --trajectories " +
+                      tracks.string() + " --policy boids");
+  CAPTURE(boids.output);
+  CHECK(boids.exitCode == 2);
+  CHECK(boids.output.find(
+            "error: --policy: boids not in {anticipatory,published,none,ttc,rule,all}") !=
+        std::string::npos);
   expectError("crowd simulate --storyboard " + board.string() + " --trajectories " +
                   (dir / "none.txt").string(),
               (dir / "none.txt").string() + ": cannot open");

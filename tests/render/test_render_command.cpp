@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 constexpr const char* kGoldenArgs =
     "render --characters 50 --size 320x180 --seed 7 --frames 4 --camera closeup --eye 6,3.5,-9 "
-    "--validation";
+    "--validation --no-lod --no-cache";
 
 size_t fileCount(const fs::path& dir) {
   size_t n = 0;
@@ -74,7 +74,7 @@ TEST_CASE("render: bad options fail clearly and write nothing") {
       {"--slow /nonexistent/slow.bvh --fast /nonexistent/fast.bvh",
        "/nonexistent/slow.bvh: cannot open"},
       {"--slow only.bvh", "--slow and --fast must be given together"},
-      {"--frames 0", "--frames: expected 1..100000"},
+      {"--frames 0", "--frames: Value 0 not in range 1 to 100000"},
       {"--eye 1,2", "--eye: expected three numbers"},
       // 1e9 speed buckets made 4 GB per-bucket buffers (a crash); the count is bounded.
       {"--cache --bucket-width 1e-9",
@@ -84,6 +84,16 @@ TEST_CASE("render: bad options fail clearly and write nothing") {
       {"--fov 0", "--fov: expected 1..170 degrees, got 0"},
       {"--fov 170.5", "--fov: expected 1..170 degrees"},
       {"--fov nan", "--fov: expected 1..170 degrees"},
+      // Options that do nothing in the chosen scene.
+      {"--policy none", "--policy: steers the storyboard and circle scenes"},
+      {"--radius 0.5", "--radius: steers the storyboard and circle scenes"},
+      {"--scene circle --speed-period 1 --policy none", "not 'circle'"},
+      {"--scene circle --density 2", "--density: spaces the random scene, not 'circle'"},
+      {"--cell 2", "--cell: belongs to the storyboard scene"},
+      {"--no-cache --cache-budget 10", "--cache-budget: needs the motion cache"},
+      {"--no-lod --lod-mid-pixels 3", "--lod-mid-pixels: needs the coverage LOD"},
+      {"--no-lod --lod-tint", "--lod-tint: needs the coverage LOD"},
+      {"--policy boids", "--policy"},
   };
   for (const Case& c : cases) {
     test::CommandResult run = test::runThrong("render " + c.args + " --out " + out.string());
