@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
+#include "gpu/job_check.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
 #include "synth/synth_jobs.h"
@@ -68,7 +69,7 @@ std::vector<std::string> SplatJob::validate() const {
 }
 
 void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
-  synth::throwIfInvalid("SplatJob", validate());
+  gpu::throwIfInvalid("SplatJob", validate());
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   // The previous frame's resolve may still read the buffer: order the clear after it.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
+#include "gpu/job_check.h"
 #include "secondary/cloth_gpu_types.h"
 #include "synth/synth_jobs.h"
 
@@ -44,7 +45,7 @@ std::vector<std::string> ClothAdvanceJob::validate() const {
 }
 
 void ClothAdvanceJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) const {
-  synth::throwIfInvalid("ClothAdvanceJob", validate());
+  gpu::throwIfInvalid("ClothAdvanceJob", validate());
   if (crowd->count == 0) return;
   gpu_types::ClothAdvancePush push{};
   push.characterCount = crowd->count;
@@ -66,7 +67,7 @@ std::vector<std::string> ClothMarkJob::validate() const {
 }
 
 void ClothMarkJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) const {
-  synth::throwIfInvalid("ClothMarkJob", validate());
+  gpu::throwIfInvalid("ClothMarkJob", validate());
   // The previous frame's draw may still read these lists (same queue): wait for it, then reset.
   gpu::memoryBarrier(cmd, kDrawStages | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_TRANSFER_BIT);
@@ -129,7 +130,7 @@ std::vector<std::string> ClothDecodeJob::validate() const {
 }
 
 void ClothDecodeJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) const {
-  synth::throwIfInvalid("ClothDecodeJob", validate());
+  gpu::throwIfInvalid("ClothDecodeJob", validate());
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, cloth->mean),         gpu::storageBinding(1, cloth->bases),
       gpu::storageBinding(2, cloth->coefficients), gpu::storageBinding(3, cloth->levels),
@@ -154,7 +155,7 @@ std::vector<std::string> ClothDrawJob::validate() const {
 }
 
 void ClothDrawJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) const {
-  synth::throwIfInvalid("ClothDrawJob", validate());
+  gpu::throwIfInvalid("ClothDrawJob", validate());
   if (crowd->count == 0) return;
   gpu_types::ClothDrawPush push{crowd->count, cloth->vertexCount, kMergeBlendFrames,
                                 tintLevels ? gpu_types::kClothDrawTint : 0u};
@@ -199,7 +200,7 @@ std::vector<std::string> ClothSplatJob::validate() const {
 }
 
 void ClothSplatJob::record(VkCommandBuffer cmd, const ClothPrograms&) const {
-  synth::throwIfInvalid("ClothSplatJob", validate());
+  gpu::throwIfInvalid("ClothSplatJob", validate());
   gpu_types::ClothSplatPush push{crowd->count, 0u, 0u, 0u};
   gpu::Binding bindings[] = {
       gpu::storageBinding(0, *view),  // a storage buffer there (cloth_splat.comp says why)

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/math.h"
+#include "gpu/job_check.h"
 #include "synth/synth_jobs.h"
 
 namespace throng::synth {
@@ -266,7 +267,7 @@ std::vector<std::string> CoverageJob::validate() const {
 }
 
 void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
-  throwIfInvalid("CoverageJob", validate());
+  gpu::throwIfInvalid("CoverageJob", validate());
   const uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
   if (count == 0) return;
   const bool readJoints = joints && *joints, writeAreas = areas && *areas;

@@ -5,17 +5,11 @@
 #include "core/error.h"
 #include "core/math.h"
 #include "gpu/commands.h"
+#include "gpu/job_check.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
-
-void throwIfInvalid(const std::string& job, const std::vector<std::string>& problems) {
-  if (problems.empty()) return;
-  std::string message = job + " is invalid:";
-  for (const std::string& p : problems) message += "\n  - " + p;
-  throw Error(message);
-}
 
 namespace {
 // Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j,
@@ -95,7 +89,7 @@ std::vector<std::string> CacheJob::validate() const {
 }
 
 void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
-  throwIfInvalid("CacheJob", validate());
+  gpu::throwIfInvalid("CacheJob", validate());
   CachePush push{crowd->count, cache->rowCount, cache->capacity, cache->options.bucketWidth};
   push.slowFrames = motion->slowFrames;
   push.fastFrames = motion->fastFrames;
@@ -141,7 +135,7 @@ std::vector<std::string> RootMotionJob::validate() const {
 }
 
 void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
-  throwIfInvalid("RootMotionJob", validate());
+  gpu::throwIfInvalid("RootMotionJob", validate());
   if (programs.poseParents.size() != motion->jointCount ||  // the texel row width is baked in
       programs.poseTexelsInUniform != motion->texelsInUniform)
     fail("RootMotionJob: the programs were built for another motion pair (",
@@ -197,7 +191,7 @@ std::vector<std::string> PoseJob::validate() const {
 }
 
 void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
-  throwIfInvalid("PoseJob", validate());
+  gpu::throwIfInvalid("PoseJob", validate());
   if (programs.poseParents != motion->parentsHost ||
       programs.poseAnimatedOffsets != motion->animatedOffset ||
       programs.poseTexelsInUniform != motion->texelsInUniform)
@@ -262,7 +256,7 @@ std::vector<std::string> MaterializeCachedJob::validate() const {
 }
 
 void MaterializeCachedJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
-  throwIfInvalid("MaterializeCachedJob", validate());
+  gpu::throwIfInvalid("MaterializeCachedJob", validate());
   if (characterCount == 0) return;
   PosePush push{};
   push.characterCount = characterCount;

@@ -18,16 +18,16 @@ namespace throng::synth {
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram pose;
-  gpu::ComputeProgram poseMasked;      // the same with the coverage-LOD joint masks
+  gpu::ComputeProgram poseMasked;  // the same with the coverage-LOD joint masks
   gpu::ComputeProgram cacheLookup;
   gpu::ComputeProgram cacheInsert;
-  gpu::ComputeProgram cacheFill;       // specialized like `pose`
+  gpu::ComputeProgram cacheFill;  // specialized like `pose`
   gpu::ComputeProgram cacheClassify;
   gpu::ComputeProgram cacheArgs;
-  gpu::ComputeProgram poseCached;      // materializes A = M · cached pose (specialized: joint count)
-  gpu::ComputeProgram coverage;        // pixel-coverage LOD (coverage.h)
-  gpu::Buffer noList;                  // bindings for a pose pass over a plain range
-  std::vector<int32_t> poseParents;      // the skeleton `pose` was specialized for
+  gpu::ComputeProgram poseCached;    // materializes A = M · cached pose (specialized: joint count)
+  gpu::ComputeProgram coverage;      // pixel-coverage LOD (coverage.h)
+  gpu::Buffer noList;                // bindings for a pose pass over a plain range
+  std::vector<int32_t> poseParents;  // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
   bool poseTexelsInUniform = false;       // and where it reads the texels (motion_gpu.h)
   SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair);
@@ -35,12 +35,12 @@ struct SynthPrograms {
 
 // Eq. 10 on the GPU; twin: anim::stepCharacter.
 struct RootMotionJob {
-  const GpuMotionPair* motion = nullptr;        // input
-  const anim::MotionPair* clips = nullptr;      // input: cycle durations and travel
-  const crowd::CrowdBuffers* crowd = nullptr;   // input and output (updated in place)
+  const GpuMotionPair* motion = nullptr;       // input
+  const anim::MotionPair* clips = nullptr;     // input: cycle durations and travel
+  const crowd::CrowdBuffers* crowd = nullptr;  // input and output (updated in place)
   float dt = 0.0f;
   anim::Steering steering = anim::Steering::KeepHeading;
-  anim::SpeedRetarget retarget;                 // speed changes over time (epoch 0: none)
+  anim::SpeedRetarget retarget;  // speed changes over time (epoch 0: none)
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
@@ -48,12 +48,12 @@ struct RootMotionJob {
 
 // Blend + hierarchy + A = J·M on the GPU; twin: anim::poseCharacter.
 struct PoseJob {
-  const GpuMotionPair* motion = nullptr;        // input
-  const crowd::CrowdBuffers* crowd = nullptr;   // input
-  const gpu::Buffer* joints = nullptr;          // output: JointMatrix per character per joint
-  uint32_t firstCharacter = 0;                  // the chunk [first, first + count)
-  uint32_t characterCount = 0;                  // 0: every character from firstCharacter
-  VkDeviceSize jointsOffset = 0;                // where the chunk's output starts in `joints`
+  const GpuMotionPair* motion = nullptr;       // input
+  const crowd::CrowdBuffers* crowd = nullptr;  // input
+  const gpu::Buffer* joints = nullptr;         // output: JointMatrix per character per joint
+  uint32_t firstCharacter = 0;                 // the chunk [first, first + count)
+  uint32_t characterCount = 0;                 // 0: every character from firstCharacter
+  VkDeviceSize jointsOffset = 0;               // where the chunk's output starts in `joints`
   // Optional: pose only the chunk-local characters listed at characterList[listBase …] (their
   // number at listCounts[countIndex], the group count at dispatchArgs[argsOffset]).
   const gpu::Buffer* characterList = nullptr;
@@ -61,7 +61,7 @@ struct PoseJob {
   const gpu::Buffer* dispatchArgs = nullptr;
   uint32_t listBase = 0, countIndex = 0;
   VkDeviceSize argsOffset = 0;
-  const gpu::Buffer* masks = nullptr;           // optional input: CoverageMask per character (LOD)
+  const gpu::Buffer* masks = nullptr;  // optional input: CoverageMask per character (LOD)
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
@@ -71,13 +71,13 @@ struct PoseJob {
 // their poseSource entry). The frame does not need it: the renderer composes the same matrices;
 // tests and exports that want every matrix in one buffer do. Twin: MotionCacheCpu::pose.
 struct MaterializeCachedJob {
-  const crowd::CrowdBuffers* crowd = nullptr;   // input: placement and scale
-  const GpuMotionCache* cache = nullptr;        // input: the cached poses
-  const gpu::Buffer* poseSource = nullptr;      // input: per character, from the cache classify pass
-  const gpu::Buffer* joints = nullptr;          // output: JointMatrix per character per joint
+  const crowd::CrowdBuffers* crowd = nullptr;  // input: placement and scale
+  const GpuMotionCache* cache = nullptr;       // input: the cached poses
+  const gpu::Buffer* poseSource = nullptr;     // input: per character, from the cache classify pass
+  const gpu::Buffer* joints = nullptr;         // output: JointMatrix per character per joint
   uint32_t firstCharacter = 0, characterCount = 0;
   VkDeviceSize jointsOffset = 0;
-  const gpu::Buffer* masks = nullptr;           // optional: only the joints the LOD mask keeps
+  const gpu::Buffer* masks = nullptr;  // optional: only the joints the LOD mask keeps
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
@@ -86,15 +86,12 @@ struct MaterializeCachedJob {
 // The motion cache for this frame: lookup (per character), insert (FIFO, once per bucket) and
 // fill (synthesize fresh entries); then the classify pass points cached characters at it.
 struct CacheJob {
-  const GpuMotionPair* motion = nullptr;        // input
-  const crowd::CrowdBuffers* crowd = nullptr;   // input: speed weights
-  const GpuMotionCache* cache = nullptr;        // input and output
+  const GpuMotionPair* motion = nullptr;       // input
+  const crowd::CrowdBuffers* crowd = nullptr;  // input: speed weights
+  const GpuMotionCache* cache = nullptr;       // input and output
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
-
-// Throws Error listing every problem validate() found.
-void throwIfInvalid(const std::string& job, const std::vector<std::string>& problems);
 
 }  // namespace throng::synth
