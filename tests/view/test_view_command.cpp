@@ -81,9 +81,10 @@ TEST_CASE("view: the last frame without the panel is the headless render of the 
   CHECK(run.stats["height"] == 450);
   CHECK(run.stats["clock"] == "fixed");
   CHECK(run.stats["characters"] == 200);
-  CHECK(run.stats["activeJoints"] == 200 * run.stats["jointsPerCharacter"].get<int>());
   CHECK(run.stats["gpuMs"]["render"].get<double>() > 0.0);
-  CHECK(run.stats["cache"] == "off");
+  // The method's defaults: the coverage LOD and the motion cache, as in `throng render`.
+  CHECK(run.stats["lod"]["enabled"] == true);
+  CHECK(run.stats["cache"].is_object());
 
   ImageRgba8 actual = readPng(out / "view.png");
   const ImageRgba8& expected = headlessFrame();
@@ -138,8 +139,8 @@ TEST_CASE("view: a scripted drag orbits the camera about its target") {
   fs::path out = test::freshDirectory("view_orbit");
   writeText(out / "orbit.txt",
             "# 100 pixels to the right over 10 frames\ndrag 600 200 700 200 10\nwait 2\n");
-  ViewRun run =
-      runView(std::string(kScene) + " --frames 20 --input-script " + (out / "orbit.txt").string());
+  ViewRun run = runView(std::string(kScene) + " --frames 20 --no-lod --input-script " +
+                        (out / "orbit.txt").string());
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
@@ -196,9 +197,9 @@ TEST_CASE(
     "view: a respawn and periodic speed changes rebuild the crowd while frames are in flight") {
   fs::path out = test::freshDirectory("view_respawn");
   writeText(out / "respawn.txt", "wait 3\nrespawn 300 circle\nwait 3\n");
-  ViewRun run =
-      runView(std::string(kScene) + " --frames 12 --validation --speed-period 0.1 --input-script " +
-              (out / "respawn.txt").string());
+  ViewRun run = runView(std::string(kScene) +
+                        " --frames 12 --no-lod --validation --speed-period 0.1 --input-script " +
+                        (out / "respawn.txt").string());
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
