@@ -74,10 +74,11 @@ void lod(PanelControls& c, const PanelInfo& info) {
   ImGui::Checkbox("tint", &c.lodTint);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("green near, yellow mid, red far");
   ImGui::EndDisabled();
-  // Live: a character's part is active when its sphere covers at least this many pixels.
+  // Live: a character gets a level once its projected standing height reaches this many pixels.
   const ImGuiSliderFlags log = ImGuiSliderFlags_Logarithmic;
-  ImGui::SliderFloat("mid pixels", &c.lodMidPixels, 0.0f, 100000.0f, "torso %.0f px", log);
-  ImGui::SliderFloat("near pixels", &c.lodNearPixels, 0.0f, 100000.0f, "limbs %.0f px", log);
+  ImGui::SliderFloat("mid height", &c.lodMidPixels, 0.0f, 4096.0f, "mid from %.0f px tall", log);
+  ImGui::SliderFloat("near height", &c.lodNearPixels, 0.0f, 4096.0f, "all joints from %.0f px tall",
+                     log);
   const LodStats& s = info.lod;
   const double all = double(info.characters) * info.jointsPerCharacter;
   ImGui::Text("active joints %llu (%.1f%%)", static_cast<unsigned long long>(s.activeJoints),
