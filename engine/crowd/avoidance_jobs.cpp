@@ -6,16 +6,10 @@
 #include "core/error.h"
 #include "crowd/avoidance_types.h"
 #include "gpu/commands.h"
+#include "gpu/job_check.h"
 
 namespace throng::crowd {
 namespace {
-
-void throwIfInvalid(const std::string& job, const std::vector<std::string>& problems) {
-  if (problems.empty()) return;
-  std::string message = job + " is invalid:";
-  for (const std::string& p : problems) message += "\n  - " + p;
-  throw Error(message);
-}
 
 void requireBuffer(std::vector<std::string>& problems, const gpu::Buffer& buffer, VkDeviceSize need,
                    const char* name) {
@@ -171,7 +165,7 @@ std::vector<std::string> GridJob::validate() const {
 }
 
 void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
-  throwIfInvalid("GridJob", validate());
+  gpu::throwIfInvalid("GridJob", validate());
   const GridPush push = gridPush(*grid, crowd->count);
   // The previous step's scan may still read the counts.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
@@ -219,7 +213,7 @@ std::vector<std::string> AvoidanceJob::validate() const {
 }
 
 void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
-  throwIfInvalid("AvoidanceJob", validate());
+  gpu::throwIfInvalid("AvoidanceJob", validate());
   SteerPush push{};
   push.agentCount = crowd->count;
   push.step = frame.step;
@@ -267,7 +261,7 @@ std::vector<std::string> AdvanceJob::validate() const {
 }
 
 void AdvanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
-  throwIfInvalid("AdvanceJob", validate());
+  gpu::throwIfInvalid("AdvanceJob", validate());
   AdvancePush push{};
   push.agentCount = crowd->count;
   push.dt = dt;
