@@ -51,7 +51,8 @@ anim::LoopCut findLoop(const anim::RawClip& raw, const anim::UnitsGuess& units,
                        const ClipInfoOptions& options) {
   anim::Clip clip;
   try {
-    clip = anim::resample(anim::scaleToMetres(anim::toClip(raw), units.metresPerUnit), kLoopFrameTime);
+    clip =
+        anim::resample(anim::scaleToMetres(anim::toClip(raw), units.metresPerUnit), kLoopFrameTime);
   } catch (const Error& e) {
     fail(options.file, ": ", e.what());  // the resampler names the clip, not the file it came from
   }
@@ -59,7 +60,8 @@ anim::LoopCut findLoop(const anim::RawClip& raw, const anim::UnitsGuess& units,
   int maxFrames = std::min(options.maxFrames, clip.frameCount - 1);
   int minFrames = std::min(options.minFrames, maxFrames);
   if (minFrames < 2) {
-    fail(options.file, ": ", clip.frameCount, " frames at 30 fps is too short to search for a loop");
+    fail(options.file, ": ", clip.frameCount,
+         " frames at 30 fps is too short to search for a loop");
   }
   return anim::findBestLoop(clip, minFrames, maxFrames);
 }
@@ -73,6 +75,8 @@ nlohmann::json toJson(const anim::RawClip& raw, const anim::UnitsGuess& units,
     joints.push_back({{"name", joint.name}, {"parent", joint.parent}, {"channels", channels}});
   }
   nlohmann::json out = {
+      {"schema", "throng.clip_info"},
+      {"version", 1},
       {"file", options.file},
       {"joints", joints},
       {"jointCount", raw.skeleton.jointCount()},
@@ -85,8 +89,10 @@ nlohmann::json toJson(const anim::RawClip& raw, const anim::UnitsGuess& units,
         {"heightInUnits", tidy(units.heightInUnits)}}},
   };
   if (loop) {
-    out["loop"] = {{"start", loop->start},   {"end", loop->end},
-                   {"length", loop->length()}, {"error", tidy(loop->error)},
+    out["loop"] = {{"start", loop->start},
+                   {"end", loop->end},
+                   {"length", loop->length()},
+                   {"error", tidy(loop->error)},
                    {"frameTime", tidy(kLoopFrameTime)}};
   }
   return out;
@@ -104,9 +110,8 @@ void printText(const anim::RawClip& raw, const anim::UnitsGuess& units,
   std::printf("frames: %d\n", raw.frameCount);
   std::printf("frame time: %g s (%.1f fps, %.2f s)\n", raw.frameTime, 1.0 / raw.frameTime,
               raw.frameCount * double(raw.frameTime));
-  std::printf("units: %s (%g m per unit), standing height %.2f m (%g units)\n",
-              units.label.c_str(), units.metresPerUnit, units.heightInUnits * units.metresPerUnit,
-              units.heightInUnits);
+  std::printf("units: %s (%g m per unit), standing height %.2f m (%g units)\n", units.label.c_str(),
+              units.metresPerUnit, units.heightInUnits * units.metresPerUnit, units.heightInUnits);
   if (loop) {
     std::printf("loop (at 30 fps): frames %d..%d, length %d (%.2f s), error %.4f\n", loop->start,
                 loop->end, loop->length(), loop->length() * kLoopFrameTime, loop->error);
@@ -131,7 +136,8 @@ void runClipInfo(const ClipInfoOptions& options) {
 void addClipCommands(CLI::App& app) {
   CLI::App* clip = app.add_subcommand("clip", "Inspect motion-capture clips");
   clip->require_subcommand(1);
-  CLI::App* info = clip->add_subcommand("info", "Joints, frames, units and best loop of a BVH file");
+  CLI::App* info =
+      clip->add_subcommand("info", "Joints, frames, units and best loop of a BVH file");
   auto options = std::make_shared<ClipInfoOptions>();
   info->add_option("file", options->file, "BVH file")->required();
   info->add_flag("--json", options->json, "Print one JSON object");

@@ -358,6 +358,8 @@ void ViewSession::report() {
     std::printf("cloth (median, inside render): %.2f ms\n", stats_.clothMedianMs());
   if (o_.printStats) {
     nlohmann::json j;
+    j["schema"] = "throng.view_stats";
+    j["version"] = 1;
     j["frames"] = stats_.frames();
     j["width"] = extent.width;
     j["height"] = extent.height;

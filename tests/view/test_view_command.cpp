@@ -84,6 +84,8 @@ TEST_CASE("view: the last frame without the panel is the headless render of the 
   CHECK(run.stats["gpuMs"]["render"].get<double>() > 0.0);
   // The method's defaults: the coverage LOD and the motion cache, as in `throng render`.
   CHECK(run.stats["lod"]["enabled"] == true);
+  CHECK(run.stats["schema"] == "throng.view_stats");
+  CHECK(run.stats["version"] == 1);
   CHECK(run.stats["cache"].is_object());
 
   ImageRgba8 actual = readPng(out / "view.png");
