@@ -11,6 +11,8 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "crowd/circle_paths.h"
+#include "crowd/trajectory_writer.h"
+#include "progress.h"
 #include "scene_options.h"
 #include "scene_storyboard.h"
 
@@ -105,12 +107,23 @@ void runExport(ExportOptions& o, const CLI::App& command) {
     animations.push_back(anim::beginAnimation(pair, clips.slow.skeleton, o.scene.dt,
                                               "agent_" + std::to_string(agent)));
   synth::SpeedSchedule speeds = sceneSpeedSchedule(o.scene);
+  std::unique_ptr<crowd::TrajectoryWriter> trajectories;
+  if (!o.scene.trajectoriesOut.empty()) {
+    crowd::checkTrajectoryOutput(o.scene.trajectoriesOut, run.crowd().size(), uint64_t(o.frames));
+    trajectories = std::make_unique<crowd::TrajectoryWriter>(
+        o.scene.trajectoriesOut, 1.0 / double(o.scene.dt), std::vector<uint32_t>{});
+  }
+  Progress progress("export", o.frames);
   for (int f = 0; f < o.frames; ++f) {
     for (size_t k = 0; k < agents.size(); ++k)
       anim::appendPose(pair, run.crowd().placement[agents[k]], run.crowd().motion[agents[k]],
                        animations[k]);
+    if (trajectories) trajectories->addFrame(run.crowd().placement);
     run.step(o.scene.dt, speeds.advance(o.scene.dt));
+    progress.update(f + 1);
   }
+  progress.finish();
+  if (trajectories) trajectories->finish();
   if (extension == ".glb") {
     anim::writeGlb(out, animations);
   } else {
