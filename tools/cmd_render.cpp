@@ -115,6 +115,8 @@ void runRender(RenderOptions& o) {
     in.clothDb =
         std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(o.scene.cloth));
   in.clips = loadSceneClips(o.scene);
+  // Capes explored on another skeleton or clip pair would float: refuse them, naming both.
+  if (in.clothDb) secondary::checkClothClips(*in.clothDb, o.scene.cloth, in.clips);
   in.speeds = sceneSpeedSchedule(o.scene);
   in.camera = sceneCamera(o.scene);
   logInfo(concat("clips: ", in.clips.description));

@@ -13,6 +13,7 @@ std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const Scen
   if (!options.cloth.empty())
     scene->clothDb =
         std::make_unique<secondary::ClothDatabase>(secondary::readClothDatabase(options.cloth));
+  if (scene->clothDb) secondary::checkClothClips(*scene->clothDb, options.cloth, clips);
   scene->skeleton = clips.slow.skeleton;
   scene->clipDescription = clips.description;
   scene->pair = anim::makeMotionPair(clips.slow, clips.fast);

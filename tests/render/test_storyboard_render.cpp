@@ -33,7 +33,7 @@ TEST_CASE("render: the storyboard scene renders every glyph's agent with its cli
   // 81 glyphs in four actions: the four built-in clip pairs, one range each.
   CHECK(r.output.find("81 agents (walk 34, run 14, talk 4, jump 29") != std::string::npos);
   CHECK(r.output.find("rendered 3 frames of 81 characters") != std::string::npos);
-  CHECK(r.output.find("avoidance ttc") != std::string::npos);
+  CHECK(r.output.find("avoidance anticipatory") != std::string::npos);
   for (const char* name : {"frame_0000.png", "frame_0002.png"}) {
     throng::ImageRgba8 image = throng::readPng(out / name);
     CHECK(image.width == 160);
@@ -46,7 +46,7 @@ TEST_CASE("render: the storyboard scene renders every glyph's agent with its cli
                 " --cache --lod --frames 2 --size 160x90 --validation --overwrite --out " + out.string());
   INFO(r.output);
   CHECK(r.exitCode == 0);
-  CHECK(r.output.find("avoidance rule") != std::string::npos);
+  CHECK(r.output.find("avoidance published") != std::string::npos);
 }
 
 TEST_CASE("render: storyboard options that cannot work are refused before anything is written") {
@@ -65,7 +65,7 @@ TEST_CASE("render: storyboard options that cannot work are refused before anythi
       {"--storyboard " + board() + " --trajectories missing.txt",
        "--trajectories missing.txt: no such file"},
       {"--storyboard " + board() + " --trajectories " + board() + " --policy boids",
-       "--policy 'boids'"},
+       "--policy: boids not in"},
       {"--storyboard " + board() + " --trajectories " + board() + " --cell 0",
        "--cell: expected metres > 0"},
       {"--storyboard " + board() + " --trajectories " + board() + " --speed-period 5",
