@@ -33,13 +33,7 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
   SceneCrowd crowd(context, scene, clips);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  render::FrameTargets targets{target.color.get(),
-                               target.color.view(),
-                               target.depth.get(),
-                               target.depth.view(),
-                               size.width,
-                               size.height,
-                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  const render::FrameTargets targets = render::offscreenFrameTargets(target);
   secondary::ClothLayer cloth(context, db, crowd.crowd(), render::kColorFormat,
                               render::kDepthFormat, sceneClothOptions(scene));
 

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench_cloth.h"
+#include "bench_experiments.h"
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
@@ -19,10 +21,8 @@
 #include "render/offscreen_target.h"
 #include "scene_options.h"
 #include "stats.h"
-#include "synthesis_timer.h"
 #include "synth/cpu_synth.h"
-#include "bench_cloth.h"
-#include "bench_experiments.h"
+#include "synthesis_timer.h"
 
 namespace throng::tools {
 namespace {
@@ -60,8 +60,9 @@ crowd::Crowd benchCrowd(uint32_t n) {
 
 enum class Variant { Full, Lod, LodCache };
 
-Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& programs, const anim::MotionPair& pair,
-                      const anim::Skeleton& skeleton, uint32_t n, const BenchOptions& o, Variant variant) {
+Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& programs,
+                      const anim::MotionPair& pair, const anim::Skeleton& skeleton, uint32_t n,
+                      const BenchOptions& o, Variant variant) {
   crowd::Crowd crowd = benchCrowd(n);
   synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
   if (cache.enabled)
@@ -72,11 +73,13 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   crowd::ScenarioOptions scenario;
   scenario.characters = n;
   render::Camera view = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
-  synth::CoverageCamera camera = synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
+  synth::CoverageCamera camera =
+      synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
   SynthesisTimer timer(context);
   std::vector<double> ms;
   for (int f = 0; f < o.warmup + o.frames; ++f) {
-    double frameMs = timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
+    double frameMs =
+        timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
     if (f >= o.warmup) ms.push_back(frameMs);
   }
   const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache"};
@@ -85,11 +88,13 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames};
 }
 
-Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads, const BenchOptions& o) {
+Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads,
+                      const BenchOptions& o) {
   crowd::Crowd crowd = benchCrowd(n);
   std::vector<synth::JointMatrix> joints(size_t(n) * pair.jointCount());
   std::vector<double> ms;
-  int frames = n >= 100000 ? std::max(5, o.frames / 2) : o.frames;  // the slow baseline gets fewer frames
+  int frames =
+      n >= 100000 ? std::max(5, o.frames / 2) : o.frames;  // the slow baseline gets fewer frames
   for (int f = 0; f < 1 + frames; ++f) {
     auto start = std::chrono::steady_clock::now();
     synth::stepCrowdCpu(pair, crowd, kDt, threads);
@@ -97,11 +102,13 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
     auto end = std::chrono::steady_clock::now();
     if (f >= 1) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
   }
-  return {threads == 1 ? "cpu-1-thread" : concat("cpu-", threads, "-threads"), n, median(ms), 0.0, frames};
+  return {threads == 1 ? "cpu-1-thread" : concat("cpu-", threads, "-threads"), n, median(ms), 0.0,
+          frames};
 }
 
-Row benchRender(const gpu::Context& context, const synth::SynthPrograms& programs, const anim::MotionPair& pair,
-                const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant) {
+Row benchRender(const gpu::Context& context, const synth::SynthPrograms& programs,
+                const anim::MotionPair& pair, const anim::Skeleton& skeleton, const BenchOptions& o,
+                Variant variant) {
   Size size = parseSize(o.size);
   crowd::ScenarioOptions scenario;
   scenario.characters = o.renderCharacters;
@@ -114,8 +121,7 @@ Row benchRender(const gpu::Context& context, const synth::SynthPrograms& program
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
-                               size.width, size.height, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  const render::FrameTargets targets = render::offscreenFrameTargets(target);
   render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
@@ -125,8 +131,8 @@ Row benchRender(const gpu::Context& context, const synth::SynthPrograms& program
   for (int f = 0; f < o.warmup + o.frames; ++f) {
     timestamps.reset();
     gpu::beginCommands(cmd);
-    render::FrameTimestamps marks = render::recordCrowdFrame(cmd, context, programs, synth, renderer, camera,
-                                                             100.0f, targets, kDt, timestamps);
+    render::FrameTimestamps marks = render::recordCrowdFrame(
+        cmd, context, programs, synth, renderer, camera, 100.0f, targets, kDt, timestamps);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();
@@ -137,8 +143,8 @@ Row benchRender(const gpu::Context& context, const synth::SynthPrograms& program
     renderMs.push_back(t.renderMs);
   }
   const char* names[] = {"gpu-synthesis+render-", "gpu-lod+render-", "gpu-lod+cache+render-"};
-  return {concat(names[static_cast<int>(variant)], o.size), o.renderCharacters, median(synthMs), median(renderMs),
-          o.frames};
+  return {concat(names[static_cast<int>(variant)], o.size), o.renderCharacters, median(synthMs),
+          median(renderMs), o.frames};
 }
 
 const Row* findRow(const std::vector<Row>& rows, const std::string& variant, uint32_t n) {
@@ -155,9 +161,12 @@ void printTargetRatios(const std::vector<Row>& rows, unsigned threads) {
     if (r.variant != "gpu-synthesis") continue;
     const Row* cpu = findRow(rows, cpuMt, r.characters);
     const Row* cached = findRow(rows, "gpu-synthesis-lod+cache", r.characters);
-    if (cpu) std::printf("  %7u characters: gpu full vs %s %6.2fx", r.characters, cpuMt.c_str(), cpu->synthesisMs / r.synthesisMs);
+    if (cpu)
+      std::printf("  %7u characters: gpu full vs %s %6.2fx", r.characters, cpuMt.c_str(),
+                  cpu->synthesisMs / r.synthesisMs);
     if (cached && cpu)
-      std::printf(" | lod+cache vs gpu full %6.2fx, vs %s %6.2fx", r.synthesisMs / cached->synthesisMs, cpuMt.c_str(),
+      std::printf(" | lod+cache vs gpu full %6.2fx, vs %s %6.2fx",
+                  r.synthesisMs / cached->synthesisMs, cpuMt.c_str(),
                   cpu->synthesisMs / cached->synthesisMs);
     std::printf("\n");
   }
@@ -170,12 +179,17 @@ constexpr const char* kClothSkipped =
 // The caped frame against its target, and where its cloth time goes.
 void printClothRow(const ClothBenchResult& r, double targetMs) {
   const secondary::ClothStats& s = r.stats;
-  std::printf("  caped frame: %.2f ms median (min %.2f, max %.2f over %d frames), target < %.0f ms: %s\n",
-              r.frameMs, r.frameMsMin, r.frameMsMax, r.frames, targetMs, r.frameMs < targetMs ? "met" : "NOT met");
-  std::printf("  cloth passes %.2f ms: advance %.2f, mark %.2f, decode %.2f, far-cape splat %.2f, draw %.2f\n",
-              r.clothMs, r.advanceMs, r.markMs, r.decodeMs, r.splatMs, r.drawMs);
-  std::printf("  capes per level %u / %u / %u / %u (triangles … splatted), %u states decoded, %u demoted\n",
-              s.capes[0], s.capes[1], s.capes[2], s.capes[3], s.usedStates, s.demoted);
+  std::printf(
+      "  caped frame: %.2f ms median (min %.2f, max %.2f over %d frames), target < %.0f ms: %s\n",
+      r.frameMs, r.frameMsMin, r.frameMsMax, r.frames, targetMs,
+      r.frameMs < targetMs ? "met" : "NOT met");
+  std::printf(
+      "  cloth passes %.2f ms: advance %.2f, mark %.2f, decode %.2f, far-cape splat %.2f, draw "
+      "%.2f\n",
+      r.clothMs, r.advanceMs, r.markMs, r.decodeMs, r.splatMs, r.drawMs);
+  std::printf(
+      "  capes per level %u / %u / %u / %u (triangles … splatted), %u states decoded, %u demoted\n",
+      s.capes[0], s.capes[1], s.capes[2], s.capes[3], s.usedStates, s.demoted);
 }
 
 nlohmann::json clothJson(const ClothBenchResult& r, double targetMs) {
@@ -230,7 +244,8 @@ void runBench(BenchOptions& o) {
   std::vector<Row> rows;
   auto report = [&](const Row& r) {
     rows.push_back(r);
-    std::printf("%-34s %9u %14.3f %12.3f\n", r.variant.c_str(), r.characters, r.synthesisMs, r.renderMs);
+    std::printf("%-34s %9u %14.3f %12.3f\n", r.variant.c_str(), r.characters, r.synthesisMs,
+                r.renderMs);
     std::fflush(stdout);
   };
   std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
@@ -238,7 +253,8 @@ void runBench(BenchOptions& o) {
   for (uint32_t n : o.clothOnly ? std::vector<uint32_t>{} : o.counts) {
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Full));
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Lod));
-    report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::LodCache));
+    report(
+        benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::LodCache));
     report(benchCpuSynthesis(pair, n, 1, o));
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
@@ -284,8 +300,10 @@ void runBench(BenchOptions& o) {
   doc["cpuThreads"] = threads;
   doc["framesMeasured"] = o.frames;
   for (const Row& r : rows) {
-    doc["results"].push_back({{"variant", r.variant}, {"characters", r.characters},
-                              {"synthesisMsMedian", r.synthesisMs}, {"renderMsMedian", r.renderMs},
+    doc["results"].push_back({{"variant", r.variant},
+                              {"characters", r.characters},
+                              {"synthesisMsMedian", r.synthesisMs},
+                              {"renderMsMedian", r.renderMs},
                               {"frames", r.frames}});
   }
   if (cloth)
@@ -300,20 +318,27 @@ void runBench(BenchOptions& o) {
 
 void addBenchCommand(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "Measure synthesis (GPU vs CPU twin) and rendering speed");
+  CLI::App* cmd =
+      app.add_subcommand("bench", "Measure synthesis (GPU vs CPU twin) and rendering speed");
   cmd->add_option("--json", options->json, "Also write the results as JSON to this file");
-  cmd->add_option("--characters", options->counts, "Crowd sizes for the synthesis rows")->capture_default_str();
-  cmd->add_option("--frames", options->frames, "Measured frames per row (median reported)")->capture_default_str();
-  cmd->add_option("--warmup", options->warmup, "Frames run before measuring")->capture_default_str();
-  cmd->add_option("--render-characters", options->renderCharacters, "Crowd size of the render row")->capture_default_str();
+  cmd->add_option("--characters", options->counts, "Crowd sizes for the synthesis rows")
+      ->capture_default_str();
+  cmd->add_option("--frames", options->frames, "Measured frames per row (median reported)")
+      ->capture_default_str();
+  cmd->add_option("--warmup", options->warmup, "Frames run before measuring")
+      ->capture_default_str();
+  cmd->add_option("--render-characters", options->renderCharacters, "Crowd size of the render row")
+      ->capture_default_str();
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
-  cmd->add_option("--cloth", options->cloth,
-                  "Also time a whole frame of the render crowd wearing this .tsc's capes (--lod --cache)");
+  cmd->add_option(
+      "--cloth", options->cloth,
+      "Also time a whole frame of the render crowd wearing this .tsc's capes (--lod --cache)");
   cmd->add_flag("--cloth-only", options->clothOnly, "Only the caped-crowd row (needs --cloth)");
   cmd->add_flag("--quick", options->quick, "A few frames of 1000 characters (smoke test)");
   cmd->add_option("--experiments", options->experiments,
-                  "Also run the paper's experiments (cache vs N, hit rate vs bucket width) into this directory");
+                  "Also run the paper's experiments (cache vs N, hit rate vs bucket width) into "
+                  "this directory");
   cmd->callback([options] { runBench(*options); });
 }
 

@@ -140,13 +140,7 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   const synth::CrowdSynth& synth = scene.synth();
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  render::FrameTargets targets{target.color.get(),
-                               target.color.view(),
-                               target.depth.get(),
-                               target.depth.view(),
-                               size.width,
-                               size.height,
-                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  const render::FrameTargets targets = render::offscreenFrameTargets(target);
   const float groundExtent = sceneGroundExtent(o.scene);
   std::unique_ptr<secondary::ClothLayer> cloth;
   if (in.clothDb)

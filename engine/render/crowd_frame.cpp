@@ -5,6 +5,16 @@
 
 namespace throng::render {
 
+FrameTargets offscreenFrameTargets(const OffscreenTarget& target) {
+  return {target.color.get(),
+          target.color.view(),
+          target.depth.get(),
+          target.depth.view(),
+          target.width,
+          target.height,
+          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+}
+
 FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context,
                                  const synth::SynthPrograms& programs,
                                  const synth::CrowdSynth& synth, CrowdRenderer& renderer,

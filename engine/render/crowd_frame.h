@@ -5,6 +5,7 @@
 
 #include "gpu/timestamps.h"
 #include "render/crowd_renderer.h"
+#include "render/offscreen_target.h"
 #include "synth/crowd_synth.h"
 
 namespace throng::render {
@@ -17,6 +18,9 @@ struct FrameTargets {
   uint32_t width = 0, height = 0;
   VkImageLayout finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
 };
+
+// The offscreen target's images as the frame's targets, left ready for recordReadback.
+FrameTargets offscreenFrameTargets(const OffscreenTarget& target);
 
 struct FrameTimestamps {
   uint32_t start = 0, synthesized = 0, rendered = 0;
@@ -41,11 +45,14 @@ struct FrameHooks {
   std::function<void(VkCommandBuffer, const synth::CoverageCamera&, DrawParams&)> moreSynthesis;
 };
 
-FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context, const synth::SynthPrograms& programs,
-                                 const synth::CrowdSynth& synth, CrowdRenderer& renderer, const Camera& camera,
-                                 float groundExtent, const FrameTargets& targets, float dt, gpu::TimestampPool& timestamps,
-                                 uint32_t frameSlot = 0, const anim::SpeedRetarget& retarget = {},
-                                 bool tintLevels = false, const FrameHooks* hooks = nullptr);
+FrameTimestamps recordCrowdFrame(VkCommandBuffer cmd, const gpu::Context& context,
+                                 const synth::SynthPrograms& programs,
+                                 const synth::CrowdSynth& synth, CrowdRenderer& renderer,
+                                 const Camera& camera, float groundExtent,
+                                 const FrameTargets& targets, float dt,
+                                 gpu::TimestampPool& timestamps, uint32_t frameSlot = 0,
+                                 const anim::SpeedRetarget& retarget = {}, bool tintLevels = false,
+                                 const FrameHooks* hooks = nullptr);
 
 FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks);
 

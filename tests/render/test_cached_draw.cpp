@@ -15,17 +15,17 @@
 using namespace throng;
 
 namespace {
-ImageRgba8 renderFrames(gpu::Context& ctx, const synth::SynthPrograms& programs, synth::CrowdSynth& synth,
-                        const render::Camera& camera, int frames) {
+ImageRgba8 renderFrames(gpu::Context& ctx, const synth::SynthPrograms& programs,
+                        synth::CrowdSynth& synth, const render::Camera& camera, int frames) {
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 320, 180);
   gpu::TimestampPool timestamps(ctx, 8);
-  render::FrameTargets targets{target.color.get(), target.color.view(), target.depth.get(), target.depth.view(),
-                               target.width, target.height};
+  const render::FrameTargets targets = render::offscreenFrameTargets(target);
   for (int f = 0; f < frames; ++f) {
     timestamps.reset();
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      render::recordCrowdFrame(cmd, ctx, programs, synth, renderer, camera, 20.0f, targets, 1 / 30.0f, timestamps);
+      render::recordCrowdFrame(cmd, ctx, programs, synth, renderer, camera, 20.0f, targets,
+                               1 / 30.0f, timestamps);
       render::recordReadback(cmd, target);
     });
   }

@@ -59,13 +59,7 @@ Rendered run(render::SteeredCrowd& steered, int frames, float dt, const render::
   gpu::Context& ctx = test::gpuContext();
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
-  render::FrameTargets targets{target.color.get(),
-                               target.color.view(),
-                               target.depth.get(),
-                               target.depth.view(),
-                               width,
-                               height,
-                               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+  const render::FrameTargets targets = render::offscreenFrameTargets(target);
   gpu::TimestampPool timestamps(ctx, 8);
   for (int f = 0; f < frames; ++f) {
     timestamps.reset();
