@@ -138,9 +138,10 @@ int addCharacter(Model& model, Packer& pack, int boneMesh, int times, const Join
     const int p = a.skeleton.joints[size_t(j)].parent;
     if (p < 0) continue;
     model.nodes[size_t(first + p)].children.push_back(first + j);
-    if (!placement[size_t(j)] && glm::length(a.translation(0, j)) > 1e-4f)
-      model.nodes[size_t(first + p)].children.push_back(
-          addBoneNode(model, boneMesh, a.translation(0, j)));
+    if (!placement[size_t(j)] && glm::length(a.translation(0, j)) > 1e-4f) {
+      const int bone = addBoneNode(model, boneMesh, a.translation(0, j));  // may grow model.nodes
+      model.nodes[size_t(first + p)].children.push_back(bone);
+    }
   }
   for (int j = 0; j < a.jointCount(); ++j) {
     std::vector<float> rotations, translations;
