@@ -3,11 +3,12 @@
 // Kinematic integration of the steering output: position += velocity · dt for active agents.
 // CPU twin: crowd::advanceCpu. (The render path moves characters by root motion instead.)
 #include "crowd_types.h"
+#include "crowd_bindings.h"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) buffer Placement { vec4 placement[]; };
-layout(std430, binding = 1) readonly buffer Steer { vec4 steer[]; };
-layout(std430, binding = 2) readonly buffer Goals { vec4 goals[]; };
+layout(std430, binding = kAdvanceBindingPlacement) buffer Placement { vec4 placement[]; };
+layout(std430, binding = kAdvanceBindingSteer) readonly buffer Steer { vec4 steer[]; };
+layout(std430, binding = kAdvanceBindingGoals) readonly buffer Goals { vec4 goals[]; };
 layout(push_constant) uniform Push { AdvancePush push; };
 
 void main() {

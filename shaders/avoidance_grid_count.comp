@@ -5,13 +5,14 @@
 // atomic's return value, so pass 3 needs no second atomic and no per-cell sort).
 // CPU twin: crowd::buildGridCpu.
 #include "crowd_types.h"
+#include "crowd_bindings.h"
 #include "avoidance_common.glsl"
 
 layout(local_size_x = 64) in;
 // Read as texels: lavapipe gathers a texel for all lanes, loops over the lanes for a storage load.
-layout(binding = 0) uniform samplerBuffer placementTexels;
-layout(std430, binding = 1) writeonly buffer CellRank { uint64_t cellRank[]; };
-layout(std430, binding = 2) buffer Counts { uint counts[]; };
+layout(binding = kGridCountBindingPlacement) uniform samplerBuffer placementTexels;
+layout(std430, binding = kGridCountBindingCellRank) writeonly buffer CellRank { uint64_t cellRank[]; };
+layout(std430, binding = kGridCountBindingCounts) buffer Counts { uint counts[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
 void main() {

@@ -10,14 +10,15 @@
 // lavapipe a workgroup is one thread's loop, so this single pass (one barrier) beats a
 // multi-pass tree scan whose cost is in the passes and barriers.
 #include "crowd_types.h"
+#include "crowd_bindings.h"
 
 layout(local_size_x = 256) in;
 // Four counts per texel (read with one gather for all lanes on lavapipe, where a storage load
 // loops over them), four starts per 64-bit pair. The table has a power-of-two number of cells,
 // at least 4 per thread.
-layout(binding = 0) uniform usamplerBuffer countTexels;
-layout(std430, binding = 1) writeonly buffer Starts { u64vec2 starts[]; };
-layout(std430, binding = 1) writeonly buffer StartsEnd { uint startsEnd[]; };
+layout(binding = kGridScanBindingCounts) uniform usamplerBuffer countTexels;
+layout(std430, binding = kGridScanBindingStarts) writeonly buffer Starts { u64vec2 starts[]; };
+layout(std430, binding = kGridScanBindingStarts) writeonly buffer StartsEnd { uint startsEnd[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
 shared uint subgroupTotal[kScanThreads];

@@ -5,16 +5,17 @@
 // gets the agent's index and a copy of its position and velocity, sorted[k] = (x, z, vx, vz),
 // which the neighbour scan reads (so the steering pass's writes never race with its reads).
 #include "crowd_types.h"
+#include "crowd_bindings.h"
 
 layout(local_size_x = 64) in;
 // Reads as texels (one gather for all lanes on lavapipe, where a storage load loops over them);
 // writes in 64-bit words (lavapipe stores a vector one component per lane at a time).
-layout(binding = 0) uniform samplerBuffer placementTexels;  // (x, y, z, heading)
-layout(binding = 1) uniform samplerBuffer steerTexels;      // (vx, vz, speed, flags)
-layout(binding = 2) uniform usamplerBuffer cellRankTexels;  // (cell, rank)
-layout(binding = 3) uniform usamplerBuffer startTexels;
-layout(std430, binding = 4) writeonly buffer SortedIndex { uint sortedIndex[]; };
-layout(std430, binding = 5) writeonly buffer Sorted { u64vec2 sorted[]; };
+layout(binding = kGridScatterBindingPlacement) uniform samplerBuffer placementTexels;  // (x, y, z, heading)
+layout(binding = kGridScatterBindingSteer) uniform samplerBuffer steerTexels;  // (vx, vz, speed, flags)
+layout(binding = kGridScatterBindingCellRank) uniform usamplerBuffer cellRankTexels;  // (cell, rank)
+layout(binding = kGridScatterBindingStarts) uniform usamplerBuffer startTexels;
+layout(std430, binding = kGridScatterBindingSortedIndex) writeonly buffer SortedIndex { uint sortedIndex[]; };
+layout(std430, binding = kGridScatterBindingSorted) writeonly buffer Sorted { u64vec2 sorted[]; };
 layout(push_constant) uniform Push { GridPush push; };
 
 void main() {

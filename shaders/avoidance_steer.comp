@@ -25,30 +25,31 @@
 // unrolled gather, where a storage-buffer load is a loop over the lanes with a branch per lane
 // and component. Stores stay storage-buffer writes, as few and as wide as possible.
 #include "crowd_types.h"
+#include "crowd_bindings.h"
 #include "avoidance_common.glsl"
 #include "words64.glsl"
 
 layout(local_size_x = 64) in;
-layout(constant_id = 0) const uint kPolicy = kSteerPolicyTtc;
-layout(constant_id = 1) const int kRange = 1;     // columns scanned each side: ceil(sensing / width)
-layout(constant_id = 2) const uint kChunk = 8u;   // candidates per round: min(subgroup size, 32)
-layout(constant_id = 3) const int kRangeZ = 1;    // rows scanned each side: ceil(sensing / depth)
+layout(constant_id = kSteerConstantPolicy) const uint kPolicy = kSteerPolicyTtc;
+layout(constant_id = kSteerConstantRange) const int kRange = 1;  // columns scanned each side: ceil(sensing / width)
+layout(constant_id = kSteerConstantChunk) const uint kChunk = 8u;  // candidates per round: min(subgroup size, 32)
+layout(constant_id = kSteerConstantRangeZ) const int kRangeZ = 1;  // rows scanned each side: ceil(sensing / depth)
 const int kRows = 2 * kRangeZ + 1;
 const int kRuns = 2 * kRows;                      // a row's columns may wrap around the table
 const uint kStartValues = 4u * uint(kRows);       // grid table entries a round reads
 const uint kStartLoads = (kStartValues + kChunk - 1u) / kChunk;
 
-layout(std430, binding = 0) buffer Placement { vec4 placement[]; };
-layout(std430, binding = 1) writeonly buffer Motion { vec4 motion[]; };
-layout(binding = 2) uniform samplerBuffer goalTexels;
-layout(std430, binding = 3) writeonly buffer SteerWords { u64vec2 steerWords[]; };  // steer, stored in words
-layout(binding = 4) uniform usamplerBuffer startTexels;
-layout(binding = 5) uniform usamplerBuffer sortedIndexTexels;
-layout(binding = 6) uniform samplerBuffer sortedTexels;
+layout(std430, binding = kSteerBindingPlacement) buffer Placement { vec4 placement[]; };
+layout(std430, binding = kSteerBindingMotion) writeonly buffer Motion { vec4 motion[]; };
+layout(binding = kSteerBindingGoals) uniform samplerBuffer goalTexels;
+layout(std430, binding = kSteerBindingSteer) writeonly buffer SteerWords { u64vec2 steerWords[]; };  // steer, stored in words
+layout(binding = kSteerBindingStarts) uniform usamplerBuffer startTexels;
+layout(binding = kSteerBindingSortedIndex) uniform usamplerBuffer sortedIndexTexels;
+layout(binding = kSteerBindingSorted) uniform samplerBuffer sortedTexels;
 // The rule's own heading and wait counter, read before this invocation writes them (texel reads
 // of placement and steer; no other invocation writes agent i).
-layout(binding = 7) uniform samplerBuffer placementTexels;
-layout(binding = 8) uniform samplerBuffer steerTexels;
+layout(binding = kSteerBindingPlacementTexels) uniform samplerBuffer placementTexels;
+layout(binding = kSteerBindingSteerTexels) uniform samplerBuffer steerTexels;
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it evaluates.

@@ -5,13 +5,14 @@
 // the others. A source's vectors loop: past its end the agent starts over from where it is.
 // CPU twin: crowd::writeGoals (AgentPaths::waypoint).
 #include "crowd_types.h"
+#include "crowd_bindings.h"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer AgentStart { vec4 agentStart[]; };  // start x, z, rotation cos, sin
-layout(std430, binding = 1) readonly buffer AgentInfo { uvec4 agentInfo[]; };   // source, first second, last second, max speed bits
-layout(std430, binding = 2) readonly buffer SourceRange { uvec2 sourceRange[]; };  // first cumulative entry, vector count n
-layout(std430, binding = 3) readonly buffer Cumulative { vec2 cumulative[]; };     // per source: n + 1 partial sums
-layout(std430, binding = 4) writeonly buffer Goals { vec4 goals[]; };
+layout(std430, binding = kGoalsBindingAgentStart) readonly buffer AgentStart { vec4 agentStart[]; };  // start x, z, rotation cos, sin
+layout(std430, binding = kGoalsBindingAgentInfo) readonly buffer AgentInfo { uvec4 agentInfo[]; };  // source, first second, last second, max speed bits
+layout(std430, binding = kGoalsBindingSourceRange) readonly buffer SourceRange { uvec2 sourceRange[]; };  // first cumulative entry, vector count n
+layout(std430, binding = kGoalsBindingCumulative) readonly buffer Cumulative { vec2 cumulative[]; };  // per source: n + 1 partial sums
+layout(std430, binding = kGoalsBindingGoals) writeonly buffer Goals { vec4 goals[]; };
 layout(push_constant) uniform Push { GoalPush push; };
 
 void main() {

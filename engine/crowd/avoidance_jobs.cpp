@@ -7,6 +7,7 @@
 #include "crowd/avoidance_types.h"
 #include "gpu/commands.h"
 #include "gpu/job_check.h"
+#include "shaders/crowd_bindings.h"
 
 namespace throng::crowd {
 namespace {
@@ -108,8 +109,11 @@ AvoidancePrograms::AvoidancePrograms(const gpu::Context& context)
 const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, glm::ivec2 range) const {
   std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range.x, range.y}];
   if (!program) {
-    const uint32_t specialization[] = {uint32_t(policy), uint32_t(range.x), chunk_,
-                                       uint32_t(range.y)};
+    uint32_t specialization[gpu_types::kSteerConstantCount] = {};
+    specialization[gpu_types::kSteerConstantPolicy] = uint32_t(policy);
+    specialization[gpu_types::kSteerConstantRange] = uint32_t(range.x);
+    specialization[gpu_types::kSteerConstantChunk] = chunk_;
+    specialization[gpu_types::kSteerConstantRangeZ] = uint32_t(range.y);
     program =
         std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
   }
@@ -171,23 +175,26 @@ void GridJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   vkCmdFillBuffer(cmd, grid->counts.get(), 0, VkDeviceSize(grid->table.cellCount) * 4, 0);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  const gpu::Binding count[] = {gpu::uniformTexelBinding(0, crowd->placementTexels),
-                                gpu::storageBinding(1, grid->cellRank),
-                                gpu::storageBinding(2, grid->counts)};
+  const gpu::Binding count[] = {
+      gpu::uniformTexelBinding(gpu_types::kGridCountBindingPlacement, crowd->placementTexels),
+      gpu::storageBinding(gpu_types::kGridCountBindingCellRank, grid->cellRank),
+      gpu::storageBinding(gpu_types::kGridCountBindingCounts, grid->counts)};
   gpu::dispatch(cmd, programs.count, count, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scan[] = {gpu::uniformTexelBinding(0, grid->countTexels),
-                               gpu::storageBinding(1, grid->starts)};
+  const gpu::Binding scan[] = {
+      gpu::uniformTexelBinding(gpu_types::kGridScanBindingCounts, grid->countTexels),
+      gpu::storageBinding(gpu_types::kGridScanBindingStarts, grid->starts)};
   gpu::dispatch(cmd, programs.scan, scan, push, gpu_types::kScanThreads);
   if (timestamps) timestamps->write(cmd);
   gpu::computeToComputeBarrier(cmd);
-  const gpu::Binding scatter[] = {gpu::uniformTexelBinding(0, crowd->placementTexels),
-                                  gpu::uniformTexelBinding(1, agents->steerTexels),
-                                  gpu::uniformTexelBinding(2, grid->cellRankTexels),
-                                  gpu::uniformTexelBinding(3, grid->startTexels),
-                                  gpu::storageBinding(4, grid->sortedIndex),
-                                  gpu::storageBinding(5, grid->sorted)};
+  const gpu::Binding scatter[] = {
+      gpu::uniformTexelBinding(gpu_types::kGridScatterBindingPlacement, crowd->placementTexels),
+      gpu::uniformTexelBinding(gpu_types::kGridScatterBindingSteer, agents->steerTexels),
+      gpu::uniformTexelBinding(gpu_types::kGridScatterBindingCellRank, grid->cellRankTexels),
+      gpu::uniformTexelBinding(gpu_types::kGridScatterBindingStarts, grid->startTexels),
+      gpu::storageBinding(gpu_types::kGridScatterBindingSortedIndex, grid->sortedIndex),
+      gpu::storageBinding(gpu_types::kGridScatterBindingSorted, grid->sorted)};
   gpu::dispatch(cmd, programs.scatter, scatter, push, crowd->count);
   if (timestamps) timestamps->write(cmd);
 }
@@ -240,15 +247,16 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
     push.setSlow[k] = sets[size_t(k)].slow;
     push.setFast[k] = sets[size_t(k)].fast;
   }
-  const gpu::Binding bindings[] = {gpu::storageBinding(0, crowd->placement),
-                                   gpu::storageBinding(1, crowd->motion),
-                                   gpu::uniformTexelBinding(2, agents->goalTexels),
-                                   gpu::storageBinding(3, agents->steer),
-                                   gpu::uniformTexelBinding(4, grid->startTexels),
-                                   gpu::uniformTexelBinding(5, grid->sortedIndexTexels),
-                                   gpu::uniformTexelBinding(6, grid->sortedTexels),
-                                   gpu::uniformTexelBinding(7, crowd->placementTexels),
-                                   gpu::uniformTexelBinding(8, agents->steerTexels)};
+  const gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kSteerBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kSteerBindingMotion, crowd->motion),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingGoals, agents->goalTexels),
+      gpu::storageBinding(gpu_types::kSteerBindingSteer, agents->steer),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingStarts, grid->startTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingSortedIndex, grid->sortedIndexTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingSorted, grid->sortedTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingPlacementTexels, crowd->placementTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingSteerTexels, agents->steerTexels)};
   gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
                 crowd->count);
 }
@@ -265,9 +273,10 @@ void AdvanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) 
   AdvancePush push{};
   push.agentCount = crowd->count;
   push.dt = dt;
-  const gpu::Binding bindings[] = {gpu::storageBinding(0, crowd->placement),
-                                   gpu::storageBinding(1, agents->steer),
-                                   gpu::storageBinding(2, agents->goals)};
+  const gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kAdvanceBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kAdvanceBindingSteer, agents->steer),
+      gpu::storageBinding(gpu_types::kAdvanceBindingGoals, agents->goals)};
   gpu::dispatch(cmd, programs.advance, bindings, push, crowd->count);
 }
 

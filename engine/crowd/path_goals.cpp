@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "crowd/avoidance_types.h"
+#include "shaders/crowd_bindings.h"
 
 namespace throng::crowd {
 
@@ -61,9 +62,11 @@ void GoalJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) con
   push.agentCount = agents->count;
   push.second = second;
   const gpu::Binding bindings[] = {
-      gpu::storageBinding(0, paths->agentStart), gpu::storageBinding(1, paths->agentInfo),
-      gpu::storageBinding(2, paths->sourceRange), gpu::storageBinding(3, paths->cumulative),
-      gpu::storageBinding(4, agents->goals)};
+      gpu::storageBinding(gpu_types::kGoalsBindingAgentStart, paths->agentStart),
+      gpu::storageBinding(gpu_types::kGoalsBindingAgentInfo, paths->agentInfo),
+      gpu::storageBinding(gpu_types::kGoalsBindingSourceRange, paths->sourceRange),
+      gpu::storageBinding(gpu_types::kGoalsBindingCumulative, paths->cumulative),
+      gpu::storageBinding(gpu_types::kGoalsBindingGoals, agents->goals)};
   gpu::dispatch(cmd, programs.goals, bindings, push, agents->count);
 }
 
