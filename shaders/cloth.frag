@@ -3,8 +3,9 @@
 // Cloth playback, draw: flat two-sided lighting from the screen-space derivatives of the world
 // position (no normals are decoded), the normal turned towards the eye.
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
-layout(std140, binding = 0) uniform View { ClothView view; };
+layout(std140, binding = kClothDrawBindingView) uniform View { ClothView view; };
 layout(location = 0) in vec3 worldPosition;
 layout(location = 1) flat in vec3 tint;
 layout(location = 0) out vec4 colour;

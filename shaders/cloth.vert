@@ -6,16 +6,17 @@
 // shows at that level (remapped to a coarser representative when the state was decoded coarser),
 // blended with the merge source, and placed on the character's root (x, y, z, heading, scale).
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
-layout(std140, binding = 0) uniform View { ClothView view; };
-layout(std430, binding = 1) readonly buffer Characters { ClothCharacter characters[]; };
-layout(std430, binding = 2) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = 3) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 4) readonly buffer DrawList { uint drawList[]; };
-layout(std430, binding = 5) readonly buffer Slots { uvec2 slots[]; };
-layout(std430, binding = 6) readonly buffer Pool { float pool[]; };
-layout(std430, binding = 7) readonly buffer Remap { uint remap[]; };
-layout(std430, binding = 8) readonly buffer Graph { uint graph[]; };
+layout(std140, binding = kClothDrawBindingView) uniform View { ClothView view; };
+layout(std430, binding = kClothDrawBindingCharacters) readonly buffer Characters { ClothCharacter characters[]; };
+layout(std430, binding = kClothDrawBindingPlacement) readonly buffer Placement { vec4 placement[]; };
+layout(std430, binding = kClothDrawBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kClothDrawBindingDrawList) readonly buffer DrawList { uint drawList[]; };
+layout(std430, binding = kClothDrawBindingSlots) readonly buffer Slots { uvec2 slots[]; };
+layout(std430, binding = kClothDrawBindingPool) readonly buffer Pool { float pool[]; };
+layout(std430, binding = kClothDrawBindingRemap) readonly buffer Remap { uint remap[]; };
+layout(std430, binding = kClothDrawBindingGraph) readonly buffer Graph { uint graph[]; };
 #define CLOTH_HAS_GRAPH
 #include "cloth_common.glsl"
 layout(push_constant) uniform Push { ClothDrawPush push; };

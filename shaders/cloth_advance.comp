@@ -3,11 +3,12 @@
 // Cloth playback, pass 1: each character's cloth state follows its own traversal of the
 // secondary graph (twin: secondary::advanceCharacter).
 #include "cloth_common.glsl"
+#include "cloth_bindings.h"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };  // (phase, w, wTarget, scale)
-layout(std430, binding = 1) buffer Characters { ClothCharacter characters[]; };
-layout(std430, binding = 2) readonly buffer Graph { uint graph[]; };
+layout(std430, binding = kClothAdvanceBindingMotion) readonly buffer Motion { vec4 motion[]; };  // (phase, w, wTarget, scale)
+layout(std430, binding = kClothAdvanceBindingCharacters) buffer Characters { ClothCharacter characters[]; };
+layout(std430, binding = kClothAdvanceBindingGraph) readonly buffer Graph { uint graph[]; };
 layout(push_constant) uniform Push { ClothAdvancePush push; };
 
 uint table(uint which, uint index) { return graph[graph[which] + index]; }

@@ -4,11 +4,12 @@
 // per used state. Mode 1 (after classify): the decode pass of each level, one invocation per state
 // decoded there, and the splat, one invocation per splatted cape.
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
 layout(local_size_x = 1) in;
-layout(std430, binding = 4) readonly buffer Counters { ClothCounters counters; };
-layout(std430, binding = 7) readonly buffer Draws { uint draws[]; };
-layout(std430, binding = 9) writeonly buffer DispatchArgs { uint dispatchArgs[]; };
+layout(std430, binding = kClothArgsBindingCounters) readonly buffer Counters { ClothCounters counters; };
+layout(std430, binding = kClothArgsBindingDraws) readonly buffer Draws { uint draws[]; };
+layout(std430, binding = kClothArgsBindingDispatchArgs) writeonly buffer DispatchArgs { uint dispatchArgs[]; };
 layout(push_constant) uniform Push { ClothArgsPush push; };
 
 void write(uint at, uint invocations, uint group) {

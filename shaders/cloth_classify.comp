@@ -3,14 +3,15 @@
 // Cloth playback: each used state gets its pool slot (the finest level a character needs, or the
 // coarsest when the fine region is full) and joins the list of states decoded at that level.
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 3) readonly buffer Levels { ClothLevel levels[]; };
-layout(std430, binding = 4) buffer Counters { ClothCounters counters; };
-layout(std430, binding = 5) readonly buffer StateLevel { uint stateLevel[]; };
-layout(std430, binding = 6) readonly buffer UsedStates { uint usedStates[]; };
-layout(std430, binding = 7) writeonly buffer Slots { uvec2 slots[]; };  // per state: (pool vertex, level)
-layout(std430, binding = 8) writeonly buffer LevelLists { uint levelLists[]; };
+layout(std430, binding = kClothClassifyBindingLevels) readonly buffer Levels { ClothLevel levels[]; };
+layout(std430, binding = kClothClassifyBindingCounters) buffer Counters { ClothCounters counters; };
+layout(std430, binding = kClothClassifyBindingStateLevel) readonly buffer StateLevel { uint stateLevel[]; };
+layout(std430, binding = kClothClassifyBindingUsedStates) readonly buffer UsedStates { uint usedStates[]; };
+layout(std430, binding = kClothClassifyBindingSlots) writeonly buffer Slots { uvec2 slots[]; };  // per state: (pool vertex, level)
+layout(std430, binding = kClothClassifyBindingLevelLists) writeonly buffer LevelLists { uint levelLists[]; };
 layout(push_constant) uniform Push { ClothClassifyPush push; };
 
 uint slotVertices(uint level) { return (levels[level].vertices + 3u) & ~3u; }

@@ -9,17 +9,18 @@
 // invocation walks the same rows and bases. Twin: secondary::decodeStateSubset (same summation
 // order).
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
 layout(local_size_x = 8) in;  // kClothDecodeGroup: one lavapipe subgroup, so a few states spread over threads
-layout(constant_id = 0) const uint kLanes = 8u;  // rows shared per round: min(subgroup size, 8)
-layout(std430, binding = 0) readonly buffer Mean { vec4 mean[]; };           // rows, coarse-first order
-layout(std430, binding = 1) readonly buffer Bases { vec4 bases[]; };         // b × rowVectors
-layout(std430, binding = 2) readonly buffer Coefficients { float coefficients[]; };  // S × b
-layout(std430, binding = 3) readonly buffer Levels { ClothLevel levels[]; };
-layout(std430, binding = 4) readonly buffer Counters { ClothCounters counters; };
-layout(std430, binding = 6) readonly buffer LevelLists { uint levelLists[]; };
-layout(std430, binding = 7) readonly buffer Slots { uvec2 slots[]; };
-layout(std430, binding = 8) buffer Pool { vec4 pool[]; };
+layout(constant_id = kClothDecodeConstantLanes) const uint kLanes = 8u;  // rows shared per round: min(subgroup size, 8)
+layout(std430, binding = kClothDecodeBindingMean) readonly buffer Mean { vec4 mean[]; };  // rows, coarse-first order
+layout(std430, binding = kClothDecodeBindingBases) readonly buffer Bases { vec4 bases[]; };  // b × rowVectors
+layout(std430, binding = kClothDecodeBindingCoefficients) readonly buffer Coefficients { float coefficients[]; };  // S × b
+layout(std430, binding = kClothDecodeBindingLevels) readonly buffer Levels { ClothLevel levels[]; };
+layout(std430, binding = kClothDecodeBindingCounters) readonly buffer Counters { ClothCounters counters; };
+layout(std430, binding = kClothDecodeBindingLevelLists) readonly buffer LevelLists { uint levelLists[]; };
+layout(std430, binding = kClothDecodeBindingSlots) readonly buffer Slots { uvec2 slots[]; };
+layout(std430, binding = kClothDecodeBindingPool) buffer Pool { vec4 pool[]; };
 layout(push_constant) uniform Push { ClothDecodePush push; };
 
 void main() {

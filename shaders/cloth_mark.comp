@@ -4,18 +4,19 @@
 // mark the states it shows (its state, and the blend source while blending) with the finest level
 // any character needs, list each used state once, and append the character to its level's draw.
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
 layout(local_size_x = 64) in;
-layout(std140, binding = 0) uniform View { ClothView view; };
-layout(std430, binding = 1) readonly buffer Characters { ClothCharacter characters[]; };
-layout(std430, binding = 2) readonly buffer Placement { vec4 placement[]; };  // (x, y, z, heading)
-layout(std430, binding = 3) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 4) buffer Counters { ClothCounters counters; };
-layout(std430, binding = 5) buffer StateLevel { uint stateLevel[]; };
-layout(std430, binding = 6) writeonly buffer UsedStates { uint usedStates[]; };
-layout(std430, binding = 7) buffer Draws { uint draws[]; };  // VkDrawIndexedIndirectCommand per level
-layout(std430, binding = 8) writeonly buffer DrawList { uint drawList[]; };
-layout(std430, binding = 10) readonly buffer Graph { uint graph[]; };
+layout(std140, binding = kClothMarkBindingView) uniform View { ClothView view; };
+layout(std430, binding = kClothMarkBindingCharacters) readonly buffer Characters { ClothCharacter characters[]; };
+layout(std430, binding = kClothMarkBindingPlacement) readonly buffer Placement { vec4 placement[]; };  // (x, y, z, heading)
+layout(std430, binding = kClothMarkBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kClothMarkBindingCounters) buffer Counters { ClothCounters counters; };
+layout(std430, binding = kClothMarkBindingStateLevel) buffer StateLevel { uint stateLevel[]; };
+layout(std430, binding = kClothMarkBindingUsedStates) writeonly buffer UsedStates { uint usedStates[]; };
+layout(std430, binding = kClothMarkBindingDraws) buffer Draws { uint draws[]; };  // VkDrawIndexedIndirectCommand per level
+layout(std430, binding = kClothMarkBindingDrawList) writeonly buffer DrawList { uint drawList[]; };
+layout(std430, binding = kClothMarkBindingGraph) readonly buffer Graph { uint graph[]; };
 #define CLOTH_HAS_GRAPH
 #include "cloth_common.glsl"
 layout(push_constant) uniform Push { ClothMarkPush push; };

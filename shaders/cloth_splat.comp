@@ -21,74 +21,75 @@
 // - the level's mesh baked in (specialization constants) and used through macros, so every
 //   vertex and triangle index is a constant after specialization.
 #include "cloth_types.h"
+#include "cloth_bindings.h"
 
 layout(local_size_x = 64) in;
-layout(constant_id = 0) const uint kVertices = 0u;   // of the splat level (<= kClothSplatMaxVertices)
-layout(constant_id = 1) const uint kTriangles = 0u;  // (<= kClothSplatMaxTriangles)
-layout(constant_id = 2) const uint kIndex0 = 0u;
-layout(constant_id = 3) const uint kIndex1 = 0u;
-layout(constant_id = 4) const uint kIndex2 = 0u;
-layout(constant_id = 5) const uint kIndex3 = 0u;
-layout(constant_id = 6) const uint kIndex4 = 0u;
-layout(constant_id = 7) const uint kIndex5 = 0u;
-layout(constant_id = 8) const uint kIndex6 = 0u;
-layout(constant_id = 9) const uint kIndex7 = 0u;
-layout(constant_id = 10) const uint kIndex8 = 0u;
-layout(constant_id = 11) const uint kIndex9 = 0u;
-layout(constant_id = 12) const uint kIndex10 = 0u;
-layout(constant_id = 13) const uint kIndex11 = 0u;
-layout(constant_id = 14) const uint kIndex12 = 0u;
-layout(constant_id = 15) const uint kIndex13 = 0u;
-layout(constant_id = 16) const uint kIndex14 = 0u;
-layout(constant_id = 17) const uint kIndex15 = 0u;
-layout(constant_id = 18) const uint kIndex16 = 0u;
-layout(constant_id = 19) const uint kIndex17 = 0u;
-layout(constant_id = 20) const uint kIndex18 = 0u;
-layout(constant_id = 21) const uint kIndex19 = 0u;
-layout(constant_id = 22) const uint kIndex20 = 0u;
-layout(constant_id = 23) const uint kIndex21 = 0u;
-layout(constant_id = 24) const uint kIndex22 = 0u;
-layout(constant_id = 25) const uint kIndex23 = 0u;
-layout(constant_id = 26) const uint kIndex24 = 0u;
-layout(constant_id = 27) const uint kIndex25 = 0u;
-layout(constant_id = 28) const uint kIndex26 = 0u;
-layout(constant_id = 29) const uint kIndex27 = 0u;
-layout(constant_id = 30) const uint kIndex28 = 0u;
-layout(constant_id = 31) const uint kIndex29 = 0u;
-layout(constant_id = 32) const uint kIndex30 = 0u;
-layout(constant_id = 33) const uint kIndex31 = 0u;
-layout(constant_id = 34) const uint kIndex32 = 0u;
-layout(constant_id = 35) const uint kIndex33 = 0u;
-layout(constant_id = 36) const uint kIndex34 = 0u;
-layout(constant_id = 37) const uint kIndex35 = 0u;
-layout(constant_id = 38) const uint kIndex36 = 0u;
-layout(constant_id = 39) const uint kIndex37 = 0u;
-layout(constant_id = 40) const uint kIndex38 = 0u;
-layout(constant_id = 41) const uint kIndex39 = 0u;
-layout(constant_id = 42) const uint kIndex40 = 0u;
-layout(constant_id = 43) const uint kIndex41 = 0u;
-layout(constant_id = 44) const uint kIndex42 = 0u;
-layout(constant_id = 45) const uint kIndex43 = 0u;
-layout(constant_id = 46) const uint kIndex44 = 0u;
-layout(constant_id = 47) const uint kIndex45 = 0u;
-layout(constant_id = 48) const uint kIndex46 = 0u;
-layout(constant_id = 49) const uint kIndex47 = 0u;
+layout(constant_id = kClothSplatConstantVertices) const uint kVertices = 0u;  // of the splat level (<= kClothSplatMaxVertices)
+layout(constant_id = kClothSplatConstantTriangles) const uint kTriangles = 0u;  // (<= kClothSplatMaxTriangles)
+layout(constant_id = kClothSplatConstantIndices + 0u) const uint kIndex0 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 1u) const uint kIndex1 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 2u) const uint kIndex2 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 3u) const uint kIndex3 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 4u) const uint kIndex4 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 5u) const uint kIndex5 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 6u) const uint kIndex6 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 7u) const uint kIndex7 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 8u) const uint kIndex8 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 9u) const uint kIndex9 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 10u) const uint kIndex10 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 11u) const uint kIndex11 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 12u) const uint kIndex12 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 13u) const uint kIndex13 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 14u) const uint kIndex14 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 15u) const uint kIndex15 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 16u) const uint kIndex16 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 17u) const uint kIndex17 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 18u) const uint kIndex18 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 19u) const uint kIndex19 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 20u) const uint kIndex20 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 21u) const uint kIndex21 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 22u) const uint kIndex22 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 23u) const uint kIndex23 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 24u) const uint kIndex24 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 25u) const uint kIndex25 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 26u) const uint kIndex26 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 27u) const uint kIndex27 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 28u) const uint kIndex28 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 29u) const uint kIndex29 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 30u) const uint kIndex30 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 31u) const uint kIndex31 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 32u) const uint kIndex32 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 33u) const uint kIndex33 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 34u) const uint kIndex34 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 35u) const uint kIndex35 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 36u) const uint kIndex36 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 37u) const uint kIndex37 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 38u) const uint kIndex38 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 39u) const uint kIndex39 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 40u) const uint kIndex40 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 41u) const uint kIndex41 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 42u) const uint kIndex42 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 43u) const uint kIndex43 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 44u) const uint kIndex44 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 45u) const uint kIndex45 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 46u) const uint kIndex46 = 0u;
+layout(constant_id = kClothSplatConstantIndices + 47u) const uint kIndex47 = 0u;
 
 // The view is read as a storage buffer, not a uniform buffer: with it in a uniform buffer every
 // dispatch of this shader cost ≈ 2.5 ms more on lavapipe (Mesa 22.3.6) whatever the number of
 // capes (GPU timestamps: 3.0 → 0.5 ms for 400 capes); the mark pass shows no such cost.
-layout(std430, binding = 0) readonly buffer View { ClothView view; };
+layout(std430, binding = kClothSplatBindingView) readonly buffer View { ClothView view; };
 // ClothCharacter as two words: (state | node << 32, blendSource | countdown << 32).
-layout(std430, binding = 1) readonly buffer Characters { uint64_t characterWords[]; };
-layout(std430, binding = 2) readonly buffer Placement { uint64_t placementWords[]; };  // vec4
-layout(std430, binding = 3) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 4) readonly buffer DrawList { uint drawList[]; };
-layout(std430, binding = 5) readonly buffer Slots { uvec2 slots[]; };
+layout(std430, binding = kClothSplatBindingCharacters) readonly buffer Characters { uint64_t characterWords[]; };
+layout(std430, binding = kClothSplatBindingPlacement) readonly buffer Placement { uint64_t placementWords[]; };  // vec4
+layout(std430, binding = kClothSplatBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kClothSplatBindingDrawList) readonly buffer DrawList { uint drawList[]; };
+layout(std430, binding = kClothSplatBindingSlots) readonly buffer Slots { uvec2 slots[]; };
 // Floats, 3 per vertex; a slot starts at a multiple of 4 vertices, so at a whole 64-bit word.
-layout(std430, binding = 6) readonly buffer Pool { uint64_t poolWords[]; };
-layout(std430, binding = 8) readonly buffer Graph { uint graph[]; };
-layout(std430, binding = 10) readonly buffer Draws { uint draws[]; };
-layout(std430, binding = 11) buffer Visibility { uint64_t visibility[]; };
+layout(std430, binding = kClothSplatBindingPool) readonly buffer Pool { uint64_t poolWords[]; };
+layout(std430, binding = kClothSplatBindingGraph) readonly buffer Graph { uint graph[]; };
+layout(std430, binding = kClothSplatBindingDraws) readonly buffer Draws { uint draws[]; };
+layout(std430, binding = kClothSplatBindingVisibility) buffer Visibility { uint64_t visibility[]; };
 layout(push_constant) uniform Push { ClothSplatPush push; };
 #define CLOTH_HAS_GRAPH
 #include "cloth_common.glsl"

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "secondary/cloth_gpu_types.h"
+#include "shaders/cloth_bindings.h"
 
 namespace throng::secondary {
 
@@ -89,11 +90,13 @@ ClothGpuData uploadCloth(const gpu::Context& context, const ClothDatabase& db) {
   if (context.info().int64Atomics &&
       g.lod.levelVertices[splatLevel] <= gpu_types::kClothSplatMaxVertices && splatTriangles > 0 &&
       splatTriangles <= gpu_types::kClothSplatMaxTriangles) {
-    std::vector<uint32_t> constants(2 + 3 * gpu_types::kClothSplatMaxTriangles, 0u);
-    constants[0] = g.lod.levelVertices[splatLevel];
-    constants[1] = splatTriangles;
+    std::vector<uint32_t> constants(
+        gpu_types::kClothSplatConstantIndices + 3 * gpu_types::kClothSplatMaxTriangles, 0u);
+    constants[gpu_types::kClothSplatConstantVertices] = g.lod.levelVertices[splatLevel];
+    constants[gpu_types::kClothSplatConstantTriangles] = splatTriangles;
     for (uint32_t i = 0; i < 3 * splatTriangles; ++i)
-      constants[2 + i] = g.lod.indices[g.lod.firstIndex[splatLevel] + i];
+      constants[gpu_types::kClothSplatConstantIndices + i] =
+          g.lod.indices[g.lod.firstIndex[splatLevel] + i];
     g.splat = gpu::ComputeProgram(context, "cloth_splat.comp", constants);
   }
   const VkDeviceSize largest = std::max({g.bases.size(), g.coefficients.size(), g.graph.size()});
@@ -169,7 +172,10 @@ std::vector<uint32_t> decodeSpecialization(const gpu::Context& context) {
     fail("the cloth decode pass needs compute subgroups with shuffle; ", context.info().name,
          " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
          subgroup.supportedOperations);
-  return {std::min(subgroup.subgroupSize, gpu_types::kClothDecodeRows)};
+  std::vector<uint32_t> constants(gpu_types::kClothDecodeConstantLanes + 1);
+  constants[gpu_types::kClothDecodeConstantLanes] =
+      std::min(subgroup.subgroupSize, gpu_types::kClothDecodeRows);
+  return constants;
 }
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include "gpu/commands.h"
 #include "gpu/job_check.h"
 #include "secondary/cloth_gpu_types.h"
+#include "shaders/cloth_bindings.h"
 #include "synth/synth_jobs.h"
 
 namespace throng::secondary {
@@ -53,9 +54,10 @@ void ClothAdvanceJob::record(VkCommandBuffer cmd, const ClothPrograms& programs)
   push.bucketWidth = cloth->bucketWidth;
   push.maxWalkSteps = kMaxWalkSteps;
   push.blendFrames = kMergeBlendFrames;
-  gpu::Binding bindings[] = {gpu::storageBinding(0, crowd->motion),
-                             gpu::storageBinding(1, buffers->characters),
-                             gpu::storageBinding(2, cloth->graph)};
+  gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kClothAdvanceBindingMotion, crowd->motion),
+      gpu::storageBinding(gpu_types::kClothAdvanceBindingCharacters, buffers->characters),
+      gpu::storageBinding(gpu_types::kClothAdvanceBindingGraph, cloth->graph)};
   gpu::dispatch(cmd, programs.advance, bindings, push, crowd->count);
 }
 
@@ -86,34 +88,38 @@ void ClothMarkJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) co
   if (crowd->count > 0) {
     gpu_types::ClothMarkPush push{crowd->count, buffers->maxUsedStates, 0u, 0u};
     gpu::Binding bindings[] = {
-        gpu::uniformBinding(0, *view),
-        gpu::storageBinding(1, buffers->characters),
-        gpu::storageBinding(2, crowd->placement),
-        gpu::storageBinding(3, crowd->motion),
-        gpu::storageBinding(4, buffers->counters),
-        gpu::storageBinding(5, buffers->stateLevel),
-        gpu::storageBinding(6, buffers->usedStates),
-        gpu::storageBinding(7, buffers->draws),
-        gpu::storageBinding(8, buffers->drawList),
-        gpu::storageBinding(10, cloth->graph),
+        gpu::uniformBinding(gpu_types::kClothMarkBindingView, *view),
+        gpu::storageBinding(gpu_types::kClothMarkBindingCharacters, buffers->characters),
+        gpu::storageBinding(gpu_types::kClothMarkBindingPlacement, crowd->placement),
+        gpu::storageBinding(gpu_types::kClothMarkBindingMotion, crowd->motion),
+        gpu::storageBinding(gpu_types::kClothMarkBindingCounters, buffers->counters),
+        gpu::storageBinding(gpu_types::kClothMarkBindingStateLevel, buffers->stateLevel),
+        gpu::storageBinding(gpu_types::kClothMarkBindingUsedStates, buffers->usedStates),
+        gpu::storageBinding(gpu_types::kClothMarkBindingDraws, buffers->draws),
+        gpu::storageBinding(gpu_types::kClothMarkBindingDrawList, buffers->drawList),
+        gpu::storageBinding(gpu_types::kClothMarkBindingGraph, cloth->graph),
     };
     gpu::dispatch(cmd, programs.mark, bindings, push, crowd->count);
   }
   gpu::computeToComputeBarrier(cmd);
   const VkPipelineStageFlags computeAndIndirect =
       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT;
-  gpu::Binding args[] = {gpu::storageBinding(4, buffers->counters),
-                         gpu::storageBinding(7, buffers->draws),
-                         gpu::storageBinding(9, buffers->dispatchArgs)};
+  gpu::Binding args[] = {
+      gpu::storageBinding(gpu_types::kClothArgsBindingCounters, buffers->counters),
+      gpu::storageBinding(gpu_types::kClothArgsBindingDraws, buffers->draws),
+      gpu::storageBinding(gpu_types::kClothArgsBindingDispatchArgs, buffers->dispatchArgs)};
   gpu_types::ClothArgsPush argsPush{0u, buffers->maxUsedStates, crowd->count, 0u};
   gpu::dispatch(cmd, programs.args, args, argsPush, 1);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, computeAndIndirect);
   gpu_types::ClothClassifyPush classifyPush{buffers->maxUsedStates, buffers->fineBudget,
                                             buffers->reservedVertices, 0u};
   gpu::Binding classify[] = {
-      gpu::storageBinding(3, cloth->levels),       gpu::storageBinding(4, buffers->counters),
-      gpu::storageBinding(5, buffers->stateLevel), gpu::storageBinding(6, buffers->usedStates),
-      gpu::storageBinding(7, buffers->slots),      gpu::storageBinding(8, buffers->levelLists),
+      gpu::storageBinding(gpu_types::kClothClassifyBindingLevels, cloth->levels),
+      gpu::storageBinding(gpu_types::kClothClassifyBindingCounters, buffers->counters),
+      gpu::storageBinding(gpu_types::kClothClassifyBindingStateLevel, buffers->stateLevel),
+      gpu::storageBinding(gpu_types::kClothClassifyBindingUsedStates, buffers->usedStates),
+      gpu::storageBinding(gpu_types::kClothClassifyBindingSlots, buffers->slots),
+      gpu::storageBinding(gpu_types::kClothClassifyBindingLevelLists, buffers->levelLists),
   };
   gpu::dispatchIndirect(cmd, programs.classify, classify, &classifyPush, sizeof(classifyPush),
                         buffers->dispatchArgs, 0);
@@ -132,10 +138,14 @@ std::vector<std::string> ClothDecodeJob::validate() const {
 void ClothDecodeJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) const {
   gpu::throwIfInvalid("ClothDecodeJob", validate());
   gpu::Binding bindings[] = {
-      gpu::storageBinding(0, cloth->mean),         gpu::storageBinding(1, cloth->bases),
-      gpu::storageBinding(2, cloth->coefficients), gpu::storageBinding(3, cloth->levels),
-      gpu::storageBinding(4, buffers->counters),   gpu::storageBinding(6, buffers->levelLists),
-      gpu::storageBinding(7, buffers->slots),      gpu::storageBinding(8, buffers->pool),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingMean, cloth->mean),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingBases, cloth->bases),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingCoefficients, cloth->coefficients),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingLevels, cloth->levels),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingCounters, buffers->counters),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingLevelLists, buffers->levelLists),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingSlots, buffers->slots),
+      gpu::storageBinding(gpu_types::kClothDecodeBindingPool, buffers->pool),
   };
   for (uint32_t level = 0; level < kClothLevels; ++level) {
     gpu_types::ClothDecodePush push{cloth->rowVectors, cloth->basisCount, level,
@@ -160,15 +170,15 @@ void ClothDrawJob::record(VkCommandBuffer cmd, const ClothPrograms& programs) co
   gpu_types::ClothDrawPush push{crowd->count, cloth->vertexCount, kMergeBlendFrames,
                                 tintLevels ? gpu_types::kClothDrawTint : 0u};
   gpu::Binding bindings[] = {
-      gpu::uniformBinding(0, *view),
-      gpu::storageBinding(1, buffers->characters),
-      gpu::storageBinding(2, crowd->placement),
-      gpu::storageBinding(3, crowd->motion),
-      gpu::storageBinding(4, buffers->drawList),
-      gpu::storageBinding(5, buffers->slots),
-      gpu::storageBinding(6, buffers->pool),
-      gpu::storageBinding(7, cloth->remap),
-      gpu::storageBinding(8, cloth->graph),
+      gpu::uniformBinding(gpu_types::kClothDrawBindingView, *view),
+      gpu::storageBinding(gpu_types::kClothDrawBindingCharacters, buffers->characters),
+      gpu::storageBinding(gpu_types::kClothDrawBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kClothDrawBindingMotion, crowd->motion),
+      gpu::storageBinding(gpu_types::kClothDrawBindingDrawList, buffers->drawList),
+      gpu::storageBinding(gpu_types::kClothDrawBindingSlots, buffers->slots),
+      gpu::storageBinding(gpu_types::kClothDrawBindingPool, buffers->pool),
+      gpu::storageBinding(gpu_types::kClothDrawBindingRemap, cloth->remap),
+      gpu::storageBinding(gpu_types::kClothDrawBindingGraph, cloth->graph),
   };
   programs.draw.bind(cmd, bindings, &push, sizeof(push));
   vkCmdBindIndexBuffer(cmd, cloth->indices.get(), 0, VK_INDEX_TYPE_UINT32);
@@ -203,16 +213,17 @@ void ClothSplatJob::record(VkCommandBuffer cmd, const ClothPrograms&) const {
   gpu::throwIfInvalid("ClothSplatJob", validate());
   gpu_types::ClothSplatPush push{crowd->count, 0u, 0u, 0u};
   gpu::Binding bindings[] = {
-      gpu::storageBinding(0, *view),  // a storage buffer there (cloth_splat.comp says why)
-      gpu::storageBinding(1, buffers->characters),
-      gpu::storageBinding(2, crowd->placement),
-      gpu::storageBinding(3, crowd->motion),
-      gpu::storageBinding(4, buffers->drawList),
-      gpu::storageBinding(5, buffers->slots),
-      gpu::storageBinding(6, buffers->pool),
-      gpu::storageBinding(8, cloth->graph),
-      gpu::storageBinding(10, buffers->draws),
-      gpu::storageBinding(11, *visibility),
+      // The view as a storage buffer there (cloth_splat.comp says why).
+      gpu::storageBinding(gpu_types::kClothSplatBindingView, *view),
+      gpu::storageBinding(gpu_types::kClothSplatBindingCharacters, buffers->characters),
+      gpu::storageBinding(gpu_types::kClothSplatBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kClothSplatBindingMotion, crowd->motion),
+      gpu::storageBinding(gpu_types::kClothSplatBindingDrawList, buffers->drawList),
+      gpu::storageBinding(gpu_types::kClothSplatBindingSlots, buffers->slots),
+      gpu::storageBinding(gpu_types::kClothSplatBindingPool, buffers->pool),
+      gpu::storageBinding(gpu_types::kClothSplatBindingGraph, cloth->graph),
+      gpu::storageBinding(gpu_types::kClothSplatBindingDraws, buffers->draws),
+      gpu::storageBinding(gpu_types::kClothSplatBindingVisibility, *visibility),
   };
   gpu::dispatchIndirect(cmd, cloth->splat, bindings, &push, sizeof(push), buffers->dispatchArgs,
                         12 * (1 + kClothLevels));
