@@ -1,6 +1,7 @@
 #include "cli_errors.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 
 namespace throng::tools {
@@ -59,6 +60,35 @@ std::string suggestionFor(const CLI::App& command, const std::string& word) {
 }
 
 }  // namespace
+
+CLI::Validator oneOf(const std::string& what, std::vector<std::string> names) {
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  auto check = [what, names, list](std::string& value) -> std::string {
+    if (std::find(names.begin(), names.end(), value) != names.end()) return {};
+    return "unknown " + what + " '" + value + "': expected " + list;
+  };
+  return CLI::Validator(check, "{" + CLI::detail::join(names, ",") + "}", "one of");
+}
+
+CLI::Validator inRange(double lo, double hi, const std::string& unit) {
+  // Numbers as people write them: 0.05, 4000000, 1e+09 (no trailing zeros).
+  auto text = [](double x) {
+    std::ostringstream out;
+    out << std::setprecision(10) << x;
+    return out.str();
+  };
+  const std::string range = text(lo) + ".." + text(hi) + (unit.empty() ? "" : " " + unit);
+  auto check = [lo, hi, range](std::string& value) -> std::string {
+    double x = 0.0;
+    // NaN fails both comparisons: "nan" is reported like any other value out of range.
+    if (!CLI::detail::lexical_cast(value, x) || !(x >= lo && x <= hi))
+      return "expected " + range + ", got " + value;
+    return {};
+  };
+  return CLI::Validator(check, "[" + range + "]", "range");
+}
 
 std::string closestName(const std::string& word, const std::vector<std::string>& candidates) {
   std::string best;

@@ -24,4 +24,12 @@ const CLI::App& commandNamedBy(const CLI::App& root, int argc, char** argv);
 // "throng render" for the render subcommand: the words a user types to reach `command`.
 std::string commandPath(const CLI::App& command);
 
+// A CLI11 check that the value is one of `names`; otherwise a usage error that lists them, e.g.
+// "--scene: unknown scene 'x': expected random, circle or storyboard". `what` names the kind.
+CLI::Validator oneOf(const std::string& what, std::vector<std::string> names);
+
+// A CLI11 check that the value is a number in [lo, hi]; otherwise a usage error in the tools'
+// words, e.g. "--fov: expected 1..170 degrees, got 0" (`unit` may be empty).
+CLI::Validator inRange(double lo, double hi, const std::string& unit = "");
+
 }  // namespace throng::tools

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli_errors.h"
 #include "core/error.h"
 #include "crowd/trajectory_writer.h"
 #include "limit_option.h"
@@ -30,12 +31,12 @@ void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
                   "collision), published (the rule) or none; ttc and rule are accepted as "
                   "aliases")
       ->capture_default_str()
-      ->check(CLI::IsMember({"anticipatory", "published", "none", "ttc", "rule"}));
+      ->check(oneOf("policy", {"anticipatory", "published", "none", "ttc", "rule"}));
   command
       .add_option("--radius", o.radius,
                   "Storyboard and circle scenes: safe radius of each agent in metres")
       ->capture_default_str()
-      ->check(CLI::Range(0.01f, 10.0f));
+      ->check(inRange(0.01, 10, "metres"));
   command.add_option(
       "--step-time", o.stepTime,
       "Storyboard: seconds per annotation step of the trajectories (default: by dataset)");
@@ -71,25 +72,32 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command
       .add_option("--scene", o.scenario.name,
                   "Scenario: random, circle or storyboard (with --storyboard)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(oneOf("scene", {"random", "circle", "storyboard"}));
   command.add_option("--characters,-n", o.characters, "Number of characters")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inRange(1, 4000000));
   command.add_option("--seed", o.scenario.seed, "Random seed of the scenario")
       ->capture_default_str();
   command.add_option("--speed-min", o.scenario.minSpeedWeight, "Lowest speed weight w in [0,1]")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inRange(0, 1));
   command.add_option("--speed-max", o.scenario.maxSpeedWeight, "Highest speed weight w in [0,1]")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inRange(0, 1));
   command.add_option("--density", o.scenario.density, "Characters per square metre (random scene)")
       ->capture_default_str();
   command.add_option("--slow", o.slowClip, "Slow cycle BVH (default: built-in run)");
   command.add_option("--fast", o.fastClip, "Fast cycle BVH (default: built-in run)");
   command.add_option("--camera", o.cameraPreset, "Camera preset: wide, top, street, closeup")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(oneOf("camera preset", {"wide", "top", "street", "closeup"}));
   command.add_option("--eye", o.eye, "Camera position x,y,z (overrides the preset)");
   command.add_option("--target", o.target, "Camera target x,y,z (overrides the preset)");
-  command.add_option("--fov", o.fovY,
-                     "Vertical field of view in degrees, 1..170 (default: the preset's)");
+  command
+      .add_option("--fov", o.fovY,
+                  "Vertical field of view in degrees, 1..170 (default: the preset's)")
+      ->check(inRange(1, 170, "degrees"));
   command.add_option("--size", o.size, "Image size WxH")->capture_default_str();
   command.add_option("--device", o.device, "Vulkan device by index or name (also $THRONG_DEVICE)");
   command.add_option("--dt", o.dt, "Simulated seconds per frame")->capture_default_str();
@@ -98,7 +106,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
                 "Motion cache: characters share synthesized clips per speed bucket")
       ->capture_default_str();
   command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inRange(0, 65536, "MB"));
   command
       .add_option("--bucket-width", o.bucketWidth,
                   "Motion cache speed-weight bucket width, 1/4095..1 (at most 4096 buckets)")
@@ -106,7 +115,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command
       .add_option("--speed-period", o.speedPeriod,
                   "Seconds between speed changes (0: never; paper: 5)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inRange(0, 1e9, "seconds"));
   command
       .add_flag("--lod,!--no-lod", o.lod,
                 "Coverage LOD: characters small on screen synthesize and draw fewer joints")
@@ -118,13 +128,13 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
                   "Coverage LOD: projected standing height in pixels from which a character "
                   "gets the mid level (torso, head, upper limbs)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0f, 1e9f));
+      ->check(inRange(0, 1e9, "pixels"));
   command
       .add_option("--lod-near-pixels", o.lodNearPixels,
                   "Coverage LOD: projected standing height in pixels from which a character "
                   "gets every joint")
       ->capture_default_str()
-      ->check(CLI::Range(0.0f, 1e9f));
+      ->check(inRange(0, 1e9, "pixels"));
   addStoryboardSceneOptions(command, o.story);
   command.add_option("--trajectories-out", o.trajectoriesOut,
                      "Every agent's position per frame: FILE.txt in PedPy's 'id frame x y z' "

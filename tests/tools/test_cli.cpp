@@ -66,3 +66,46 @@ TEST_CASE("cli: no CLI11 exit codes (104-114) leak out") {
     CHECK(contains(r.output, "error: "));
   }
 }
+
+TEST_CASE("cli: bad choices and numbers out of range are usage errors that say what is allowed") {
+  struct Case {
+    std::string arguments, message;
+  };
+  const Case cases[] = {
+      {"render --scene foo",
+       "error: --scene: unknown scene 'foo': expected random, circle or "
+       "storyboard"},
+      {"view --scene foo",
+       "error: --scene: unknown scene 'foo': expected random, circle or "
+       "storyboard"},
+      {"render --camera foo",
+       "error: --camera: unknown camera preset 'foo': expected wide, top, "
+       "street or closeup"},
+      {"view --camera foo", "error: --camera: unknown camera preset 'foo'"},
+      {"render --policy boids", "error: --policy: unknown policy 'boids': expected anticipatory"},
+      {"render --characters -5", "error: --characters: expected 1..4000000, got -5"},
+      {"view -n 4000001", "error: --characters: expected 1..4000000, got 4000001"},
+      {"render --fov 0", "error: --fov: expected 1..170 degrees, got 0"},
+      {"view --fov nan", "error: --fov: expected 1..170 degrees, got nan"},
+      {"render --speed-max 1.5", "error: --speed-max: expected 0..1, got 1.5"},
+      {"render --cache-budget -1", "error: --cache-budget: expected 0..65536 MB, got -1"},
+      {"render --radius 0", "error: --radius: expected 0.01..10 metres, got 0"},
+      {"cloth compress /etc/passwd --out y.tsc --max-bases 0",
+       "error: --max-bases: Value 0 not in range 1 to 4096"},
+  };
+  for (const Case& c : cases) {
+    auto r = runThrong(c.arguments);
+    CAPTURE(c.arguments);
+    CAPTURE(r.output);
+    CHECK(r.exitCode == 2);
+    CHECK(contains(r.output, c.message));
+  }
+  // In range and among the choices: no usage error (help stops before any work).
+  for (const char* arguments : {"render --scene circle --camera top --fov 170 -n 1 --help",
+                                "view --speed-max 1 --cache-budget 0 --help"}) {
+    auto r = runThrong(arguments);
+    CAPTURE(arguments);
+    CAPTURE(r.output);
+    CHECK(r.exitCode == 0);
+  }
+}
