@@ -1,20 +1,24 @@
 // throng crowd simulate|metrics|bench: storyboard crowds that follow path vectors taken from
 // tracked people, with GPU collision avoidance, measured against the real trajectories.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "anim/default_clips.h"
+#include "cli_errors.h"
 #include "command.h"
 #include "core/error.h"
 #include "crowd/avoidance_bench.h"
 #include "crowd/crowd_sim.h"
 #include "crowd/trajectories.h"
+#include "crowd/trajectory_writer.h"
 #include "gpu/context.h"
 #include "scene_storyboard.h"
 #include "storyboard/codec.h"
@@ -26,7 +30,8 @@ namespace {
 namespace sb = throng::storyboard;
 
 // The scenes' policy names (scene_storyboard.h), their aliases, and every policy in turn.
-const CLI::IsMember kPolicyNames({"anticipatory", "published", "none", "ttc", "rule", "all"});
+const CLI::Validator kPolicyNames =
+    oneOf("policy", {"anticipatory", "published", "none", "ttc", "rule", "all"});
 
 // Options shared by simulate and metrics.
 struct RunOptions {
@@ -117,14 +122,55 @@ nlohmann::json runJson(crowd::SteerPolicy policy, const crowd::SimulationResult&
 
 void printRun(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
   std::printf("%s", crowd::formatMetrics(concat("policy ", policyName(policy)), r.metrics).c_str());
-  std::printf("  %u steps in %.2f s wall\n", r.steps, r.wallSeconds);
+  // Short CPU runs take milliseconds: "0.00 s" would say nothing.
+  if (r.wallSeconds < 1.0)
+    std::printf("  %u steps in %.1f ms wall\n", r.steps, 1000.0 * r.wallSeconds);
+  else
+    std::printf("  %u steps in %.2f s wall\n", r.steps, r.wallSeconds);
 }
 
 struct SimulateArgs {
-  std::string storyboard, trajectories, legend;
+  std::string storyboard, trajectories, legend, trajectoriesOut;
   float cell = 0.5f, jitter = 0.1f;
   RunOptions run;
 };
+
+// --trajectories-out: every simulated frame into the writer. Frames the simulation skipped
+// (nobody on the scene) are written with every agent inactive, so frame numbers stay times.
+class TrajectoryRecorder : public crowd::StepObserver {
+ public:
+  TrajectoryRecorder(const std::string& path, float dt, std::vector<uint32_t> groups)
+      : writer_(path, 1.0 / double(dt), std::move(groups)) {}
+
+  void observe(uint64_t frame, std::span<const glm::vec4> placement,
+               std::span<const uint8_t> active) override {
+    if (writer_.frames() < frame) {
+      const std::vector<uint8_t> nobody(placement.size(), 0);
+      while (writer_.frames() < frame) writer_.addFrame(placement, nobody);
+    }
+    writer_.addFrame(placement, active);
+  }
+  void finish() { writer_.finish(); }
+
+ private:
+  crowd::TrajectoryWriter writer_;
+};
+
+// The file is checked (extension, folder, size) before the run; one run per file.
+std::unique_ptr<TrajectoryRecorder> makeRecorder(const SimulateArgs& a,
+                                                 const std::vector<crowd::SteerPolicy>& policies,
+                                                 const sb::Placement& placed) {
+  if (a.trajectoriesOut.empty()) return nullptr;
+  if (policies.size() != 1)
+    fail("--trajectories-out ", a.trajectoriesOut, ": records one run; give one --policy, not ",
+         policies.size());
+  const crowd::SimulationOptions options = a.run.simulation(policies.front());
+  // Steps per second as the simulation rounds them (a bad --dt fails there, with its message).
+  const uint64_t perSecond = uint64_t(std::lround(1.0 / std::max(double(options.dt), 1e-3)));
+  const uint64_t frames = uint64_t(std::max(1.0f, std::floor(options.seconds))) * perSecond + 1;
+  crowd::checkTrajectoryOutput(a.trajectoriesOut, placed.crowd.size(), frames);
+  return std::make_unique<TrajectoryRecorder>(a.trajectoriesOut, options.dt, placed.tint);
+}
 
 void runSimulate(const SimulateArgs& a) {
   const sb::Legend legend = a.legend.empty() ? sb::Legend{} : sb::loadLegend(a.legend);
@@ -153,6 +199,8 @@ void runSimulate(const SimulateArgs& a) {
     maxSpeed.push_back(std::max(1.0f, 1.25f * r.max));
   setup.paths = crowd::followSources(setup.crowd, sources, assigned, maxSpeed);
 
+  const std::vector<crowd::SteerPolicy> policies = a.run.parsedPolicies();
+  std::unique_ptr<TrajectoryRecorder> recorder = makeRecorder(a, policies, placed);
   std::unique_ptr<gpu::Context> context = makeContext(a.run);
   nlohmann::json doc;
   doc["schema"] = "throng.crowd_simulate";
@@ -168,15 +216,21 @@ void runSimulate(const SimulateArgs& a) {
         "%s: %zu agents (%zu invalid glyphs skipped) following %zu tracked people of %s, on %s\n",
         a.storyboard.c_str(), board.glyphs.size(), board.invalid.size(), sources.size(),
         a.trajectories.c_str(), doc["device"].get<std::string>().c_str());
-  for (crowd::SteerPolicy policy : a.run.parsedPolicies()) {
+  for (crowd::SteerPolicy policy : policies) {
     crowd::SimulationOptions options = a.run.simulation(policy);
     options.slowSpeed = placeOptions.slowSpeed;
     options.fastSpeed = placeOptions.fastSpeed;
+    options.observer = recorder.get();
     crowd::SimulationResult result = crowd::simulateCrowd(context.get(), setup, options);
     if (a.run.json)
       doc["runs"].push_back(runJson(policy, result));
     else
       printRun(policy, result);
+  }
+  if (recorder) {
+    recorder->finish();
+    doc["trajectories_out"] = a.trajectoriesOut;
+    if (!a.run.json) std::printf("trajectories: %s\n", a.trajectoriesOut.c_str());
   }
   if (a.run.json) std::printf("%s\n", doc.dump(2).c_str());
 }
@@ -191,9 +245,14 @@ void addSimulate(CLI::App& parent) {
       ->required();
   cmd->add_option("--legend", args->legend,
                   "Colour legend JSON (default: the default colours of docs/formats.md)");
-  cmd->add_option("--seconds", args->run.seconds, "Seconds simulated (default 20)");
+  cmd->add_option("--seconds", args->run.seconds, "Seconds simulated (default 20)")
+      ->check(inRange(1, 100000, "seconds"));
   cmd->add_option("--cell", args->cell, "Metres per storyboard pixel (default 0.5)");
   cmd->add_option("--jitter", args->jitter, "Random offset of each agent, +- metres (default 0.1)");
+  cmd->add_option("--trajectories-out", args->trajectoriesOut,
+                  "Every agent's position per simulated step: FILE.txt in PedPy's 'id frame x y z' "
+                  "(metres, x y = engine x z) or FILE.csv with time, heading, speed, group and "
+                  "state (one --policy)");
   args->run.add(cmd,
                 "Avoidance: anticipatory, published, none or all (default anticipatory; ttc and "
                 "rule are aliases)");
@@ -281,7 +340,8 @@ void addBench(CLI::App& parent) {
       "bench",
       "GPU time of one steering step (grid + avoidance), against the CPU twin on one thread");
   auto args = std::make_shared<BenchArgs>();
-  cmd->add_option("--agents", args->agents, "Crowd sizes (default 10000 100000)");
+  cmd->add_option("--agents", args->agents, "Crowd sizes (default 10000 100000)")
+      ->check(inRange(1, 1000000, "agents"));
   cmd->add_option("--policy", args->policies,
                   "Policies: anticipatory, published, none or all (default published "
                   "anticipatory; ttc and rule are aliases)")
@@ -290,18 +350,15 @@ void addBench(CLI::App& parent) {
   cmd->add_option("--density", args->density, "Agents per square metre (default 0.5)");
   cmd->add_option("--numbering", args->numbering,
                   "Agent numbering: grid (spawned in grid order, as storyboards number them) or "
-                  "random (default grid)");
+                  "random (default grid)")
+      ->check(oneOf("numbering", {"grid", "random"}));
   cmd->add_option("--device", args->device, "Vulkan device by index or name");
   cmd->callback([args] {
-    if (args->numbering != "grid" && args->numbering != "random")
-      fail("--numbering: expected grid or random, got '", args->numbering, "'");
     const crowd::BenchNumbering numbering =
         args->numbering == "grid" ? crowd::BenchNumbering::Grid : crowd::BenchNumbering::Random;
     RunOptions parse;
     parse.policies = args->policies;
     std::vector<crowd::SteerPolicy> policies = parse.parsedPolicies();
-    for (uint32_t n : args->agents)
-      if (n == 0 || n > 1000000) fail("--agents: each count must be 1..1000000, got ", n);
     gpu::ContextOptions options;
     options.device = args->device;
     gpu::Context context(options);

@@ -162,6 +162,7 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
         }
       }
     }
+    if (options.observer && s == 0) options.observer->observe(0, crowd.placement, active);
     for (int k = 0; k < stepsPerSecond; ++k) {
       SteerFrame frame;
       frame.dt = dt;
@@ -191,6 +192,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
       collisions.addStep(crowd.placement, active, dt);
       intrusions.addStep(crowd.placement, active, dt);
       ++result.steps;
+      if (options.observer)
+        options.observer->observe(uint64_t(frame.step) + 1, crowd.placement, active);
     }
     for (size_t i = 0; i < n; ++i) {
       if (!active[i]) continue;

@@ -26,6 +26,19 @@ struct SimulationSetup {
   AgentPaths paths;  // one per agent
 };
 
+// Sees the crowd as the simulation goes (e.g. `--trajectories-out`). Frame f is the crowd at
+// f · dt seconds: frame 0 before the first step, frame k + 1 after step k. Frames in which
+// nobody is on the scene may be skipped (the simulation jumps to the next arrival), so `frame`
+// can grow by more than one between calls.
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  // `placement`: every agent's (x, y, z, heading), parked far away when not active; `active`:
+  // per agent, 1 when on the scene.
+  virtual void observe(uint64_t frame, std::span<const glm::vec4> placement,
+                       std::span<const uint8_t> active) = 0;
+};
+
 struct SimulationOptions {
   AvoidanceParams avoidance;
   float dt = 0.05f;                // must divide one second (1/dt steps per waypoint)
@@ -34,6 +47,7 @@ struct SimulationOptions {
                                    // the avoidance's safe radius
   float slowSpeed = 0.0f;  // clip pair root speeds (speed → motion.z); 0, 0: leave motion.z
   float fastSpeed = 0.0f;
+  StepObserver* observer = nullptr;  // optional, not owned
 };
 
 struct SimulationResult {

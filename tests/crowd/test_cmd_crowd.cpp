@@ -1,11 +1,14 @@
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli_support.h"
+#include "crowd/trajectories.h"
 
 using namespace throng;
 
@@ -47,6 +50,87 @@ TEST_CASE("throng crowd simulate: a storyboard on tracked paths, every policy, a
   }
 }
 
+namespace {
+// Per second, how far each agent on the scene moved from the second's first frame to its last:
+// the samples behind the simulation's mean speed, recomputed from a trajectories file.
+std::vector<double> perSecondMoves(const crowd::Trajectories& t, int framesPerSecond, int seconds) {
+  std::vector<double> moves;
+  for (const crowd::Track& track : t.tracks) {
+    std::map<long, glm::vec2> at;  // frame → position
+    for (const crowd::TrackPoint& p : track.points)
+      at[std::lround(p.time / t.secondsPerFrame)] = p.position;
+    for (int s = 0; s < seconds; ++s) {
+      auto from = at.find(long(s * framesPerSecond)), to = at.find(long((s + 1) * framesPerSecond));
+      if (from != at.end() && to != at.end())
+        moves.push_back(double(glm::length(to->second - from->second)));
+    }
+  }
+  return moves;
+}
+}  // namespace
+
+TEST_CASE("throng crowd simulate --trajectories-out: every step, read back as the simulation ran") {
+  auto dir = test::freshDirectory("crowd_simulate_trajectories");
+  auto tracks = writeTracks(dir);
+  auto board = dir / "board.png";
+  REQUIRE(test::runThrong("storyboard example --seed 5 --out " + board.string()).exitCode == 0);
+  const std::string simulate = "crowd simulate --cpu --storyboard " + board.string() +
+                               " --trajectories " + tracks.string() + " --policy none --seconds 3";
+  const auto out = dir / "agents.txt";
+  test::CommandResult r = test::runThrong(simulate + " --json --trajectories-out " + out.string());
+  REQUIRE_MESSAGE(r.exitCode == 0, r.output);
+  const nlohmann::json doc = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+  const nlohmann::json& run = doc["runs"][0];
+  const size_t agents = doc["agents"].get<size_t>();
+  CHECK(doc["trajectories_out"] == out.string());
+
+  const crowd::Trajectories t = crowd::loadTrajectories(out);
+  CHECK(t.format == crowd::TrajectoryFormat::PedPy);
+  CHECK(t.secondsPerFrame == doctest::Approx(0.05));
+  CHECK(t.tracks.size() == agents);
+  // Frame 0 is the start, then one frame per step: 3 s at 0.05 s.
+  CHECK(run["steps"] == 60);
+  for (const crowd::Track& track : t.tracks) CHECK(track.points.size() == 61);
+  // The positions are the simulated ones: the per-second moves give the reported mean speed.
+  const std::vector<double> moves = perSecondMoves(t, 20, 3);
+  CHECK(moves.size() == run["speed_samples"].get<size_t>());
+  double sum = 0.0;
+  for (double m : moves) sum += m;
+  CHECK(sum / double(moves.size()) ==
+        doctest::Approx(run["mean_speed"].get<double>()).epsilon(1e-4));
+
+  // `crowd metrics` reads the file back as tracked people.
+  test::CommandResult metrics = test::runThrong(
+      "crowd metrics --cpu --policy none --seconds 2 "
+      "--json --trajectories " +
+      out.string());
+  REQUIRE_MESSAGE(metrics.exitCode == 0, metrics.output);
+  const nlohmann::json m = nlohmann::json::parse(metrics.output.substr(metrics.output.find('{')));
+  CHECK(m["files"][0]["people"] == agents);
+
+  // CSV: every agent in every frame, with the header the render command writes.
+  const auto csv = dir / "agents.csv";
+  r = test::runThrong(simulate + " --trajectories-out " + csv.string());
+  REQUIRE_MESSAGE(r.exitCode == 0, r.output);
+  CHECK(r.output.find("trajectories: " + csv.string()) != std::string::npos);
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  CHECK(line == "id,frame,time,x,y,z,heading,speed,group,state");
+  size_t rows = 0;
+  while (std::getline(in, line)) ++rows;
+  CHECK(rows == agents * 61);
+
+  // One file holds one run; a bad name is refused before the run.
+  r = test::runThrong(simulate + " --policy all --trajectories-out " + (dir / "all.txt").string());
+  CHECK(r.exitCode == 1);
+  CHECK(r.output.find("records one run; give one --policy") != std::string::npos);
+  r = test::runThrong(simulate + " --trajectories-out " + (dir / "agents.dat").string());
+  CHECK(r.exitCode == 1);
+  CHECK(r.output.find("expected a .txt (PedPy 'id frame x y z') or .csv") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "all.txt"));
+}
+
 TEST_CASE("throng crowd metrics: replays the people with the CPU twin") {
   auto dir = test::freshDirectory("crowd_metrics");
   auto tracks = writeTracks(dir);
@@ -80,9 +164,8 @@ TEST_CASE("throng crowd: bad input is reported, not crashed on") {
                       tracks.string() + " --policy boids");
   CAPTURE(boids.output);
   CHECK(boids.exitCode == 2);
-  CHECK(boids.output.find(
-            "error: --policy: boids not in {anticipatory,published,none,ttc,rule,all}") !=
-        std::string::npos);
+  CHECK(boids.output.find("error: --policy: unknown policy 'boids': expected anticipatory, "
+                          "published, none, ttc, rule or all") != std::string::npos);
   expectError("crowd simulate --storyboard " + board.string() + " --trajectories " +
                   (dir / "none.txt").string(),
               (dir / "none.txt").string() + ": cannot open");
@@ -97,7 +180,18 @@ TEST_CASE("throng crowd: bad input is reported, not crashed on") {
               (dir / "lonely.txt").string() + ": no tracked person spans two whole seconds");
   expectError("crowd metrics --cpu --body-radius 0 --trajectories " + tracks.string(),
               "--body-radius 0: expected 0 < metres <= 10");
-  expectError("crowd bench --agents 0", "--agents: each count must be 1..1000000, got 0");
-  expectError("crowd bench --numbering sideways",
-              "--numbering: expected grid or random, got 'sideways'");
+  // Counts and choices checked while parsing: usage errors, before any device is opened.
+  auto expectUsage = [](const std::string& args, const std::string& text) {
+    test::CommandResult r = test::runThrong(args);
+    CAPTURE(args);
+    CAPTURE(r.output);
+    CHECK(r.exitCode == 2);
+    CHECK(r.output.find("error: " + text) != std::string::npos);
+  };
+  expectUsage("crowd bench --agents 10 0", "--agents: expected 1..1000000 agents, got 0");
+  expectUsage("crowd bench --numbering sideways",
+              "--numbering: unknown numbering 'sideways': expected grid or random");
+  expectUsage("crowd simulate --storyboard " + board.string() + " --trajectories " +
+                  tracks.string() + " --seconds 0.5",
+              "--seconds: expected 1..100000 seconds, got 0.5");
 }
