@@ -3,6 +3,7 @@
 // bits at a length quantum, 16-bit coefficients in per-basis steps, entropy-coded in the file
 // (Kim et al. 2013, §6). `cloth explore` and `cloth info` live in
 // cmd_cloth.cpp; both files get-or-create the `cloth` parent command.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +19,8 @@
 #include "core/binary_io.h"
 #include "core/error.h"
 #include "core/file_io.h"
+#include "core/log.h"
+#include "progress.h"
 #include "secondary/offline/cloth_compress.h"
 #include "secondary/offline/explore_file.h"
 #include "secondary/offline/secondary_graph.h"
@@ -45,7 +49,13 @@ struct CompressArgs {
   unsigned threads = 0;
   std::optional<float> bucketWidth;
   bool json = false, quiet = false;
+  bool strict = false;            // a missed --target-error is an error and nothing is written
+  bool targetErrorGiven = false;  // set from the command line: --bases alone sets no target
 };
+
+// The stages compressCloth announces, in order; "reweight" and "refine" run only when needed.
+constexpr const char* kStages[] = {"mean",     "svd",    "bases", "quantize",
+                                   "reweight", "refine", "error"};
 
 // The run graph's bucket width: the option, else the cape's config, else the width that gives
 // the graph's bucket count (buckets 0 … B−1 at w = b / (B − 1)).
@@ -61,11 +71,34 @@ float bucketWidthOf(const CompressArgs& a, const sec::ExploreFile& file) {
   return buckets > 1 ? 1.0f / float(buckets - 1) : 1.0f;
 }
 
-json reportJson(const sec::ClothDatabase& db, const std::string& in, const std::string& out,
-                double seconds) {
+std::string formatMillimetres(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f mm", 1000.0 * metres);
+  return text;
+}
+
+// Whether the result must meet --target-error: always when the error picks the basis count.
+bool targetApplies(const CompressArgs& a) {
+  return a.targetError > 0.0f && (a.bases == 0 || a.targetErrorGiven);
+}
+
+bool targetMissed(const CompressArgs& a, const sec::CompressionReport& r) {
+  return targetApplies(a) && r.maxError > a.targetError;
+}
+
+// The result's largest error against the target, in the words of the warning and the error.
+std::string targetMessage(const sec::CompressionReport& r, float target) {
+  return concat("max reconstruction error ", formatMillimetres(r.maxError),
+                " misses --target-error ", formatMillimetres(target));
+}
+
+json reportJson(const sec::ClothDatabase& db, const CompressArgs& a, double seconds) {
   json j = sec::compressionReportJson(db);
-  j["input"] = in;
-  j["output"] = out;
+  j["schema"] = "throng.cloth_compress";
+  j["version"] = 1;
+  j["target_met"] = !targetMissed(a, db.report);
+  j["input"] = a.in;
+  j["output"] = a.out;
   j["seconds"] = seconds;
   const sec::CompressionReport& r = db.report;
   j["refine"] = {{"states_above_target", r.statesAboveTarget},
@@ -82,9 +115,6 @@ void runCompress(const CompressArgs& a) {
   if (!(a.coefficientQuantum >= 0.0f && a.coefficientQuantum < 1.0f))
     fail("--coefficient-quantum ", a.coefficientQuantum, ": expected metres in [0, 1)");
   if (!(a.minRatio >= 0.0)) fail("--min-ratio ", a.minRatio, ": expected ≥ 0 (0: no size cap)");
-  if (a.maxBases < 1 || a.maxBases > 4096) fail("--max-bases ", a.maxBases, ": expected 1..4096");
-  if (a.reweightPasses > 8) fail("--reweight-passes ", a.reweightPasses, ": expected 0..8");
-  if (a.bases > 4096) fail("--bases ", a.bases, ": expected 0 (by error) or 1..4096");
   if (a.bucketWidth && !(*a.bucketWidth > 0.0f && *a.bucketWidth <= 1.0f))
     fail("--bucket-width ", *a.bucketWidth, ": expected (0, 1]");
   const std::filesystem::path outPath = a.out;
@@ -120,19 +150,35 @@ void runCompress(const CompressArgs& a) {
   options.powerIterations = a.powerIterations;
   options.seed = a.seed;
   options.threads = a.threads;
-  if (!a.quiet)
+  // The stages are all compressCloth reports: the bar counts them (the SVD and the refinement
+  // take most of the time, so the ETA is rough).
+  std::optional<Progress> progress;
+  if (!a.quiet) {
+    std::fprintf(stderr, "compress: %u cloth frames × %u vertices\n", frames.stateCount,
+                 frames.vertexCount);
+    progress.emplace("compress", std::size(kStages));
     options.progress = [&](const char* stage) {
-      std::fprintf(stderr, "compress: %s (%u frames × %u vertices)\n", stage, frames.stateCount,
-                   frames.vertexCount);
+      const auto at = std::find_if(std::begin(kStages), std::end(kStages),
+                                   [&](const char* s) { return std::string_view(s) == stage; });
+      progress->stage(at - std::begin(kStages), stage);
     };
+  }
   options.clips = file.clips;
   sec::ClothDatabase db = sec::compressCloth(frames, file.mesh.triangles, std::move(primary),
                                              std::move(playback), options);
+  if (progress) {
+    progress->stage(std::size(kStages), "done");
+    progress->finish();
+  }
+  const bool missed = targetMissed(a, db.report);
+  if (missed && a.strict)
+    fail("--strict: ", targetMessage(db.report, a.targetError), "; ", a.out, " not written");
   sec::writeClothDatabase(outPath, db);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (missed) logWarning(targetMessage(db.report, a.targetError));
 
-  json report = reportJson(db, a.in, a.out, seconds);
+  json report = reportJson(db, a, seconds);
   if (a.json) {
     std::cout << report.dump(2) << '\n';
     return;
@@ -171,19 +217,22 @@ void addClothCompressCommand(CLI::App& app) {
   cmd->add_option("--out,-o", a->out, "The compressed database (.tsc, written atomically)")
       ->required();
   cmd->add_option("--bases", a->bases,
-                  "Number of bases (default: the fewest meeting --target-error)");
+                  "Number of bases (default: the fewest meeting --target-error)")
+      ->check(CLI::Range(0, 4096));
   cmd->add_option("--target-error", a->targetError,
                   "Largest vertex error (m): picks the basis count, and the reweighting and the "
                   "coefficient refinement aim at it")
       ->capture_default_str();
   cmd->add_option("--reweight-passes", a->reweightPasses,
                   "SVD passes reweighted towards the worst states when the bases miss the target")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Range(0, 8));
   cmd->add_option("--refine-steps", a->refineSteps,
                   "Coefficient steps per state chosen for its largest error (0: none)")
       ->capture_default_str();
   cmd->add_option("--max-bases", a->maxBases, "Cap on the basis count chosen by error")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Range(1, 4096));
   cmd->add_option(
          "--quantum", a->quantum,
          "Length quantum (m): a basis takes 8 bits when its range × m_i / 255 fits it, else 16")
@@ -202,8 +251,13 @@ void addClothCompressCommand(CLI::App& app) {
                   "Speed-bucket width of the run graph (default: the garment's, else from the "
                   "graph's bucket count)");
   cmd->add_flag("--json", a->json, "Print the report as JSON");
-  cmd->add_flag("--quiet", a->quiet, "No progress lines");
-  cmd->callback([a] { runCompress(*a); });
+  cmd->add_flag("--quiet", a->quiet, "No progress bar or lines");
+  cmd->add_flag("--strict", a->strict,
+                "A result above --target-error is an error (exit 1) and no file is written");
+  cmd->callback([a, cmd] {
+    a->targetErrorGiven = cmd->count("--target-error") > 0;
+    runCompress(*a);
+  });
 }
 
 const CommandRegistration kRegistration("cloth_compress", addClothCompressCommand);

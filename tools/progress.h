@@ -11,6 +11,9 @@ class Progress {
   Progress(std::string what, long long total);
   // `done` units finished; `detail` is appended to plain lines (e.g. the frame's GPU times).
   void update(long long done, const std::string& detail = {});
+  // For work known only as named stages: `done` of the total units are finished and `name`
+  // starts. The bar shows the stage; without a terminal every stage gets its own line.
+  void stage(long long done, const std::string& name);
   void finish();  // ends the bar's line on a terminal
 
  private:
@@ -19,6 +22,7 @@ class Progress {
   long long lastLine_ = 0;
   bool terminal_;
   bool drawn_ = false;
+  void draw(long long done, const std::string& label);
   std::chrono::steady_clock::time_point start_;
 };
 

@@ -1,6 +1,7 @@
 // `throng cloth compress` end to end on a small explored cape, and its error paths.
 #include <doctest/doctest.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,10 @@ std::filesystem::path exploredCape(const std::filesystem::path& dir) {
   REQUIRE(r.exitCode == 0);
   return tsg;
 }
+// The --json report; a missed --target-error puts a warning line before it (stderr).
+nlohmann::json reportOf(const std::string& output) {
+  return nlohmann::json::parse(output.substr(output.find('{')));
+}
 }  // namespace
 
 TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the result") {
@@ -32,7 +37,7 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
                                           tsc.string() + " --json --quiet");
   INFO(r.output);
   REQUIRE(r.exitCode == 0);
-  nlohmann::json report = nlohmann::json::parse(r.output);
+  nlohmann::json report = reportOf(r.output);
   secondary::ClothDatabase db = secondary::readClothDatabase(tsc);
   CHECK(report["states"] == db.stateCount());
   CHECK(report["vertices"] == 96);
@@ -63,13 +68,59 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
   r = test::runThrong("cloth compress " + tsg.string() + " --out " + (dir / "b8.tsc").string() +
                       " --bases 8 --quantum 0.001 --json --quiet");
   REQUIRE(r.exitCode == 0);
-  CHECK(nlohmann::json::parse(r.output)["bases"] == 8);  // given: the ratio cap does not apply
+  CHECK(reportOf(r.output)["bases"] == 8);  // given: the ratio cap does not apply
   // The default size cap (100:1) against none: the cap keeps fewer bases on this small cape.
   r = test::runThrong("cloth compress " + tsg.string() + " --out " + (dir / "free.tsc").string() +
                       " --min-ratio 0 --json --quiet");
   REQUIRE(r.exitCode == 0);
-  CHECK(nlohmann::json::parse(r.output)["bases"].get<int>() > report["bases"].get<int>());
+  CHECK(reportOf(r.output)["bases"].get<int>() > report["bases"].get<int>());
   CHECK(report["coefficient_quantum_m"].get<double>() == doctest::Approx(0.0003));
+}
+
+TEST_CASE("cloth compress: a missed --target-error warns, and with --strict fails unwritten") {
+  std::filesystem::path dir = test::freshDirectory("cloth_compress_target");
+  std::filesystem::path tsg = exploredCape(dir);
+  // 10 µm is far below the 0.3 mm quantum: missed. Without --quiet, one plain line per stage.
+  const std::filesystem::path missed = dir / "missed.tsc";
+  test::CommandResult r = test::runThrong("cloth compress " + tsg.string() + " --out " +
+                                          missed.string() + " --target-error 0.00001 --json");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(std::filesystem::exists(missed));
+  const nlohmann::json report = reportOf(r.output);
+  CHECK(report["schema"] == "throng.cloth_compress");
+  CHECK(report["version"] == 1);
+  CHECK(report["target_met"] == false);
+  const double error = report["max_reconstruction_error_m"].get<double>();
+  CHECK(error > 0.00001);
+  char figures[96];
+  std::snprintf(figures, sizeof figures,
+                "warning: max reconstruction error %.2f mm misses --target-error 0.01 mm",
+                1000.0 * error);
+  CHECK(r.output.find(figures) != std::string::npos);
+  CHECK(r.output.find("compress: svd (1/7 done)") != std::string::npos);
+  CHECK(r.output.find("compress: error (6/7 done)") != std::string::npos);
+
+  // --strict: exit 1 and no file, not even a temporary one.
+  const std::filesystem::path strict = dir / "strict.tsc";
+  r = test::runThrong("cloth compress " + tsg.string() + " --out " + strict.string() +
+                      " --target-error 0.00001 --strict --quiet");
+  CHECK(r.exitCode == 1);
+  CHECK(r.output.find("error: --strict: max reconstruction error") != std::string::npos);
+  CHECK(r.output.find(strict.string() + " not written") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(strict));
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++files;
+  CHECK(files == 2);  // the graph and missed.tsc
+
+  // A target the result meets: --strict writes the file and nothing warns.
+  r = test::runThrong("cloth compress " + tsg.string() + " --out " + strict.string() +
+                      " --target-error 0.5 --strict --quiet --json");
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(reportOf(r.output)["target_met"] == true);
+  CHECK(r.output.find("warning") == std::string::npos);
+  CHECK(std::filesystem::exists(strict));
 }
 
 TEST_CASE("cloth compress: bad input and options fail clearly and write nothing") {
