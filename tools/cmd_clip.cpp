@@ -79,21 +79,21 @@ nlohmann::json toJson(const anim::RawClip& raw, const anim::UnitsGuess& units,
       {"version", 1},
       {"file", options.file},
       {"joints", joints},
-      {"jointCount", raw.skeleton.jointCount()},
+      {"joint_count", raw.skeleton.jointCount()},
       {"frames", raw.frameCount},
-      {"frameTime", tidy(raw.frameTime)},
+      {"frame_time", tidy(raw.frameTime)},
       {"units",
        {{"label", units.label},
-        {"metresPerUnit", tidy(units.metresPerUnit)},
-        {"height", tidy(units.heightInUnits * units.metresPerUnit)},  // metres
-        {"heightInUnits", tidy(units.heightInUnits)}}},
+        {"metres_per_unit", tidy(units.metresPerUnit)},
+        {"height_m", tidy(units.heightInUnits * units.metresPerUnit)},
+        {"height_in_units", tidy(units.heightInUnits)}}},
   };
   if (loop) {
     out["loop"] = {{"start", loop->start},
                    {"end", loop->end},
                    {"length", loop->length()},
                    {"error", tidy(loop->error)},
-                   {"frameTime", tidy(kLoopFrameTime)}};
+                   {"frame_time", tidy(kLoopFrameTime)}};
   }
   return out;
 }
@@ -110,8 +110,9 @@ void printText(const anim::RawClip& raw, const anim::UnitsGuess& units,
   std::printf("frames: %d\n", raw.frameCount);
   std::printf("frame time: %g s (%.1f fps, %.2f s)\n", raw.frameTime, 1.0 / raw.frameTime,
               raw.frameCount * double(raw.frameTime));
-  std::printf("units: %s (%g m per unit), standing height %.2f m (%g units)\n", units.label.c_str(),
-              units.metresPerUnit, units.heightInUnits * units.metresPerUnit, units.heightInUnits);
+  std::printf("units: %s (%.4g m per unit), standing height %.2f m (%.1f units)\n",
+              units.label.c_str(), units.metresPerUnit, units.heightInUnits * units.metresPerUnit,
+              units.heightInUnits);
   if (loop) {
     std::printf("loop (at 30 fps): frames %d..%d, length %d (%.2f s), error %.4f\n", loop->start,
                 loop->end, loop->length(), loop->length() * kLoopFrameTime, loop->error);

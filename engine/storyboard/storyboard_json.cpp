@@ -7,6 +7,7 @@ namespace throng::storyboard {
 namespace {
 using Json = JsonDocument;
 constexpr int64_t kLimit = 1'000'000;
+constexpr const char* kStoryboardSchema = "throng.storyboard";
 
 int intField(const Json& object, const char* key, const std::string& where) {
   if (!object.contains(key) || !object[key].is_number_integer() ||
@@ -26,6 +27,8 @@ Storyboard storyboardFrom(const Json& root, const std::string& source);
 
 std::string storyboardToJson(const Storyboard& storyboard) {
   Json root;
+  root["schema"] = kStoryboardSchema;
+  root["version"] = 1;
   root["width"] = storyboard.width;
   root["height"] = storyboard.height;
   Json agents = Json::array();
@@ -55,6 +58,14 @@ Storyboard storyboardFromJson(std::string_view text, const std::string& source) 
 namespace {
 Storyboard storyboardFrom(const Json& root, const std::string& source) {
   if (!root.is_object()) fail(source, ": expected an object {\"width\", \"height\", \"agents\"}");
+  // Files written before the schema was added have neither key; a file that names another
+  // document or version is refused rather than misread.
+  if (root.contains("schema") &&
+      (!root["schema"].is_string() || root["schema"].get<std::string>() != kStoryboardSchema))
+    fail(source, ": expected \"schema\": \"", kStoryboardSchema, "\" (agents of a storyboard)");
+  if (root.contains("version") &&
+      (!root["version"].is_number_integer() || root["version"].get<int64_t>() != 1))
+    fail(source, ": expected \"version\": 1");
   Storyboard storyboard;
   storyboard.width = intField(root, "width", source);
   storyboard.height = intField(root, "height", source);

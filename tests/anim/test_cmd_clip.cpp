@@ -63,10 +63,12 @@ TEST_CASE("throng clip info --json reports a CMU capture") {
   CAPTURE(run.output);
   REQUIRE(run.status == 0);
   nlohmann::json info = nlohmann::json::parse(run.output);
+  CHECK(info["schema"] == "throng.clip_info");
+  CHECK(info["version"] == 1);
   CHECK(info["file"] == file.string());
-  CHECK(info["jointCount"] == 31);
+  CHECK(info["joint_count"] == 31);
   CHECK(info["frames"] == 149);
-  CHECK(info["frameTime"].get<double>() == doctest::Approx(0.0083333));
+  CHECK(info["frame_time"].get<double>() == doctest::Approx(0.0083333));
   REQUIRE(info["joints"].size() == 31);
   CHECK(info["joints"][0]["name"] == "Hips");
   CHECK(info["joints"][0]["parent"] == -1);
@@ -77,9 +79,9 @@ TEST_CASE("throng clip info --json reports a CMU capture") {
   CHECK(info["joints"][2]["channels"] == nlohmann::json({"Zrotation", "Yrotation", "Xrotation"}));
   // The data's README: one unit ≈ 0.0564 m; a person stands 1.5–2.0 m.
   CHECK(!info["units"]["label"].get<std::string>().empty());
-  CHECK(info["units"]["metresPerUnit"].get<double>() == doctest::Approx(0.0564).epsilon(0.15));
-  CHECK(info["units"]["height"].get<double>() > 1.4);
-  CHECK(info["units"]["height"].get<double>() < 2.1);
+  CHECK(info["units"]["metres_per_unit"].get<double>() == doctest::Approx(0.0564).epsilon(0.15));
+  CHECK(info["units"]["height_m"].get<double>() > 1.4);
+  CHECK(info["units"]["height_m"].get<double>() < 2.1);
   // 149 frames at 120 fps → 37 at 30 fps; a running cycle is ~0.6–0.8 s (18–24 frames).
   const auto& loop = info["loop"];
   CHECK(loop["length"] == loop["end"].get<int>() - loop["start"].get<int>());

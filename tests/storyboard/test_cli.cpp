@@ -64,7 +64,9 @@ TEST_CASE("cli: storyboard decode --json prints the agents and invalid glyphs") 
   const Run r = run("storyboard decode '" + file.string() + "' --json", dir.path);
   REQUIRE(r.exitCode == 0);
   const nlohmann::json json = nlohmann::json::parse(r.out);
-  CHECK(r.out.rfind("{\"width\":50,\"height\":50,\"agents\":[", 0) == 0);
+  CHECK(r.out.rfind("{\"schema\":\"throng.storyboard\",\"version\":1,\"width\":50,\"height\":50,"
+                    "\"agents\":[",
+                    0) == 0);
   CHECK(json["width"] == 50);
   CHECK(json["height"] == 50);
   REQUIRE(json["agents"].size() == expected.glyphs.size());

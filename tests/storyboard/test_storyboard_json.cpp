@@ -15,13 +15,28 @@ TEST_CASE("storyboard json: the exact decode --json form") {
   s.invalid = {{5, 50, "sum 19 is not a T glyph"}};
   CHECK(
       storyboardToJson(s) ==
-      R"({"width":90,"height":60,"agents":[{"x":10,"y":12,"heading":"Down","state":"hurried","action":"walk","group":0},)"
+      R"({"schema":"throng.storyboard","version":1,"width":90,"height":60,"agents":[{"x":10,"y":12,"heading":"Down","state":"hurried","action":"walk","group":0},)"
       R"({"x":40,"y":12,"heading":"TopLeft","state":"stroll","action":"talk","group":1}],)"
       R"("invalid":[{"x":5,"y":50,"reason":"sum 19 is not a T glyph"}]})");
   const Storyboard back = storyboardFromJson(storyboardToJson(s), "s.json");
   CHECK(back.width == 90);
   CHECK(back.height == 60);
   CHECK(back.glyphs == s.glyphs);
+}
+
+TEST_CASE("storyboard json: files without schema and version still read; others' are refused") {
+  const Storyboard old = storyboardFromJson(R"({"width":9,"height":8,"agents":[]})", "old.json");
+  CHECK(old.width == 9);
+  CHECK(old.height == 8);
+  CHECK_THROWS_WITH_AS(
+      storyboardFromJson(R"({"schema":"throng.clip_info","width":9,"height":8,"agents":[]})",
+                         "clip.json"),
+      doctest::Contains("clip.json: expected \"schema\": \"throng.storyboard\""), Error);
+  CHECK_THROWS_WITH_AS(
+      storyboardFromJson(
+          R"({"schema":"throng.storyboard","version":2,"width":9,"height":8,"agents":[]})",
+          "v2.json"),
+      doctest::Contains("v2.json: expected \"version\": 1"), Error);
 }
 
 TEST_CASE("storyboard json: errors name the agent and the expected values") {
