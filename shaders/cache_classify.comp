@@ -29,7 +29,7 @@ void main() {
     // The nearest row; phase · R rounding up to R is row 0 again. Mirrors synth::cacheRow.
     uint row = uint(m.x * float(push.rowCount) + 0.5);
     if (row >= push.rowCount) row = 0u;
-    poseSource[i] = (uint(slot) * push.rowCount + row) * push.jointCount;
+    poseSource[i] = push.dataBase + (uint(slot) * push.rowCount + row) * push.jointCount;
     return;
   }
   poseSource[i] = kPoseInJoints;

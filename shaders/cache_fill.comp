@@ -32,7 +32,7 @@ void main() {
   uint slot = freshSlots[1u + id / push.rowCount], row = id % push.rowCount;
   float w = bucketSpeed(uint(slotBucket[slot]), push.bucketWidth);
   float phase = float(row) / float(push.rowCount);  // synth::cacheRowPhase
-  uint base = (slot * push.rowCount + row) * uint(kJointCount);
+  uint base = push.dataBase + (slot * push.rowCount + row) * uint(kJointCount);
   composePose(base, clipSample(phase, push.slowFrames), clipSample(phase, push.fastFrames), w,
               vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0, uvec2(0xFFFFFFFFu));
 }

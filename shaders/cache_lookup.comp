@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Motion cache, step 1 (one invocation per character): flag the speed bucket it needs this frame.
+// Motion cache, step 1 (one invocation per character of a group): flag the speed bucket it needs this frame.
 #include "shared_types.h"
 #include "speed_buckets.glsl"
 
@@ -11,7 +11,7 @@ layout(std430, binding = 2) writeonly buffer Requested { uint requested[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= push.characterCount) return;
+  if (gl_GlobalInvocationID.x >= push.characterCount) return;
+  uint i = push.firstCharacter + gl_GlobalInvocationID.x;
   requested[speedBucket(motion[i].y, push.bucketWidth, counters.bucketCount)] = 1u;
 }

@@ -37,8 +37,8 @@ vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, float u) {
 }
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= push.characterCount) return;
+  if (gl_GlobalInvocationID.x >= push.characterCount) return;
+  uint i = push.firstCharacter + gl_GlobalInvocationID.x;
   vec4 place = placement[i];
   vec4 m = motion[i];
   float w = m.y;

@@ -43,6 +43,10 @@ THRONG_STRUCT(RootMotionPush) {
   uint seed;
   float minSpeedWeight;   // range of the new targets
   float maxSpeedWeight;
+  uint firstCharacter;    // the group [firstCharacter, firstCharacter + characterCount)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // Push constants of the pose pass (blend + hierarchy + A = J·M).
@@ -77,13 +81,13 @@ THRONG_STRUCT(CacheCounters) {
 
 // Push constants of the cache passes.
 THRONG_STRUCT(CachePush) {
-  uint characterCount;    // classify: characters of this chunk
+  uint characterCount;    // lookup: the group's characters; classify: this chunk's
   uint rowCount;          // poses per entry, at phases r / rowCount (synth::cacheRowCount)
   uint slotCount;         // capacity (fill pass: slots × rows invocations)
   float bucketWidth;
-  uint firstCharacter;    // classify: the chunk
+  uint firstCharacter;    // lookup: the group's first character; classify: the chunk's
   uint chunk;             // classify: the chunk's uncached count is at listCounts[chunk]
-  uint pad2;
+  uint dataBase;          // fill, classify: the cache's first matrix in the (shared) data buffer
   uint jointCount;        // classify: cached pose entries are jointCount matrices apart
   uint slowFrames;        // fill: rows of the slow and fast motion textures
   uint fastFrames;

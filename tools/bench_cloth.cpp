@@ -4,8 +4,8 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
-#include "render/crowd_frame.h"
 #include "render/offscreen_target.h"
+#include "scene/frame.h"
 #include "scene_options.h"
 #include "scene_storyboard.h"
 #include "secondary/cloth_gpu_layer.h"
@@ -28,13 +28,14 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
   const Size size = parseSize(o.size);
   anim::ClipPair clips = loadSceneClips(scene);
   secondary::checkClothClips(db, o.cloth, clips);  // capes made for this skeleton and these clips
-  synth::SpeedSchedule speeds = sceneSpeedSchedule(scene);
-  const render::Camera camera = sceneCamera(scene);
-  SceneCrowd crowd(context, scene, clips);
+  const std::unique_ptr<scene::Scene> crowd = makeScene(context, scene, clips);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  const render::FrameTargets targets = render::offscreenFrameTargets(target);
-  secondary::ClothLayer cloth(context, db, crowd.crowd(), render::kColorFormat,
+  scene::FrameSettings settings;
+  settings.camera = sceneCamera(scene);
+  settings.targets = render::offscreenFrameTargets(target);
+  settings.groundExtent = sceneGroundExtent(scene);
+  secondary::ClothLayer cloth(context, db, crowd->crowd(), render::kColorFormat,
                               render::kDepthFormat, sceneClothOptions(scene));
 
   gpu::CommandPool pool(context);
@@ -44,18 +45,16 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
   std::vector<double> synthMs, renderMs, frameMs, advance, mark, decode, splat, draw, total;
   for (int f = 0; f < o.warmup + o.frames; ++f) {
     timestamps.reset();
-    render::FrameHooks hooks = cloth.hooks(0);
-    crowd.addHooks(hooks, scene.dt);
+    const scene::SceneStep step = crowd->advance(scene.dt);
     gpu::beginCommands(cmd);
-    render::FrameTimestamps marks = render::recordCrowdFrame(
-        cmd, context, crowd.programs(), crowd.synth(), renderer, camera, sceneGroundExtent(scene),
-        targets, scene.dt, timestamps, 0, speeds.advance(scene.dt), false, &hooks);
+    scene::FrameTimestamps marks = scene::recordFrame(cmd, context, *crowd, step, renderer, &cloth,
+                                                      settings, timestamps);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();
     fence.reset();
     if (f < o.warmup) continue;
-    const render::FrameTimings t = render::readFrameTimings(timestamps, marks);
+    const scene::FrameTimings t = scene::readFrameTimings(timestamps, marks);
     const secondary::ClothTimings c = cloth.timings(0);
     synthMs.push_back(t.synthesisMs);
     renderMs.push_back(t.renderMs);

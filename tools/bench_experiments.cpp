@@ -45,7 +45,7 @@ CacheRun runWithSpeedChanges(const gpu::Context& context, const synth::SynthProg
     double frameMs = timer.frame(programs, synth, o.dt, schedule.advance(o.dt));
     if (f >= 2) ms.push_back(frameMs);
   }
-  return {median(ms), synth::readCacheStats(synth.cache)};
+  return {median(ms), synth::readCacheStats(synth)};
 }
 
 }  // namespace

@@ -17,7 +17,7 @@
 #include "core/file_io.h"
 #include "core/log.h"
 #include "gpu/commands.h"
-#include "render/crowd_frame.h"
+#include "scene/frame.h"
 #include "render/offscreen_target.h"
 #include "scene_options.h"
 #include "stats.h"
@@ -83,7 +83,7 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
     if (f >= o.warmup) ms.push_back(frameMs);
   }
   const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache"};
-  if (cache.enabled && synth::readCacheStats(synth.cache).bytesUsed > cache.budgetBytes)
+  if (cache.enabled && synth::readCacheStats(synth).bytesUsed > cache.budgetBytes)
     fail("motion cache exceeded its budget");
   return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames};
 }
@@ -106,8 +106,7 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
           frames};
 }
 
-Row benchRender(const gpu::Context& context, const synth::SynthPrograms& programs,
-                const anim::MotionPair& pair, const anim::Skeleton& skeleton, const BenchOptions& o,
+Row benchRender(const gpu::Context& context, const anim::MotionPair& pair, const anim::Skeleton& skeleton, const BenchOptions& o,
                 Variant variant) {
   Size size = parseSize(o.size);
   crowd::ScenarioOptions scenario;
@@ -118,11 +117,16 @@ Row benchRender(const gpu::Context& context, const synth::SynthPrograms& program
   if (cache.enabled)
     for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
+  scene::SceneSetup setup;
+  setup.pairs.push_back(pair);
+  setup.groupFirst = {0, uint32_t(crowd.size())};
+  setup.crowd = std::move(crowd);
+  const scene::Scene scene(context, std::move(setup), cache, lod);
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  const render::FrameTargets targets = render::offscreenFrameTargets(target);
-  render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  scene::FrameSettings settings;
+  settings.camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  settings.targets = render::offscreenFrameTargets(target);
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
   gpu::Fence fence(context);
@@ -131,14 +135,16 @@ Row benchRender(const gpu::Context& context, const synth::SynthPrograms& program
   for (int f = 0; f < o.warmup + o.frames; ++f) {
     timestamps.reset();
     gpu::beginCommands(cmd);
-    render::FrameTimestamps marks = render::recordCrowdFrame(
-        cmd, context, programs, synth, renderer, camera, 100.0f, targets, kDt, timestamps);
+    scene::SceneStep step;
+    step.dt = kDt;
+    scene::FrameTimestamps marks =
+        scene::recordFrame(cmd, context, scene, step, renderer, nullptr, settings, timestamps);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();
     fence.reset();
     if (f < o.warmup) continue;
-    render::FrameTimings t = render::readFrameTimings(timestamps, marks);
+    scene::FrameTimings t = scene::readFrameTimings(timestamps, marks);
     synthMs.push_back(t.synthesisMs);
     renderMs.push_back(t.renderMs);
   }
@@ -259,8 +265,8 @@ void runBench(BenchOptions& o) {
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
   if (!o.clothOnly) {
-    report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::Full));
-    report(benchRender(context, programs, pair, clips.slow.skeleton, o, Variant::LodCache));
+    report(benchRender(context, pair, clips.slow.skeleton, o, Variant::Full));
+    report(benchRender(context, pair, clips.slow.skeleton, o, Variant::LodCache));
   }
   std::optional<ClothBenchResult> cloth;
   if (!o.cloth.empty()) {

@@ -15,8 +15,8 @@
 #include "gpu/commands.h"
 #include "limit_option.h"
 #include "progress.h"
-#include "render/crowd_frame.h"
 #include "render/offscreen_target.h"
+#include "scene/frame.h"
 #include "scene_options.h"
 #include "scene_storyboard.h"
 #include "scene_trajectories.h"
@@ -90,7 +90,6 @@ struct RenderInputs {
   std::filesystem::path outDir;
   std::unique_ptr<secondary::ClothDatabase> clothDb;
   anim::ClipPair clips;
-  synth::SpeedSchedule speeds;
   render::Camera camera;
 };
 
@@ -117,7 +116,6 @@ void runRender(RenderOptions& o) {
   in.clips = loadSceneClips(o.scene);
   // Capes explored on another skeleton or clip pair would float: refuse them, naming both.
   if (in.clothDb) secondary::checkClothClips(*in.clothDb, o.scene.cloth, in.clips);
-  in.speeds = sceneSpeedSchedule(o.scene);
   in.camera = sceneCamera(o.scene);
   logInfo(concat("clips: ", in.clips.description));
 
@@ -133,15 +131,17 @@ void runRender(RenderOptions& o) {
 void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   const Size size = in.size;
   const std::filesystem::path& outDir = in.outDir;
-  synth::SpeedSchedule& speeds = in.speeds;
-  const render::Camera& camera = in.camera;
-  SceneCrowd scene(context, o.scene, in.clips);  // the scenario's crowd, or the storyboard's
-  const synth::SynthPrograms& programs = scene.programs();
+  // The scenario's crowd, the steered circle or the storyboard's crowd.
+  const std::unique_ptr<scene::Scene> scenePtr = makeScene(context, o.scene, in.clips);
+  scene::Scene& scene = *scenePtr;
   const synth::CrowdSynth& synth = scene.synth();
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  const render::FrameTargets targets = render::offscreenFrameTargets(target);
-  const float groundExtent = sceneGroundExtent(o.scene);
+  scene::FrameSettings settings;
+  settings.camera = in.camera;
+  settings.targets = render::offscreenFrameTargets(target);
+  settings.groundExtent = sceneGroundExtent(o.scene);
+  settings.tintLevels = o.scene.lodTint;
   std::unique_ptr<secondary::ClothLayer> cloth;
   if (in.clothDb)
     cloth = std::make_unique<secondary::ClothLayer>(context, *in.clothDb, scene.crowd(),
@@ -153,7 +153,7 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   VkCommandBuffer cmd = pool.allocate();
   gpu::Fence fence(context);
   gpu::TimestampPool timestamps(context, 8);
-  std::vector<double> synthMs, renderMs;
+  std::vector<double> steerMs, synthMs, renderMs;
   FrameOutputOptions outputOptions;
   if (o.pngs) outputOptions.pngFolder = outDir;
   if (!o.video.empty()) outputOptions.video = o.video;
@@ -166,19 +166,17 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
     timestamps.reset();
-    render::FrameHooks hooks;
-    if (cloth) hooks = cloth->hooks(0);
-    scene.addHooks(hooks, o.scene.dt);
+    const scene::SceneStep step = scene.advance(o.scene.dt);
     gpu::beginCommands(cmd);
-    render::FrameTimestamps marks = render::recordCrowdFrame(
-        cmd, context, programs, synth, renderer, camera, groundExtent, targets, o.scene.dt,
-        timestamps, 0, speeds.advance(o.scene.dt), o.scene.lodTint, &hooks);
+    scene::FrameTimestamps marks = scene::recordFrame(cmd, context, scene, step, renderer,
+                                                      cloth.get(), settings, timestamps);
     render::recordReadback(cmd, target);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();
     fence.reset();
-    render::FrameTimings timings = render::readFrameTimings(timestamps, marks);
+    scene::FrameTimings timings = scene::readFrameTimings(timestamps, marks);
+    steerMs.push_back(timings.steerMs);
     synthMs.push_back(timings.synthesisMs);
     renderMs.push_back(timings.renderMs);
     if (cloth) clothTimes.push_back(cloth->timings(0));
@@ -200,8 +198,13 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   if (!o.video.empty()) where += (where.empty() ? "" : " and ") + o.video;
   std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames,
               scene.count(), synth.jointCount(), size.width, size.height, where.c_str());
-  std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
-              median(synthMs), median(renderMs), context.info().name.c_str());
+  if (scene.steered())
+    std::printf("GPU time per frame (median): steering %.2f ms, synthesis %.2f ms, render %.2f ms"
+                "  [%s]\n",
+                median(steerMs), median(synthMs), median(renderMs), context.info().name.c_str());
+  else
+    std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
+                median(synthMs), median(renderMs), context.info().name.c_str());
   const FrameOutputStats encoded = output.stats();
   std::printf(
       "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on a worker, %.2f ms per "
@@ -211,8 +214,8 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     std::printf("trajectories of %u agents over %d frames written to %s\n", scene.count(), o.frames,
                 o.scene.trajectoriesOut.c_str());
   if (cloth) printClothSummary(*cloth, clothTimes, o.scene.cloth);
-  if (synth.cache.options.enabled) {
-    synth::MotionCacheStats c = synth::readCacheStats(synth.cache);
+  if (synth.cached()) {
+    synth::MotionCacheStats c = synth::readCacheStats(synth);
     std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n",
                 c.hits, c.misses, c.evictions, c.entries, c.bytesUsed / 1048576.0,
                 c.budgetBytes / 1048576.0);

@@ -90,7 +90,7 @@ void validateStoryboardScene(SceneOptions& o) {
   s.extent = 0.5f * float(std::max(board.width, board.height)) * s.cell;
 }
 
-render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
+scene::SceneSetup makeStoryboardSetup(const SceneOptions& o,
                                               const anim::ClipPair* userClips) {
   const StoryboardSceneOptions& s = o.story;
   const sb::Storyboard board = readSceneStoryboard(s);
@@ -128,46 +128,50 @@ render::SteeredCrowdSetup makeStoryboardSetup(const SceneOptions& o,
 
   const std::vector<uint32_t> assigned =
       crowd::assignSources(sources, placed.speedRange, o.scenario.seed, s.trajectories);
-  render::SteeredCrowdSetup setup;
-  setup.paths = crowd::followSources(placed.crowd, sources, assigned, std::vector<float>(n, 1.0f));
+  scene::SceneSetup setup;
+  setup.steering.emplace();
+  crowd::AgentPaths& paths = setup.steering->paths;
+  paths = crowd::followSources(placed.crowd, sources, assigned, std::vector<float>(n, 1.0f));
   std::vector<uint32_t> pairOf(n, 0);
   if (!userClips) pairOf = placed.crowd.clipSet;
-  fitPathsToClips(setup.paths, sources, assigned, pairOf, speeds);
+  fitPathsToClips(paths, sources, assigned, pairOf, speeds);
   setup.crowd = placed.crowd;
   setup.tints = placed.tint;
-  setup.pairFirst.push_back(0);
+  setup.labels = placed.tint;  // the storyboard's groups
+  setup.groupFirst.push_back(0);
   for (size_t k = 0; k < motion.size(); ++k) {
     const uint32_t end = userClips ? uint32_t(n) : placed.setBegin[k + 1];
-    if (end == setup.pairFirst.back()) continue;  // no agent does this action
+    if (end == setup.groupFirst.back()) continue;  // no agent does this action
     setup.pairs.push_back(std::move(motion[k]));
-    setup.pairFirst.push_back(end);
+    setup.groupFirst.push_back(end);
   }
-  setup.avoidance.policy = scenePolicy(s.policy);
-  setup.avoidance.radius = s.radius;
-  setup.avoidance.seed = uint32_t(o.scenario.seed);
+  setup.steering->avoidance.policy = scenePolicy(s.policy);
+  setup.steering->avoidance.radius = s.radius;
+  setup.steering->avoidance.seed = uint32_t(o.scenario.seed);
   logInfo(concat("storyboard ", s.storyboard, ": ", n, " agents (walk ", placed.setBegin[1],
                  ", run ", placed.setBegin[2] - placed.setBegin[1], ", talk ",
                  placed.setBegin[3] - placed.setBegin[2], ", jump ",
                  placed.setBegin[4] - placed.setBegin[3], "; ", board.invalid.size(),
                  " invalid glyphs skipped) following ", sources.size(), " tracked people of ",
-                 s.trajectories, ", avoidance ", policyName(setup.avoidance.policy)));
+                 s.trajectories, ", avoidance ", policyName(setup.steering->avoidance.policy)));
   return setup;
 }
 
-render::SteeredCrowdSetup makeCircleSetup(const SceneOptions& o, anim::MotionPair pair) {
-  render::SteeredCrowdSetup setup;
+scene::SceneSetup makeCircleSetup(const SceneOptions& o, anim::MotionPair pair) {
+  scene::SceneSetup setup;
   setup.crowd = makeSceneCrowd(o);
   setup.crowd.steering = anim::Steering::KeepHeading;  // the avoidance pass sets the heading
-  setup.paths = crowd::circlePaths(setup.crowd, crowd::clipRootSpeed(pair.slow),
-                                   crowd::clipRootSpeed(pair.fast));
+  setup.steering.emplace();
+  setup.steering->paths = crowd::circlePaths(setup.crowd, crowd::clipRootSpeed(pair.slow),
+                                             crowd::clipRootSpeed(pair.fast));
   const uint32_t n = uint32_t(setup.crowd.size());
   setup.tints.resize(n);
   std::iota(setup.tints.begin(), setup.tints.end(), 0u);  // a hue per runner
   setup.pairs.push_back(std::move(pair));
-  setup.pairFirst = {0, n};
-  setup.avoidance.policy = scenePolicy(o.story.policy);
-  setup.avoidance.radius = o.story.radius;
-  setup.avoidance.seed = uint32_t(o.scenario.seed);
+  setup.groupFirst = {0, n};
+  setup.steering->avoidance.policy = scenePolicy(o.story.policy);
+  setup.steering->avoidance.radius = o.story.radius;
+  setup.steering->avoidance.seed = uint32_t(o.scenario.seed);
   return setup;
 }
 
@@ -176,48 +180,21 @@ bool steersCircle(const SceneOptions& o) {
   return o.scenario.name == "circle" && o.speedPeriod == 0.0f;
 }
 
-SceneCrowd::SceneCrowd(const gpu::Context& context, const SceneOptions& o,
-                       const anim::ClipPair& clips) {
-  if (o.storyboard() || steersCircle(o)) {
-    const anim::ClipPair* user = o.slowClip.empty() ? nullptr : &clips;
-    render::SteeredCrowdSetup setup =
-        o.storyboard() ? makeStoryboardSetup(o, user)
-                       : makeCircleSetup(o, anim::makeMotionPair(clips.slow, clips.fast));
-    if (o.storyboard()) groups_ = setup.tints;  // the circle's tints are a hue per runner
-    paths_ = setup.paths;
-    steered_ = std::make_unique<render::SteeredCrowd>(
-        context, std::move(setup), sceneCacheOptions(o), sceneLodOptions(o, clips.slow.skeleton));
-    return;
-  }
-  pair_ = std::make_unique<anim::MotionPair>(anim::makeMotionPair(clips.slow, clips.fast));
-  programs_ = std::make_unique<synth::SynthPrograms>(context, *pair_);
-  synth_ = synth::makeCrowdSynth(context, *pair_, makeSceneCrowd(o), sceneCacheOptions(o),
-                                 sceneLodOptions(o, clips.slow.skeleton));
+scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& clips) {
+  if (o.storyboard()) return makeStoryboardSetup(o, o.slowClip.empty() ? nullptr : &clips);
+  if (steersCircle(o)) return makeCircleSetup(o, anim::makeMotionPair(clips.slow, clips.fast));
+  scene::SceneSetup setup;
+  setup.crowd = makeSceneCrowd(o);
+  setup.pairs.push_back(anim::makeMotionPair(clips.slow, clips.fast));
+  setup.groupFirst = {0, uint32_t(setup.crowd.size())};
+  setup.speeds = sceneSpeedSchedule(o);
+  return setup;
 }
 
-const synth::CrowdSynth& SceneCrowd::synth() const {
-  return steered_ ? steered_->synth() : synth_;
-}
-const synth::SynthPrograms& SceneCrowd::programs() const {
-  return steered_ ? steered_->programs() : *programs_;
-}
-const crowd::CrowdBuffers& SceneCrowd::crowd() const {
-  return steered_ ? steered_->crowd() : synth_.crowd;
-}
-uint32_t SceneCrowd::count() const {
-  return crowd().count;
-}
-
-void SceneCrowd::addHooks(render::FrameHooks& hooks, float dt) {
-  if (steered_) steered_->addHooks(hooks, dt);
-}
-
-std::vector<uint8_t> SceneCrowd::activeAt(double seconds) const {
-  std::vector<uint8_t> active(count(), 1);
-  if (paths_.size() != active.size()) return active;
-  const uint32_t second = uint32_t(std::clamp(std::floor(seconds), 0.0, 4.0e9));
-  for (size_t i = 0; i < active.size(); ++i) active[i] = paths_.active(i, second) ? 1 : 0;
-  return active;
+std::unique_ptr<scene::Scene> makeScene(const gpu::Context& context, const SceneOptions& o,
+                                        const anim::ClipPair& clips) {
+  return std::make_unique<scene::Scene>(context, makeSceneSetup(o, clips), sceneCacheOptions(o),
+                                        sceneLodOptions(o, clips.slow.skeleton));
 }
 
 }  // namespace throng::tools

@@ -4,15 +4,15 @@
 
 namespace throng::tools {
 
-SceneTrajectories::SceneTrajectories(const SceneOptions& o, const SceneCrowd& scene,
+SceneTrajectories::SceneTrajectories(const SceneOptions& o, const scene::Scene& scene,
                                      uint64_t frames) {
   if (o.trajectoriesOut.empty()) return;
   crowd::checkTrajectoryOutput(o.trajectoriesOut, scene.count(), frames);
   writer_ = std::make_unique<crowd::TrajectoryWriter>(o.trajectoriesOut, 1.0 / double(o.dt),
-                                                      scene.groups());
+                                                      scene.labels());
 }
 
-void SceneTrajectories::record(const gpu::Context& context, const SceneCrowd& scene,
+void SceneTrajectories::record(const gpu::Context& context, const scene::Scene& scene,
                                double seconds) {
   if (!writer_) return;
   const std::vector<glm::vec4> placement =

@@ -15,10 +15,10 @@ class SceneTrajectories {
  public:
   // `frames`: how many frames the run records at most (0: not known yet; the writer's row
   // bound applies). Throws Error naming --trajectories-out.
-  SceneTrajectories(const SceneOptions& options, const SceneCrowd& scene, uint64_t frames);
+  SceneTrajectories(const SceneOptions& options, const scene::Scene& scene, uint64_t frames);
   bool enabled() const { return writer_ != nullptr; }
   // After a frame has finished on the GPU; `seconds`: the scene time of that frame.
-  void record(const gpu::Context& context, const SceneCrowd& scene, double seconds);
+  void record(const gpu::Context& context, const scene::Scene& scene, double seconds);
   // Writes the file (atomically); nothing when disabled.
   void finish();
 

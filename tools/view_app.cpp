@@ -81,11 +81,7 @@ void ViewSession::run() {
                      presenter_.generation());
     }
     panelMarks_[frame->slot] = frame->timestamps->write(frame->cmd);
-    if (scene_->steered && scene_->steered->drawMasks())
-      lod_.record(frame->cmd, *scene_->steered->drawMasks(), characterCount(*scene_), frame->slot,
-                  stats_.frames() + 1);
-    else
-      lod_.record(frame->cmd, frameSynth(*scene_), frame->slot, stats_.frames() + 1);
+    lod_.record(frame->cmd, frameSynth(*scene_), frame->slot, stats_.frames() + 1);
     pending_[frame->slot] = true;
 
     const bool lastFrame = o_.frames > 0 && stats_.frames() + 1 >= uint64_t(o_.frames);

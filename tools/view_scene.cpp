@@ -16,10 +16,7 @@ std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const Scen
   if (scene->clothDb) secondary::checkClothClips(*scene->clothDb, options.cloth, clips);
   scene->skeleton = clips.slow.skeleton;
   scene->clipDescription = clips.description;
-  scene->pair = anim::makeMotionPair(clips.slow, clips.fast);
-  if (!options.slowClip.empty())
-    scene->userClips = clips;  // the storyboard scene's pair for every action
-  scene->programs = std::make_unique<synth::SynthPrograms>(context, scene->pair);
+  scene->clips = std::move(clips);
   respawnCrowd(context, *scene, options);
   return scene;
 }
@@ -27,56 +24,35 @@ std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const Scen
 namespace {
 
 // The CPU side of a crowd: everything that may throw before the GPU crowd is replaced.
-struct PreparedCrowd {
-  crowd::Crowd crowd;
-  std::unique_ptr<render::SteeredCrowdSetup> story;
-};
-
-PreparedCrowd prepareCrowd(const ViewScene& scene, const SceneOptions& options) {
+scene::SceneSetup prepareCrowd(const ViewScene& scene, const SceneOptions& options) {
   const crowd::ScenarioOptions& s = options.scenario;
   if (s.characters < 1 || s.characters > 4000000)
     fail("characters: expected 1..4000000, got ", s.characters);
   validateSceneCacheOptions(options);
-  PreparedCrowd prepared;
-  if (options.storyboard()) {
-    prepared.story = std::make_unique<render::SteeredCrowdSetup>(
-        makeStoryboardSetup(options, scene.userClips ? &*scene.userClips : nullptr));
-  } else if (steersCircle(options)) {
-    // The circle scene's runners follow their lanes with avoidance, as in `throng render`.
-    prepared.story = std::make_unique<render::SteeredCrowdSetup>(makeCircleSetup(options, scene.pair));
-  } else {
-    prepared.crowd = makeSceneCrowd(options);
-  }
-  return prepared;
+  return makeSceneSetup(options, scene.clips);
 }
 
 // Replaces the GPU crowd (the GPU is idle); may throw part way, e.g. past a device limit.
 void installCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options,
-                  PreparedCrowd& prepared) {
+                  scene::SceneSetup& prepared) {
   scene.cloth.reset();  // it refers to the old crowd's buffers
-  scene.steered.reset();
-  scene.synth = {};
-  const synth::MotionCacheOptions cache = sceneCacheOptions(options);
-  if (prepared.story)
-    scene.steered = std::make_unique<render::SteeredCrowd>(
-        context, std::move(*prepared.story), cache, sceneLodOptions(options, scene.skeleton));
-  else
-    scene.synth = synth::makeCrowdSynth(context, scene.pair, prepared.crowd, cache,
-                                        sceneLodOptions(options, scene.skeleton));
+  scene.crowd.reset();
+  scene.crowd = std::make_unique<scene::Scene>(context, std::move(prepared),
+                                               sceneCacheOptions(options),
+                                               sceneLodOptions(options, scene.skeleton));
   scene.options = options;
-  scene.speeds = sceneSpeedSchedule(options);
   scene.groundExtent = sceneGroundExtent(options);
   if (scene.clothDb)
     scene.cloth = std::make_unique<secondary::ClothLayer>(
-        context, *scene.clothDb, scene.steered ? scene.steered->crowd() : scene.synth.crowd,
-        scene.colorFormat, render::kDepthFormat, sceneClothOptions(options));
+        context, *scene.clothDb, scene.crowd->crowd(), scene.colorFormat, render::kDepthFormat,
+        sceneClothOptions(options));
 }
 
 }  // namespace
 
 void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOptions& options) {
-  PreparedCrowd next = prepareCrowd(scene, options);
-  const bool hadCrowd = scene.steered || scene.synth.crowd.count > 0;
+  scene::SceneSetup next = prepareCrowd(scene, options);
+  const bool hadCrowd = scene.crowd != nullptr;
   const SceneOptions previous = scene.options;
   context.waitIdle();
   try {
@@ -84,7 +60,7 @@ void respawnCrowd(const gpu::Context& context, ViewScene& scene, const SceneOpti
   } catch (const Error&) {
     // The old crowd's buffers are gone: rebuild it as it was spawned (it fitted before).
     if (hadCrowd) {
-      PreparedCrowd old = prepareCrowd(scene, previous);
+      scene::SceneSetup old = prepareCrowd(scene, previous);
       installCrowd(context, scene, previous, old);
     }
     throw;
@@ -101,10 +77,7 @@ void setLodThresholds(const gpu::Context& context, ViewScene& scene, float midPi
   context.waitIdle();
   const synth::CoverageThresholds thresholds =
       synth::CoverageThresholds::levels(midPixels, nearPixels);
-  if (scene.steered)
-    scene.steered->setLodThresholds(scene.skeleton, thresholds);
-  else
-    synth::setLodThresholds(scene.synth, scene.skeleton, thresholds);
+  scene.crowd->setLodThresholds(scene.skeleton, thresholds);
 }
 
 }  // namespace throng::tools

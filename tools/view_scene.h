@@ -1,13 +1,13 @@
 #pragma once
-// What `throng view` animates: one motion pair, its compiled passes and a crowd that the panel
-// can re-spawn (count, scenario, seed, speed range, motion cache, coverage LOD), with its speed
-// changes and live LOD thresholds.
+// What `throng view` animates: a scene (scene::Scene) that the panel can re-spawn (count,
+// scenario, seed, speed range, motion cache, coverage LOD), with its capes, speed changes and
+// live LOD thresholds.
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "gpu/context.h"
-#include "render/steered_crowd.h"
+#include "scene/scene.h"
 #include "scene_options.h"
 #include "secondary/cloth_gpu_layer.h"
 #include "synth/crowd_synth.h"
@@ -15,15 +15,11 @@
 namespace throng::tools {
 
 struct ViewScene {
-  anim::MotionPair pair;  // CrowdSynth points at it: ViewScene never moves (held by unique_ptr)
+  anim::ClipPair clips;     // what every respawn animates (the storyboard: with --slow/--fast)
   anim::Skeleton skeleton;  // the slow clip's: the coverage LOD finds the body parts in it
-  std::optional<anim::ClipPair> userClips;  // --slow/--fast, for the storyboard scene
   std::string clipDescription;
   SceneOptions options;  // the scene as last spawned
-  std::unique_ptr<synth::SynthPrograms> programs;
-  synth::CrowdSynth synth;  // the plain scenarios' crowd
-  std::unique_ptr<render::SteeredCrowd> steered;  // the storyboard scene's, instead of `synth`
-  synth::SpeedSchedule speeds;  // its period and range may be changed live
+  std::unique_ptr<scene::Scene> crowd;  // the plain scenario's, the circle's or the storyboard's
   float groundExtent = 0.0f;
   double simulatedSeconds = 0.0;
   // --cloth: the database, and the capes of the current crowd (rebuilt with it).
@@ -32,13 +28,9 @@ struct ViewScene {
   VkFormat colorFormat = VK_FORMAT_UNDEFINED;  // the target the capes are drawn into
 };
 
-// What the frame synthesizes and draws, for either kind of scene.
-inline const synth::CrowdSynth& frameSynth(const ViewScene& s) { return s.steered ? s.steered->synth() : s.synth; }
-inline const synth::SynthPrograms& framePrograms(const ViewScene& s) {
-  return s.steered ? s.steered->programs() : *s.programs;
-}
-inline uint32_t characterCount(const ViewScene& s) { return s.steered ? s.steered->count() : s.synth.crowd.count; }
-
+// What the frame synthesizes and draws.
+inline const synth::CrowdSynth& frameSynth(const ViewScene& s) { return s.crowd->synth(); }
+inline uint32_t characterCount(const ViewScene& s) { return s.crowd->count(); }
 
 std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const SceneOptions& options,
                                          anim::ClipPair clips, VkFormat colorFormat);

@@ -10,7 +10,7 @@
 #include "crowd/trajectory_writer.h"
 #include "gpu/context.h"
 #include "gpu/limits.h"
-#include "render/crowd_frame.h"
+#include "scene/frame.h"
 #include "view_lod.h"
 #include "view_options.h"
 #include "view_panel.h"
@@ -44,8 +44,8 @@ class ViewSession {
   // Records the crowd's part of a frame. A device limit met by a respawned crowd brings back the
   // last crowd that recorded, and records that instead; the crowd the viewer started with
   // fails with an error naming -n.
-  render::FrameTimestamps recordCrowd(const render::PresentFrame& frame, float dt);
-  render::FrameTimestamps recordCrowdOnce(const render::PresentFrame& frame, float dt);
+  scene::FrameTimestamps recordCrowd(const render::PresentFrame& frame, float dt);
+  scene::FrameTimestamps recordCrowdOnce(const render::PresentFrame& frame, float dt);
   void revertRespawn(const gpu::LimitError& error);
   float simulationStep(double wallSeconds);
   void collectTimes(uint32_t slot);
@@ -75,7 +75,7 @@ class ViewSession {
   bool panelVisible_ = true;
   bool fixedClock_ = false;
   ViewStats stats_;
-  render::FrameTimestamps marks_[render::kPresenterFrames];
+  scene::FrameTimestamps marks_[render::kPresenterFrames];
   uint32_t panelMarks_[render::kPresenterFrames] = {};
   bool pending_[render::kPresenterFrames] = {};
   std::string screenshotWritten_;

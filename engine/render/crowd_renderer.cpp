@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "render/joint_splat.h"
+#include "shaders/render_bindings.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
@@ -118,14 +119,17 @@ void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
   }
 }
 
-void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth,
-                           VkImageView depthView, const DrawParams& params,
-                           VkImageLayout finalLayout, uint32_t frameSlot) {
+bool CrowdRenderer::splats(const DrawParams& params) const {
+  return splatSupported_ && params.splatMaxPixels > 0.0f && params.characterCount > 0;
+}
+
+const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawParams& params,
+                                              uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
   const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
   FrameUniforms frame = makeFrameUniforms(params);
   std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
-  const bool splat = splatSupported_ && params.splatMaxPixels > 0.0f && params.characterCount > 0;
+  const bool splat = splats(params);
   const gpu::Buffer* lodLevels =
       params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
   ensureLists(params.characterCount, params.jointCount);
@@ -149,8 +153,15 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
                  params.drawnBones,
                  lodLevels};
     job.record(cmd, splat_);
-    if (params.intoSplat) params.intoSplat(cmd, visibility_, params);
+    return &visibility_;
   }
+  return nullptr;
+}
+
+void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
+                              const DrawParams& params, uint32_t frameSlot) {
+  THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
+  const VkImage color = target.color, depth = target.depth;
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
   gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
@@ -164,13 +175,13 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
 
   VkRenderingAttachmentInfoKHR colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
-  colorAttachment.imageView = colorView;
+  colorAttachment.imageView = target.colorView;
   colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
   colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   colorAttachment.clearValue.color = params.clearColor;
   VkRenderingAttachmentInfoKHR depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
-  depthAttachment.imageView = depthView;
+  depthAttachment.imageView = target.depthView;
   depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR;
   depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
@@ -187,8 +198,15 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
   VkRect2D scissor{{0, 0}, {params.width, params.height}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
+  drawJoints(cmd, params, frameSlot);
+}
 
-  gpu::Binding groundBindings[] = {gpu::uniformBinding(1, uniforms)};
+void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot) {
+  const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
+  const bool splat = splats(params);
+  const gpu::Buffer* lodLevels =
+      params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
+  gpu::Binding groundBindings[] = {gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms)};
   ground_.bind(cmd, groundBindings, nullptr, 0);
   vkCmdDraw(cmd, 6, 1, 0, 0);
 
@@ -204,17 +222,21 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];
     gpu::Binding bindings[] = {
-        gpu::storageBinding(0, *params.joints, chunk.firstCharacter * perCharacter,
+        gpu::storageBinding(gpu_types::kRenderBindingJoints, *params.joints,
+                            chunk.firstCharacter * perCharacter,
                             chunk.characterCount * perCharacter),
-        gpu::uniformBinding(1, uniforms),
-        gpu::storageBinding(4, nearList_),
-        gpu::storageBinding(5, params.masks ? *params.masks : noMasks_),
-        gpu::storageBinding(6, *cached.placement),
-        gpu::storageBinding(7, *cached.motion),
-        gpu::storageBinding(8, *cached.poseSource),
-        gpu::storageBinding(9, *cached.cacheData),
-        gpu::storageBinding(10, params.groups ? *params.groups : noMasks_),
-        gpu::uniformBinding(11, *lodLevels, 0, sizeof(gpu_types::CoverageParts))};
+        gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
+        gpu::storageBinding(gpu_types::kRenderBindingNearList, nearList_),
+        gpu::storageBinding(gpu_types::kRenderBindingMasks,
+                            params.masks ? *params.masks : noMasks_),
+        gpu::storageBinding(gpu_types::kRenderBindingPlacement, *cached.placement),
+        gpu::storageBinding(gpu_types::kRenderBindingMotion, *cached.motion),
+        gpu::storageBinding(gpu_types::kRenderBindingPoseSource, *cached.poseSource),
+        gpu::storageBinding(gpu_types::kRenderBindingCacheData, *cached.cacheData),
+        gpu::storageBinding(gpu_types::kRenderBindingGroups,
+                            params.groups ? *params.groups : noMasks_),
+        gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
+                            sizeof(gpu_types::CoverageParts))};
     push.firstCharacter = chunk.firstCharacter;
     push.listBase = chunk.firstCharacter * params.jointCount;
     joints_.bind(cmd, bindings, &push, sizeof(push));
@@ -225,23 +247,34 @@ void CrowdRenderer::record(VkCommandBuffer cmd, VkImage color, VkImageView color
     }
   }
   if (splat) {
-    gpu::Binding resolveBindings[] = {gpu::uniformBinding(1, uniforms),
-                                      gpu::storageBinding(2, visibility_)};
+    gpu::Binding resolveBindings[] = {
+        gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
+        gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_)};
     resolve_.bind(cmd, resolveBindings, nullptr, 0);
     vkCmdDraw(cmd, 3, 1, 0, 0);
   }
-  if (params.insideRenderPass) params.insideRenderPass(cmd, params);
+}
+
+void CrowdRenderer::endDraw(VkCommandBuffer cmd, const FrameTargets& target) {
   vkCmdEndRenderingKHR(cmd);
+  const VkImageLayout finalLayout = target.finalLayout;
 
   VkAccessFlags dstAccess =
       finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ? VK_ACCESS_TRANSFER_READ_BIT : 0;
   VkPipelineStageFlags dstStage = finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
                                       ? VK_PIPELINE_STAGE_TRANSFER_BIT
                                       : VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;
-  gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT,
+  gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, finalLayout,
                        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, dstStage, dstAccess);
+}
+
+void CrowdRenderer::record(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
+                           uint32_t frameSlot) {
+  recordSplat(cmd, params, frameSlot);
+  beginDraw(cmd, target, params, frameSlot);
+  endDraw(cmd, target);
 }
 
 }  // namespace throng::render

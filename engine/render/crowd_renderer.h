@@ -2,13 +2,13 @@
 // The one graphics pipeline that draws every joint of every character as an instanced
 // ellipsoid (a ray-cast quad), plus the ground. Records into any colour/depth image pair (offscreen
 // target or swapchain image), so the viewer and the frame dumper share it.
-#include <functional>
 #include <vector>
 
 #include "gpu/buffer.h"
 #include "gpu/graphics_pipeline.h"
 #include "gpu/image.h"
 #include "render/camera.h"
+#include "render/frame_targets.h"
 #include "render/joint_splat.h"
 #include "synth/gpu_types.h"
 
@@ -33,12 +33,8 @@ struct DrawParams {
   const gpu::Buffer* groups = nullptr;  // storyboard group per character (uint): colour by group
   CachedPoseInputs cachedPoses;  // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
-  // Optional work of a higher module: compute splats into the joint splat's visibility buffer
-  // (after the joints' splat, before the render pass; called only when the splat runs), and draws
-  // inside the render pass after the joints (depth-tested with them; viewport and scissor set).
-  std::function<void(VkCommandBuffer, const gpu::Buffer& visibility, const DrawParams&)> intoSplat;
-  std::function<void(VkCommandBuffer, const DrawParams&)> insideRenderPass;
 };
+
 
 // Camera, light and viewport of a frame as the shaders read them.
 gpu_types::FrameUniforms makeFrameUniforms(const DrawParams& params);
@@ -53,14 +49,23 @@ class CrowdRenderer {
   // False when the device lacks 64-bit buffer atomics: every joint is then drawn as a sprite.
   bool splatSupported() const { return splatSupported_; }
 
-  // Transitions `color` from UNDEFINED to COLOR_ATTACHMENT, draws, and leaves it in `finalLayout`
-  // (TRANSFER_SRC_OPTIMAL for readback, PRESENT_SRC_KHR for a swapchain).
+  // The draw in three steps, so that a frame can put other work between them (the capes'
+  // splat into the visibility buffer, their draw inside the render pass):
+  //  1. recordSplat: the camera uniforms of `frameSlot`, then the compute splat of small joints;
+  //     returns the visibility buffer it wrote (null when every joint is drawn as a sprite);
+  //  2. beginDraw: transitions the target from UNDEFINED, begins the render pass and draws the
+  //     ground, the sprites and the resolved splat (viewport and scissor stay set);
+  //  3. endDraw: ends the render pass and leaves the colour image in target.finalLayout.
   // `frameSlot` < kFramesInFlight picks the uniform buffer; reuse a slot only after the frame
-  // that last used it has completed.
-  // Not const: the splat's visibility buffer follows the target size (old buffers are kept
-  // until no frame in flight can use them).
-  void record(VkCommandBuffer cmd, VkImage color, VkImageView colorView, VkImage depth,
-              VkImageView depthView, const DrawParams& params, VkImageLayout finalLayout,
+  // that last used it has completed. Not const: the splat's visibility buffer follows the
+  // target size (old buffers are kept until no frame in flight can use them).
+  const gpu::Buffer* recordSplat(VkCommandBuffer cmd, const DrawParams& params,
+                                 uint32_t frameSlot = 0);
+  void beginDraw(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
+                 uint32_t frameSlot = 0);
+  void endDraw(VkCommandBuffer cmd, const FrameTargets& target);
+  // All three steps with nothing between them.
+  void record(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
               uint32_t frameSlot = 0);
 
  private:
@@ -81,6 +86,8 @@ class CrowdRenderer {
   std::vector<std::pair<gpu::Buffer, uint32_t>>
       retiredVisibility_;  // buffers, records left before freeing
   void ensureVisibility(uint32_t width, uint32_t height);
+  bool splats(const DrawParams& params) const;
+  void drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
 };
 
 }  // namespace throng::render

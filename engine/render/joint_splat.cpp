@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "gpu/commands.h"
 #include "gpu/job_check.h"
+#include "shaders/render_bindings.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
 #include "synth/synth_jobs.h"
@@ -99,19 +100,22 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
                    uint32_t(drawnBones),
                    uint32_t(drawnBones >> 32)};
     gpu::Binding bindings[] = {
-        gpu::storageBinding(0, *joints, chunk.firstCharacter * perCharacter,
+        gpu::storageBinding(gpu_types::kRenderBindingJoints, *joints,
+                            chunk.firstCharacter * perCharacter,
                             chunk.characterCount * perCharacter),
-        gpu::uniformBinding(1, *frameUniforms),
-        gpu::storageBinding(2, *visibility, 0, pixels * sizeof(uint64_t)),
-        gpu::storageBinding(3, *draws),
-        gpu::storageBinding(4, *nearList),
-        gpu::storageBinding(5, *masks),
-        gpu::storageBinding(6, *cachedPoses.placement),
-        gpu::storageBinding(7, *cachedPoses.motion),
-        gpu::storageBinding(8, *cachedPoses.poseSource),
-        gpu::storageBinding(9, *cachedPoses.cacheData),
-        gpu::storageBinding(10, groups ? *groups : *masks),
-        gpu::uniformBinding(11, *lodLevels, 0, sizeof(gpu_types::CoverageParts)),
+        gpu::uniformBinding(gpu_types::kRenderBindingFrame, *frameUniforms),
+        gpu::storageBinding(gpu_types::kRenderBindingVisibility, *visibility, 0,
+                            pixels * sizeof(uint64_t)),
+        gpu::storageBinding(gpu_types::kRenderBindingDraws, *draws),
+        gpu::storageBinding(gpu_types::kRenderBindingNearList, *nearList),
+        gpu::storageBinding(gpu_types::kRenderBindingMasks, *masks),
+        gpu::storageBinding(gpu_types::kRenderBindingPlacement, *cachedPoses.placement),
+        gpu::storageBinding(gpu_types::kRenderBindingMotion, *cachedPoses.motion),
+        gpu::storageBinding(gpu_types::kRenderBindingPoseSource, *cachedPoses.poseSource),
+        gpu::storageBinding(gpu_types::kRenderBindingCacheData, *cachedPoses.cacheData),
+        gpu::storageBinding(gpu_types::kRenderBindingGroups, groups ? *groups : *masks),
+        gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
+                            sizeof(gpu_types::CoverageParts)),
     };
     gpu::dispatch(cmd, program, bindings, push, push.jointTotal);
   }

@@ -51,4 +51,14 @@ ImageRgba8 readbackImage(const OffscreenTarget& target) {
   return image;
 }
 
+FrameTargets offscreenFrameTargets(const OffscreenTarget& target) {
+  return {target.color.get(),
+          target.color.view(),
+          target.depth.get(),
+          target.depth.view(),
+          target.width,
+          target.height,
+          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+}
+
 }  // namespace throng::render

@@ -5,6 +5,7 @@
 #include "core/image.h"
 #include "gpu/buffer.h"
 #include "gpu/image.h"
+#include "render/frame_targets.h"
 
 namespace throng::render {
 
@@ -27,6 +28,9 @@ void checkTargetSize(const gpu::Context& context, uint32_t width, uint32_t heigh
 
 // Throws Error for sizes outside 1..16384, gpu::LimitError past the device's limits.
 OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height);
+
+// The target's images as a frame's targets, left ready for recordReadback.
+FrameTargets offscreenFrameTargets(const OffscreenTarget& target);
 
 // Records the copy of the colour image (left in TRANSFER_SRC layout by the frame) to `readback`.
 void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target);

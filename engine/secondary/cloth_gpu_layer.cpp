@@ -42,24 +42,11 @@ ClothLayer::ClothLayer(const gpu::Context& context, const ClothDatabase& db,
   frameNumbers_.assign(render::kFramesInFlight, 0);
 }
 
-render::FrameHooks ClothLayer::hooks(uint32_t slot) {
+void ClothLayer::recordCompute(VkCommandBuffer cmd, const render::Camera& camera, uint32_t width,
+                               uint32_t height, uint32_t slot) {
   THRONG_CHECK(slot < render::kFramesInFlight, "frame slot ", slot, " out of range");
-  render::FrameHooks h;
-  h.afterSynthesis = [this, slot](VkCommandBuffer cmd, const render::DrawParams& params) {
-    recordCompute(cmd, params, slot);
-  };
-  h.intoSplat = [this, slot](VkCommandBuffer cmd, const gpu::Buffer& visibility,
-                             const render::DrawParams&) { recordSplat(cmd, visibility, slot); };
-  h.insideRenderPass = [this, slot](VkCommandBuffer cmd, const render::DrawParams&) {
-    recordDraw(cmd, slot);
-  };
-  return h;
-}
-
-void ClothLayer::recordCompute(VkCommandBuffer cmd, const render::DrawParams& params,
-                               uint32_t slot) {
-  gpu_types::ClothView view = makeClothView(params.camera, params.width, params.height, cloth_.lod,
-                                            options_.lod, clothSplattable(cloth_));
+  gpu_types::ClothView view = makeClothView(camera, width, height, cloth_.lod, options_.lod,
+                                            clothSplattable(cloth_));
   view.viewport.w = options_.tintLevels ? 1.0f : 0.0f;
   std::memcpy(views_[slot].mapped(), &view, sizeof(view));
   gpu::TimestampPool& t = *timestamps_[slot];

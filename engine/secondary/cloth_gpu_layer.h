@@ -1,13 +1,15 @@
 #pragma once
 // Capes on a rendered crowd: owns the uploaded database, the crowd's cloth buffers, the programs
-// and per-frame-slot view uniforms and timestamps, and hands render::recordCrowdFrame the hooks
-// that record the cloth passes (advance, mark, decode after the synthesis; the splat of far capes
-// into the joint renderer's visibility buffer when it splats; the draw inside the render pass).
+// and per-frame-slot view uniforms and timestamps, and records the cloth passes where the frame
+// (scene/frame.h) puts them: advance, mark, decode after the synthesis (the secondary-motion
+// stage); the splat of far capes into the joint renderer's visibility buffer when it splats; the
+// draw inside the render pass.
 #include <memory>
 #include <vector>
 
 #include "gpu/timestamps.h"
-#include "render/crowd_frame.h"
+#include "render/camera.h"
+#include "render/crowd_renderer.h"
 #include "secondary/cloth_gpu_jobs.h"
 #include "secondary/cloth_view.h"
 
@@ -30,9 +32,15 @@ class ClothLayer {
   ClothLayer(const gpu::Context& context, const ClothDatabase& db, const crowd::CrowdBuffers& crowd,
              VkFormat colorFormat, VkFormat depthFormat, const ClothLayerOptions& options = {});
 
-  // Hooks for a frame recorded into `frameSlot` (< render::kFramesInFlight). Record a slot again
-  // only after its previous frame completed (its uniforms and timestamps are reused).
-  render::FrameHooks hooks(uint32_t frameSlot);
+  // The passes of a frame recorded into `frameSlot` (< render::kFramesInFlight), in this order.
+  // Record a slot again only after its previous frame completed (its uniforms and timestamps
+  // are reused). The compute passes, after the synthesis (their own barriers):
+  void recordCompute(VkCommandBuffer cmd, const render::Camera& camera, uint32_t width,
+                     uint32_t height, uint32_t frameSlot);
+  // Far capes into the joint renderer's visibility buffer (when the renderer splats):
+  void recordSplat(VkCommandBuffer cmd, const gpu::Buffer& visibility, uint32_t frameSlot);
+  // The capes' draw inside the render pass, after the joints (depth-tested with them):
+  void recordDraw(VkCommandBuffer cmd, uint32_t frameSlot);
   // After the frame recorded into `frameSlot` completed.
   ClothTimings timings(uint32_t frameSlot) const;
   // What that frame's mark pass counted (states decoded, capes per level), from a copy the frame
@@ -50,10 +58,6 @@ class ClothLayer {
   const ClothCrowdBuffers& buffers() const { return buffers_; }
 
  private:
-  void recordCompute(VkCommandBuffer cmd, const render::DrawParams& params, uint32_t slot);
-  void recordSplat(VkCommandBuffer cmd, const gpu::Buffer& visibility, uint32_t slot);
-  void recordDraw(VkCommandBuffer cmd, uint32_t slot);
-
   const crowd::CrowdBuffers* crowd_ = nullptr;
   ClothLayerOptions options_;
   ClothPrograms programs_;

@@ -26,8 +26,15 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
 
 void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads,
                   const anim::SpeedRetarget& retarget) {
-  parallelFor(crowd.size(), threads, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i)
+  stepCrowdCpu(pair, crowd, {0, crowd.size()}, dt, threads, retarget);
+}
+
+void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, CharacterRange range, float dt,
+                  unsigned threads, const anim::SpeedRetarget& retarget) {
+  THRONG_CHECK(range.first + range.count <= crowd.size(), "range runs past the crowd's ",
+               crowd.size(), " characters");
+  parallelFor(range.count, threads, [&](size_t begin, size_t end) {
+    for (size_t i = range.first + begin; i < range.first + end; ++i)
       anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], dt, crowd.steering, retarget,
                           static_cast<uint32_t>(i));
   });
@@ -35,11 +42,18 @@ void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, u
 
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, std::span<JointMatrix> out,
                   unsigned threads) {
+  poseCrowdCpu(pair, crowd, {0, crowd.size()}, out, threads);
+}
+
+void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, CharacterRange range,
+                  std::span<JointMatrix> out, unsigned threads) {
   const size_t joints = static_cast<size_t>(pair.jointCount());
-  THRONG_CHECK(out.size() >= crowd.size() * joints, "joint matrix output holds ", out.size(), ", needs ",
-               crowd.size() * joints);
-  parallelFor(crowd.size(), threads, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
+  const size_t end = range.first + range.count;
+  THRONG_CHECK(end <= crowd.size(), "range runs past the crowd's ", crowd.size(), " characters");
+  THRONG_CHECK(out.size() >= end * joints, "joint matrix output holds ", out.size(), ", needs ",
+               end * joints);
+  parallelFor(range.count, threads, [&](size_t begin, size_t stop) {
+    for (size_t i = range.first + begin; i < range.first + stop; ++i) {
       auto* rows = reinterpret_cast<glm::vec4*>(&out[i * joints]);
       anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i], std::span<glm::vec4>(rows, 3 * joints));
     }

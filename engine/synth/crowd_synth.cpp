@@ -10,48 +10,122 @@
 
 namespace throng::synth {
 
-void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton,
-                      const CoverageThresholds& thresholds) {
+namespace {
+
+void checkGroups(std::span<const anim::MotionPair* const> pairs,
+                 std::span<const uint32_t> groupFirst, size_t characters) {
+  if (pairs.empty()) fail("a crowd needs at least one motion pair");
+  if (groupFirst.size() != pairs.size() + 1 || groupFirst.front() != 0 ||
+      groupFirst.back() != characters)
+    fail("crowd groups must run from 0 to the ", characters, " characters, one range per pair");
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    if (!pairs[k]) fail("crowd group ", k, " has no motion pair");
+    if (groupFirst[k + 1] <= groupFirst[k]) fail("crowd group ", k, " has no character");
+    if (pairs[k]->jointCount() != pairs.front()->jointCount())
+      fail("every clip set of a crowd needs the same joint count (", pairs[k]->jointCount(),
+           " vs ", pairs.front()->jointCount(), ")");
+  }
+}
+
+gpu::Buffer makeCoverageParts(const gpu::Context& context) {
+  return gpu::Buffer(context, sizeof(CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                     gpu::MemoryUse::HostVisible);
+}
+
+void writeCoverageParts(const SynthGroup& group, const anim::Skeleton& skeleton,
+                        const CoverageThresholds& thresholds) {
   BodyParts parts = describeBodyParts(skeleton);
-  setMeanCentres(parts, *synth.pair);
+  setMeanCentres(parts, *group.pair);
   CoverageParts uniform = makeCoverageParts(parts, thresholds);
-  std::memcpy(synth.coverageParts.mapped(), &uniform, sizeof(uniform));
+  std::memcpy(group.coverageParts.mapped(), &uniform, sizeof(uniform));
+}
+
+void allocateCacheLists(const gpu::Context& context, CrowdSynth& synth, size_t characters) {
+  // At most one chunk per character, so the counts never outgrow their buffers.
+  VkDeviceSize n = std::max<VkDeviceSize>(characters, 1);
+  std::vector<uint32_t> inJoints(n, gpu_types::kPoseInJoints);
+  synth.poseSource = gpu::makeStorageBuffer<uint32_t>(context, inJoints);
+  synth.characterLists =
+      gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  synth.listCounts = gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  synth.dispatchArgs =
+      gpu::Buffer(context, n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                  gpu::MemoryUse::DeviceLocal);
+}
+
+// Characters per pose chunk: each chunk binds at most maxBindingBytes of joints and 65535
+// workgroups of 64.
+uint32_t poseChunk(const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  return static_cast<uint32_t>(
+      std::max<VkDeviceSize>(1, std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u)));
+}
+
+void checkPrograms(std::span<const SynthPrograms* const> programs, const CrowdSynth& synth) {
+  if (programs.size() != synth.groups.size())
+    fail("synthesis: ", synth.groups.size(), " groups but ", programs.size(), " program sets");
+  for (const SynthPrograms* p : programs)
+    if (!p) fail("synthesis: a group has no programs");
+}
+
+}  // namespace
+
+CrowdSynth makeCrowdSynth(const gpu::Context& context,
+                          std::span<const anim::MotionPair* const> pairs,
+                          std::span<const uint32_t> groupFirst, const crowd::Crowd& crowd,
+                          const MotionCacheOptions& cache, const LodOptions& lod) {
+  checkGroups(pairs, groupFirst, crowd.size());
+  if (lod.enabled && !lod.skeleton) fail("LOD needs the skeleton to find the body parts");
+  CrowdSynth synth;
+  synth.crowd = crowd::uploadCrowd(context, crowd);
+  VkDeviceSize bytes =
+      VkDeviceSize(crowd.size()) * pairs.front()->jointCount() * sizeof(JointMatrix);
+  synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    SynthGroup group;
+    group.pair = pairs[k];
+    group.motion = uploadMotionPair(context, *pairs[k]);
+    group.cache = makeGpuMotionCache(context, *pairs[k], cache);
+    group.steering = crowd.steering;
+    group.first = groupFirst[k];
+    group.count = groupFirst[k + 1] - groupFirst[k];
+    if (lod.enabled) {
+      group.coverageParts = makeCoverageParts(context);
+      writeCoverageParts(group, *lod.skeleton, lod.thresholds);
+    }
+    synth.groups.push_back(std::move(group));
+  }
+  std::vector<GpuMotionCache*> caches;
+  for (SynthGroup& group : synth.groups) caches.push_back(&group.cache);
+  synth.cacheData = makeCacheData(context, caches);
+  if (lod.enabled) {
+    synth.lod = true;
+    std::vector<CoverageMask> none(std::max<size_t>(crowd.size(), 1), CoverageMask{});
+    synth.masks = gpu::makeStorageBuffer<CoverageMask>(context, none);
+  }
+  if (cache.enabled) allocateCacheLists(context, synth, crowd.size());
+  return synth;
 }
 
 CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair,
                           const crowd::Crowd& crowd, const MotionCacheOptions& cache,
                           const LodOptions& lod) {
-  CrowdSynth synth;
-  synth.pair = &pair;
-  synth.motion = uploadMotionPair(context, pair);
-  synth.crowd = crowd::uploadCrowd(context, crowd);
-  synth.steering = crowd.steering;
-  VkDeviceSize bytes = VkDeviceSize(crowd.size()) * pair.jointCount() * sizeof(JointMatrix);
-  synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  synth.cache = makeGpuMotionCache(context, pair, cache);
-  if (lod.enabled) {
-    if (!lod.skeleton) fail("LOD needs the skeleton to find the body parts");
-    synth.lod = true;
-    synth.coverageParts =
-        gpu::Buffer(context, sizeof(CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                    gpu::MemoryUse::HostVisible);
-    setLodThresholds(synth, *lod.skeleton, lod.thresholds);
-    std::vector<CoverageMask> none(std::max<size_t>(crowd.size(), 1), CoverageMask{});
-    synth.masks = gpu::makeStorageBuffer<CoverageMask>(context, none);
-  }
-  if (cache.enabled) {
-    // At most one chunk per character, so the counts never outgrow their buffers.
-    VkDeviceSize n = std::max<VkDeviceSize>(crowd.size(), 1);
-    std::vector<uint32_t> inJoints(n, gpu_types::kPoseInJoints);
-    synth.poseSource = gpu::makeStorageBuffer<uint32_t>(context, inJoints);
-    synth.characterLists =
-        gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-    synth.listCounts = gpu::Buffer(context, n * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-    synth.dispatchArgs =
-        gpu::Buffer(context, n * 12, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                    gpu::MemoryUse::DeviceLocal);
-  }
-  return synth;
+  const anim::MotionPair* pairs[] = {&pair};
+  const uint32_t groupFirst[] = {0u, uint32_t(crowd.size())};
+  return makeCrowdSynth(context, pairs, groupFirst, crowd, cache, lod);
+}
+
+void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton,
+                      const CoverageThresholds& thresholds) {
+  if (!synth.lod) return;
+  for (const SynthGroup& group : synth.groups) writeCoverageParts(group, skeleton, thresholds);
+}
+
+MotionCacheStats readCacheStats(const CrowdSynth& synth) {
+  MotionCacheStats total;
+  for (const SynthGroup& group : synth.groups)
+    total = addCacheStats(total, readCacheStats(group.cache));
+  return total;
 }
 
 anim::SpeedRetarget SpeedSchedule::advance(float dt) {
@@ -65,98 +139,154 @@ anim::SpeedRetarget SpeedSchedule::advance(float dt) {
   return retarget;
 }
 
-void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
-                     float dt, VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget,
-                     const CoverageCamera* lodCamera) {
-  RootMotionJob root{&synth.motion, synth.pair, &synth.crowd, dt, synth.steering, retarget};
-  root.record(cmd, programs);
-  gpu::computeToComputeBarrier(cmd);
-  const bool lod = synth.lod && lodCamera;
-  if (lod) {
-    // Sphere centres estimated from placement and the clip's mean pose: no dependency on
-    // this frame's pose pass, which the masks then trim.
-    CoverageJob coverage{&synth.crowd, &synth.coverageParts, nullptr,           &synth.masks,
-                         nullptr,      *lodCamera,           synth.jointCount()};
-    coverage.record(cmd, programs.coverage);
-    gpu::computeToComputeBarrier(cmd);
+namespace {
+
+void recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                      const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget) {
+  for (size_t k = 0; k < synth.groups.size(); ++k) {
+    const SynthGroup& g = synth.groups[k];
+    RootMotionJob{&g.motion, g.pair, &synth.crowd, g.first, g.count, dt, g.steering, retarget}
+        .record(cmd, *programs[k]);
   }
-  const bool cached = synth.cache.options.enabled;
-  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
-  // Also bounded by 65535 workgroups of 64 per dispatch.
-  const uint32_t chunk =
-      static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
-  const uint32_t chunks = (synth.crowd.count + chunk - 1) / chunk;
-  if (cached) {
-    CacheJob{&synth.motion, &synth.crowd, &synth.cache}.record(cmd, programs);
-    vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunks) * 4, 0u);
-    gpu::computeToComputeBarrier(cmd);
-    for (uint32_t c = 0; c < chunks; ++c) {
-      uint32_t first = c * chunk;
+  gpu::computeToComputeBarrier(cmd);
+}
+
+// Sphere centres estimated from placement and the clip's mean pose: no dependency on this
+// frame's pose pass, which the masks then trim.
+void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                    const CrowdSynth& synth, const CoverageCamera& lodCamera) {
+  for (size_t k = 0; k < synth.groups.size(); ++k) {
+    const SynthGroup& g = synth.groups[k];
+    CoverageJob coverage{&synth.crowd, &g.coverageParts, nullptr,           &synth.masks,
+                         nullptr,      lodCamera,        synth.jointCount(), g.first,
+                         g.count};
+    coverage.record(cmd, programs[k]->coverage);
+  }
+  gpu::computeToComputeBarrier(cmd);
+}
+
+// The cache passes of every group, then the classify pass over each group's pose chunks
+// (numbered across groups), then their indirect dispatch arguments.
+void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                         const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal) {
+  for (size_t k = 0; k < synth.groups.size(); ++k) {
+    const SynthGroup& g = synth.groups[k];
+    CacheJob{&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count}.record(
+        cmd, *programs[k]);
+  }
+  vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunkTotal) * 4, 0u);
+  gpu::computeToComputeBarrier(cmd);
+  uint32_t c = 0;
+  for (size_t k = 0; k < synth.groups.size(); ++k) {
+    const SynthGroup& g = synth.groups[k];
+    for (uint32_t first = g.first; first < g.first + g.count; first += chunk, ++c) {
       CachePush push{};
-      push.characterCount = std::min(chunk, synth.crowd.count - first);
-      push.rowCount = synth.cache.rowCount;
-      push.bucketWidth = synth.cache.options.bucketWidth;
+      push.characterCount = std::min(chunk, g.first + g.count - first);
+      push.rowCount = g.cache.rowCount;
+      push.bucketWidth = g.cache.options.bucketWidth;
       push.firstCharacter = first;
       push.chunk = c;
+      push.dataBase = g.cache.dataBase;
       push.jointCount = synth.jointCount();
       gpu::Binding bindings[] = {gpu::storageBinding(0, synth.crowd.motion),
-                                 gpu::storageBinding(3, synth.cache.bucketSlot),
+                                 gpu::storageBinding(3, g.cache.bucketSlot),
                                  gpu::storageBinding(6, synth.characterLists),
                                  gpu::storageBinding(7, synth.listCounts),
                                  gpu::storageBinding(9, synth.poseSource)};
-      gpu::dispatch(cmd, programs.cacheClassify, bindings, push, push.characterCount);
+      gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push, push.characterCount);
     }
-    gpu::computeToComputeBarrier(cmd);
-    gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts),
-                                  gpu::storageBinding(8, synth.dispatchArgs)};
-    gpu::dispatch(cmd, programs.cacheArgs, argBindings, chunks, chunks);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
   }
-  for (uint32_t c = 0; c < chunks; ++c) {
-    uint32_t first = c * chunk;
-    PoseJob pose{&synth.motion,
-                 &synth.crowd,
-                 &synth.joints,
-                 first,
-                 std::min(chunk, synth.crowd.count - first),
-                 VkDeviceSize(first) * perCharacter};
-    pose.masks = lod ? &synth.masks : nullptr;
-    if (!cached) {
-      pose.record(cmd, programs);
-      continue;
+  gpu::computeToComputeBarrier(cmd);
+  gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts),
+                                gpu::storageBinding(8, synth.dispatchArgs)};
+  gpu::dispatch(cmd, programs.front()->cacheArgs, argBindings, chunkTotal, chunkTotal);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+}
+
+void recordPose(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                const CrowdSynth& synth, uint32_t chunk, bool lod) {
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  const bool cached = synth.cached();
+  uint32_t c = 0;
+  for (size_t k = 0; k < synth.groups.size(); ++k) {
+    const SynthGroup& g = synth.groups[k];
+    for (uint32_t first = g.first; first < g.first + g.count; first += chunk, ++c) {
+      PoseJob pose{&g.motion, &synth.crowd, &synth.joints, first,
+                   std::min(chunk, g.first + g.count - first), VkDeviceSize(first) * perCharacter};
+      pose.masks = lod ? &synth.masks : nullptr;
+      if (cached) {
+        pose.characterList = &synth.characterLists;
+        pose.listCounts = &synth.listCounts;
+        pose.dispatchArgs = &synth.dispatchArgs;
+        pose.listBase = first;  // the characters whose bucket is not resident
+        pose.countIndex = c;
+        pose.argsOffset = VkDeviceSize(c) * 12;
+      }
+      pose.record(cmd, *programs[k]);
     }
-    pose.characterList = &synth.characterLists;
-    pose.listCounts = &synth.listCounts;
-    pose.dispatchArgs = &synth.dispatchArgs;
-    pose.listBase = first;  // the characters whose bucket is not resident
-    pose.countIndex = c;
-    pose.argsOffset = VkDeviceSize(c) * 12;
-    pose.record(cmd, programs);
   }
+}
+
+uint32_t chunkCount(const CrowdSynth& synth, uint32_t chunk) {
+  uint32_t chunks = 0;
+  for (const SynthGroup& g : synth.groups) chunks += (g.count + chunk - 1) / chunk;
+  return chunks;
+}
+
+}  // namespace
+
+void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                     const CrowdSynth& synth, float dt, VkDeviceSize maxBindingBytes,
+                     const anim::SpeedRetarget& retarget, const CoverageCamera* lodCamera) {
+  checkPrograms(programs, synth);
+  recordRootMotion(cmd, programs, synth, dt, retarget);
+  const bool lod = synth.lod && lodCamera;
+  if (lod) recordCoverage(cmd, programs, synth, *lodCamera);
+  const uint32_t chunk = poseChunk(synth, maxBindingBytes);
+  if (synth.cached()) recordCacheClassify(cmd, programs, synth, chunk, chunkCount(synth, chunk));
+  recordPose(cmd, programs, synth, chunk, lod);
   // The cache counters are read on the host after the frame.
-  if (cached)
+  if (synth.cached())
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+}
+
+void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
+                     float dt, VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget,
+                     const CoverageCamera* lodCamera) {
+  const SynthPrograms* one[] = {&programs};
+  recordSynthesis(cmd, one, synth, dt, maxBindingBytes, retarget, lodCamera);
+}
+
+void recordMaterializeCachedPoses(VkCommandBuffer cmd,
+                                  std::span<const SynthPrograms* const> programs,
+                                  const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
+  if (!synth.cached()) return;
+  checkPrograms(programs, synth);
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  const uint32_t chunk = poseChunk(synth, maxBindingBytes);
+  for (size_t k = 0; k < synth.groups.size(); ++k) {
+    const SynthGroup& g = synth.groups[k];
+    for (uint32_t first = g.first; first < g.first + g.count; first += chunk) {
+      MaterializeCachedJob job{&synth.crowd,
+                               &g.cache,
+                               &synth.cacheData,
+                               &synth.poseSource,
+                               &synth.joints,
+                               first,
+                               std::min(chunk, g.first + g.count - first),
+                               VkDeviceSize(first) * perCharacter,
+                               synth.lod ? &synth.masks : nullptr};
+      job.record(cmd, *programs[k]);
+    }
+  }
+  gpu::computeToComputeBarrier(cmd);
 }
 
 void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs,
                                   const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
-  if (!synth.cache.options.enabled) return;
-  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
-  const uint32_t chunk =
-      static_cast<uint32_t>(std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u));
-  for (uint32_t first = 0; first < synth.crowd.count; first += chunk) {
-    MaterializeCachedJob job{&synth.crowd,
-                             &synth.cache,
-                             &synth.poseSource,
-                             &synth.joints,
-                             first,
-                             std::min(chunk, synth.crowd.count - first),
-                             VkDeviceSize(first) * perCharacter,
-                             synth.lod ? &synth.masks : nullptr};
-    job.record(cmd, programs);
-  }
-  gpu::computeToComputeBarrier(cmd);
+  const SynthPrograms* one[] = {&programs};
+  recordMaterializeCachedPoses(cmd, one, synth, maxBindingBytes);
 }
 
 }  // namespace throng::synth

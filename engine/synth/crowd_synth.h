@@ -1,6 +1,10 @@
 #pragma once
-// The frame orchestrator for synthesis: owns the GPU copies of one motion pair, the crowd's
-// state and the joint-matrix output, and records the passes in order with their barriers.
+// The frame orchestrator for synthesis: owns the crowd's per-character state and joint-matrix
+// output for every character and, per group of characters (clip set), the GPU copies of its
+// motion pair and its cache; records the passes in order, each over every group's range.
+#include <span>
+#include <vector>
+
 #include "anim/motion_texture.h"
 #include "crowd/crowd.h"
 #include "gpu/buffer.h"
@@ -18,43 +22,80 @@ struct LodOptions {
   const anim::Skeleton* skeleton = nullptr;  // joint names find the body parts
 };
 
-struct CrowdSynth {
+// One clip set of a crowd: the characters [first, first + count) of the crowd's buffers,
+// animated by one motion pair, with the pair's own cache (its entries in the shared data buffer)
+// and body parts for the coverage LOD.
+struct SynthGroup {
   const anim::MotionPair* pair = nullptr;
   GpuMotionPair motion;
-  crowd::CrowdBuffers crowd;
-  gpu::Buffer joints;  // crowd.count × jointCount JointMatrix
   GpuMotionCache cache;
+  gpu::Buffer coverageParts;  // LOD on: uniform CoverageParts of this pair
+  anim::Steering steering = anim::Steering::KeepHeading;
+  uint32_t first = 0, count = 0;
+};
+
+// A crowd's synthesis state: ONE set of per-character buffers for every character, whatever
+// clip set animates it, so that each synthesis pass runs on a group's sub-range in place and
+// the renderer draws the whole crowd from one set of buffers (cached characters stay cached).
+struct CrowdSynth {
+  crowd::CrowdBuffers crowd;  // every character's placement and motion
+  gpu::Buffer joints;         // crowd.count × jointCount JointMatrix
   // With the cache on: per character, where its joint matrices come from (kPoseInJoints or
-  // its cache entry; the renderer composes cached ones), and per pose chunk the list of
+  // its entry in cacheData; the renderer composes cached ones), and per pose chunk the list of
   // characters that the full pose pass synthesizes.
   gpu::Buffer poseSource;      // uint per character
   gpu::Buffer characterLists;  // crowd.count: chunk c's uncached characters from its first one
   gpu::Buffer listCounts;      // one per chunk
   gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per chunk
-  // With LOD on: the body parts and thresholds (uniform) and each character's mask.
+  gpu::Buffer cacheData;       // every group's cache entries (makeCacheData)
+  // With LOD on: each character's mask.
   bool lod = false;
-  gpu::Buffer coverageParts;
   gpu::Buffer masks;
-  anim::Steering steering = anim::Steering::KeepHeading;
+  std::vector<SynthGroup> groups;  // contiguous ranges, in order, covering every character
 
-  uint32_t jointCount() const { return motion.jointCount; }
+  const SynthGroup& front() const { return groups.front(); }
+  uint32_t jointCount() const { return front().motion.jointCount; }
+  bool cached() const { return front().cache.options.enabled; }
 };
 
-CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair, const crowd::Crowd& crowd,
+// One group per pair: pair k animates the characters [groupFirst[k], groupFirst[k + 1]) of
+// `crowd` (groupFirst has pairs.size() + 1 entries from 0 to crowd.size()). Every pair needs
+// the same joint count. The cache budget applies to each clip set. Throws Error otherwise.
+CrowdSynth makeCrowdSynth(const gpu::Context& context,
+                          std::span<const anim::MotionPair* const> pairs,
+                          std::span<const uint32_t> groupFirst, const crowd::Crowd& crowd,
                           const MotionCacheOptions& cache = {}, const LodOptions& lod = {});
+// One group: every character animated by `pair`.
+CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair,
+                          const crowd::Crowd& crowd, const MotionCacheOptions& cache = {},
+                          const LodOptions& lod = {});
 // New thresholds for a running synthesis (call between frames, with no frame in flight).
-void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton, const CoverageThresholds& thresholds);
+void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton,
+                      const CoverageThresholds& thresholds);
+// The cache counters summed over the groups.
+MotionCacheStats readCacheStats(const CrowdSynth& synth);
 
-// Root motion, the motion cache when enabled, then the pose pass in chunks that each bind at most `maxBindingBytes` of output.
+// Root motion, the motion cache when enabled, then the pose pass in chunks that each bind at
+// most `maxBindingBytes` of output; each pass runs over every group's range with the group's
+// programs (programs[k] for group k: the pose pass is specialized per skeleton and pair).
 // With LOD on and `lodCamera` given, the coverage pass sets each character's mask first.
-void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth, float dt,
-                     VkDeviceSize maxBindingBytes, const anim::SpeedRetarget& retarget = {},
+void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                     const CrowdSynth& synth, float dt, VkDeviceSize maxBindingBytes,
+                     const anim::SpeedRetarget& retarget = {},
+                     const CoverageCamera* lodCamera = nullptr);
+// The same for a crowd of one group.
+void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
+                     float dt, VkDeviceSize maxBindingBytes,
+                     const anim::SpeedRetarget& retarget = {},
                      const CoverageCamera* lodCamera = nullptr);
 
 // With the cache on, cached characters' joints are not in `joints` after recordSynthesis (the
 // renderer composes them): this writes them there too, for consumers that read `joints`.
-void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
-                                  VkDeviceSize maxBindingBytes);
+void recordMaterializeCachedPoses(VkCommandBuffer cmd,
+                                  std::span<const SynthPrograms* const> programs,
+                                  const CrowdSynth& synth, VkDeviceSize maxBindingBytes);
+void recordMaterializeCachedPoses(VkCommandBuffer cmd, const SynthPrograms& programs,
+                                  const CrowdSynth& synth, VkDeviceSize maxBindingBytes);
 
 // Speed changes every `period` seconds (paper: 5 s): tells each step whether it starts a new
 // epoch, and the speed range and buckets the new targets are drawn from.

@@ -62,10 +62,27 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
   // Up to one entry per requested bucket is inserted in a frame, so bucketCount bounds the list.
   cache.freshSlots = filled<uint32_t>(context, size_t(cache.bucketCount) + 1, 0u);
   cache.fillArgs = filled<uint32_t>(context, 3, 0u, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-  cache.data =
-      gpu::Buffer(context, std::max<uint64_t>(16 * 48, uint64_t(cache.capacity) * cache.entryBytes),
-                  gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   return cache;
+}
+
+gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache* const> caches) {
+  uint64_t matrices = 0;
+  for (GpuMotionCache* cache : caches) {
+    if (matrices > UINT32_MAX) break;
+    cache->dataBase = static_cast<uint32_t>(matrices);
+    matrices += cache->dataBytes() / sizeof(JointMatrix);
+  }
+  if (matrices >= UINT32_MAX)
+    fail("motion cache: ", matrices, " cached joint matrices are more than a 32-bit index reaches",
+         " (lower the cache budget)");
+  // A small buffer when every cache is disabled, so the passes always have their bindings.
+  return gpu::Buffer(context, std::max<uint64_t>(16 * sizeof(JointMatrix), matrices * sizeof(JointMatrix)),
+                     gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+}
+
+MotionCacheStats addCacheStats(const MotionCacheStats& a, const MotionCacheStats& b) {
+  return {a.hits + b.hits,           a.misses + b.misses,       a.evictions + b.evictions,
+          a.entries + b.entries,     a.bytesUsed + b.bytesUsed, a.budgetBytes + b.budgetBytes};
 }
 
 MotionCacheStats readCacheStats(const GpuMotionCache& cache) {

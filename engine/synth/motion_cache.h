@@ -5,6 +5,7 @@
 // inserts, FIFO eviction of the oldest entry when the byte budget is full. A character whose
 // bucket is resident does no blending and no hierarchy: A = M · cached pose.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -68,12 +69,21 @@ struct GpuMotionCache {
   gpu::Buffer slotBucket;  // int per slot, −1 when empty
   gpu::Buffer freshSlots;  // [0] count, then the slots inserted this frame (to synthesize)
   gpu::Buffer fillArgs;    // VkDispatchIndirectCommand of the fill pass
-  gpu::Buffer data;        // capacity × rows × joints JointMatrix (the SSBO ring)
+  // The entries (capacity × rows × joints JointMatrix, the SSBO ring) live in a data buffer
+  // that several caches may share (one per clip set of a crowd, so that one draw composes
+  // every cached character): this cache's entry 0 starts at matrix `dataBase` there.
+  uint32_t dataBase = 0;
+  uint64_t dataBytes() const { return uint64_t(capacity) * entryBytes; }
 };
 
 // A disabled cache still gets small buffers so the pose pass always has its bindings.
 GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::MotionPair& pair,
                                   const MotionCacheOptions& options);
+// A data buffer for these caches, one after the other: sets each cache's dataBase. Throws
+// Error when the entries would not be addressable by a 32-bit matrix index.
+gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache* const> caches);
 MotionCacheStats readCacheStats(const GpuMotionCache& cache);
+// The sum over several caches (the clip sets of one crowd).
+MotionCacheStats addCacheStats(const MotionCacheStats& a, const MotionCacheStats& b);
 
 }  // namespace throng::synth

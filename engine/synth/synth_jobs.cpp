@@ -72,8 +72,13 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
       coverage(makeCoverageProgram(context)),
       poseParents(pair.parents),
       poseAnimatedOffsets(pair.animatedOffset),
-      poseTexelsInUniform(texelsFitUniform(pair, uniformTexelCapacity(context))) {
+      poseTexelsInUniform(texelsFitUniform(pair, uniformTexelCapacity(context))),
+      specialization(poseSpecialization(pair, uniformTexelCapacity(context))) {
   noList = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+}
+
+bool SynthPrograms::fits(const gpu::Context& context, const anim::MotionPair& pair) const {
+  return specialization == poseSpecialization(pair, uniformTexelCapacity(context));
 }
 
 std::vector<std::string> CacheJob::validate() const {
@@ -82,6 +87,14 @@ std::vector<std::string> CacheJob::validate() const {
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
   if (!cache) problems.push_back("input/output 'cache' is missing");
   if (cache && !cache->options.enabled) problems.push_back("the cache is disabled");
+  if (!data || !*data) problems.push_back("output 'data' (the cache entries) is missing");
+  if (cache && data && *data &&
+      (uint64_t(cache->dataBase) * sizeof(JointMatrix) + cache->dataBytes()) > data->size())
+    problems.push_back(concat("output 'data' holds ", data->size(), " bytes, the cache needs ",
+                              cache->dataBytes(), " from matrix ", cache->dataBase));
+  if (crowd && (firstCharacter > crowd->count ||
+                (characterCount && characterCount > crowd->count - firstCharacter)))
+    problems.push_back("the group runs past the end of the crowd");
   if (cache && motion && cache->jointCount != motion->jointCount)
     problems.push_back(concat("the cache holds ", cache->jointCount,
                               " joints per pose, the motion pair has ", motion->jointCount));
@@ -90,13 +103,16 @@ std::vector<std::string> CacheJob::validate() const {
 
 void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("CacheJob", validate());
-  CachePush push{crowd->count, cache->rowCount, cache->capacity, cache->options.bucketWidth};
+  const uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
+  CachePush push{count, cache->rowCount, cache->capacity, cache->options.bucketWidth};
+  push.firstCharacter = firstCharacter;
+  push.dataBase = cache->dataBase;
   push.slowFrames = motion->slowFrames;
   push.fastFrames = motion->fastFrames;
   gpu::Binding lookup[] = {gpu::storageBinding(0, crowd->motion),
                            gpu::storageBinding(1, cache->counters),
                            gpu::storageBinding(2, cache->requested)};
-  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, crowd->count);
+  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, count);
   gpu::computeToComputeBarrier(cmd);
   gpu::Binding insert[] = {
       gpu::storageBinding(1, cache->counters),   gpu::storageBinding(2, cache->requested),
@@ -115,7 +131,7 @@ void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const 
                            gpu::uniformBinding(6, motion->constantOffsets),
                            gpu::storageBinding(7, cache->slotBucket),
                            gpu::storageBinding(8, cache->freshSlots),
-                           gpu::storageBinding(10, cache->data)};
+                           gpu::storageBinding(10, *data)};
     gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
     gpu::computeToComputeBarrier(cmd);
   }
@@ -129,6 +145,9 @@ std::vector<std::string> RootMotionJob::validate() const {
   if (crowd && (!crowd->placement || !crowd->motion))
     problems.push_back("crowd buffers are not allocated");
   if (!(dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", dt));
+  if (crowd && (firstCharacter > crowd->count ||
+                (characterCount && characterCount > crowd->count - firstCharacter)))
+    problems.push_back("the group runs past the end of the crowd");
   if (clips && (clips->slow.duration() <= 0.0f || clips->fast.duration() <= 0.0f))
     problems.push_back("clip durations must be positive");
   return problems;
@@ -143,7 +162,8 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
          programs.poseTexelsInUniform ? "uniform" : "storage", " buffers) than this one (",
          motion->jointCount, " joints, ", motion->texelsInUniform ? "uniform" : "storage", ")");
   RootMotionPush push{};
-  push.characterCount = crowd->count;
+  push.characterCount = characterCount ? characterCount : crowd->count - firstCharacter;
+  push.firstCharacter = firstCharacter;
   push.slowFrames = static_cast<uint32_t>(clips->slow.frameCount);
   push.fastFrames = static_cast<uint32_t>(clips->fast.frameCount);
   push.steering = static_cast<uint32_t>(steering);
@@ -165,7 +185,7 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
       gpu::storageBinding(2, crowd->placement),
       gpu::storageBinding(3, crowd->motion),
   };
-  gpu::dispatch(cmd, programs.rootMotion, bindings, push, crowd->count);
+  gpu::dispatch(cmd, programs.rootMotion, bindings, push, push.characterCount);
 }
 
 std::vector<std::string> PoseJob::validate() const {
@@ -242,7 +262,8 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
 std::vector<std::string> MaterializeCachedJob::validate() const {
   std::vector<std::string> problems;
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
-  if (!cache || !cache->data) problems.push_back("input 'cache' is missing");
+  if (!cache) problems.push_back("input 'cache' is missing");
+  if (!cacheData || !*cacheData) problems.push_back("input 'cacheData' buffer is missing");
   if (!poseSource || !*poseSource) problems.push_back("input 'poseSource' buffer is missing");
   if (!joints || !*joints) problems.push_back("output 'joints' buffer is missing");
   if (crowd && firstCharacter + characterCount > crowd->count)
@@ -269,7 +290,7 @@ void MaterializeCachedJob::record(VkCommandBuffer cmd, const SynthPrograms& prog
       gpu::storageBinding(4, crowd->motion),
       gpu::storageBinding(5, *joints, jointsOffset, bytes),
       gpu::storageBinding(9, *poseSource),
-      gpu::storageBinding(10, cache->data),
+      gpu::storageBinding(10, *cacheData),
       gpu::storageBinding(11, masks ? *masks : programs.noList),
   };
   gpu::dispatch(cmd, programs.poseCached, bindings, push, characterCount);

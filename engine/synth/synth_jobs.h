@@ -30,7 +30,10 @@ struct SynthPrograms {
   std::vector<int32_t> poseParents;  // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
   bool poseTexelsInUniform = false;       // and where it reads the texels (motion_gpu.h)
+  std::vector<uint32_t> specialization;   // everything baked in (skeleton, fixed bones, texels)
   SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair);
+  // Whether these programs serve `pair` too (the same values baked in).
+  bool fits(const gpu::Context& context, const anim::MotionPair& pair) const;
 };
 
 // Eq. 10 on the GPU; twin: anim::stepCharacter.
@@ -38,6 +41,8 @@ struct RootMotionJob {
   const GpuMotionPair* motion = nullptr;       // input
   const anim::MotionPair* clips = nullptr;     // input: cycle durations and travel
   const crowd::CrowdBuffers* crowd = nullptr;  // input and output (updated in place)
+  uint32_t firstCharacter = 0;                 // the group [first, first + count)
+  uint32_t characterCount = 0;                 // 0: every character from firstCharacter
   float dt = 0.0f;
   anim::Steering steering = anim::Steering::KeepHeading;
   anim::SpeedRetarget retarget;  // speed changes over time (epoch 0: none)
@@ -72,7 +77,8 @@ struct PoseJob {
 // tests and exports that want every matrix in one buffer do. Twin: MotionCacheCpu::pose.
 struct MaterializeCachedJob {
   const crowd::CrowdBuffers* crowd = nullptr;  // input: placement and scale
-  const GpuMotionCache* cache = nullptr;       // input: the cached poses
+  const GpuMotionCache* cache = nullptr;       // input: the cached poses' layout
+  const gpu::Buffer* cacheData = nullptr;      // input: the cached poses (makeCacheData)
   const gpu::Buffer* poseSource = nullptr;     // input: per character, from the cache classify pass
   const gpu::Buffer* joints = nullptr;         // output: JointMatrix per character per joint
   uint32_t firstCharacter = 0, characterCount = 0;
@@ -85,10 +91,14 @@ struct MaterializeCachedJob {
 
 // The motion cache for this frame: lookup (per character), insert (FIFO, once per bucket) and
 // fill (synthesize fresh entries); then the classify pass points cached characters at it.
+// Over one group of characters: its clip set's cache, its entries in the shared data buffer.
 struct CacheJob {
   const GpuMotionPair* motion = nullptr;       // input
   const crowd::CrowdBuffers* crowd = nullptr;  // input: speed weights
   const GpuMotionCache* cache = nullptr;       // input and output
+  const gpu::Buffer* data = nullptr;           // output: the entries, from cache->dataBase
+  uint32_t firstCharacter = 0;                 // the group [first, first + count)
+  uint32_t characterCount = 0;                 // 0: every character from firstCharacter
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;

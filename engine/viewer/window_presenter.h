@@ -1,7 +1,7 @@
 #pragma once
 // The window platform of the frame loop: frames in flight over a swapchain. beginFrame()
 // hands out a command buffer and the swapchain image as FrameTargets (the same targets
-// recordCrowdFrame draws into for the headless dumper); endFrame() presents it and can read
+// scene::recordFrame draws into for the headless dumper); endFrame() presents it and can read
 // the image back for a screenshot. Resize and minimise are handled here.
 #include <functional>
 #include <memory>
@@ -12,7 +12,8 @@
 #include "gpu/commands.h"
 #include "gpu/image.h"
 #include "gpu/timestamps.h"
-#include "render/crowd_frame.h"
+#include "render/crowd_renderer.h"
+#include "render/frame_targets.h"
 #include "viewer/swapchain.h"
 #include "viewer/window.h"
 

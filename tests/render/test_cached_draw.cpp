@@ -8,24 +8,37 @@
 #include "gpu/commands.h"
 #include "gpu/timestamps.h"
 #include "gpu_fixture.h"
-#include "render/crowd_frame.h"
 #include "render/offscreen_target.h"
-#include "synth/crowd_synth.h"
+#include "scene/frame.h"
 
 using namespace throng;
 
 namespace {
-ImageRgba8 renderFrames(gpu::Context& ctx, const synth::SynthPrograms& programs,
-                        synth::CrowdSynth& synth, const render::Camera& camera, int frames) {
+// One group of `crowd` animated by `pair`.
+std::unique_ptr<scene::Scene> makeScene(const anim::MotionPair& pair, const crowd::Crowd& crowd,
+                                        const synth::MotionCacheOptions& cache) {
+  scene::SceneSetup setup;
+  setup.crowd = crowd;
+  setup.pairs.push_back(pair);
+  setup.groupFirst = {0, uint32_t(crowd.size())};
+  return std::make_unique<scene::Scene>(test::gpuContext(), std::move(setup), cache,
+                                        synth::LodOptions{});
+}
+
+ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
+                        int frames) {
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 320, 180);
   gpu::TimestampPool timestamps(ctx, 8);
-  const render::FrameTargets targets = render::offscreenFrameTargets(target);
+  scene::FrameSettings settings;
+  settings.camera = camera;
+  settings.targets = render::offscreenFrameTargets(target);
+  settings.groundExtent = 20.0f;
   for (int f = 0; f < frames; ++f) {
     timestamps.reset();
+    const scene::SceneStep step = scene.advance(1 / 30.0f);
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      render::recordCrowdFrame(cmd, ctx, programs, synth, renderer, camera, 20.0f, targets,
-                               1 / 30.0f, timestamps);
+      scene::recordFrame(cmd, ctx, scene, step, renderer, nullptr, settings, timestamps);
       render::recordReadback(cmd, target);
     });
   }
@@ -45,13 +58,12 @@ TEST_CASE("cached draw: the frame equals the frame with every joint synthesized"
   crowd::Crowd crowd = crowd::makeScenario(scenario);
   // The cache poses at the bucket's speed: give the plain path the same speeds.
   for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
-  synth::SynthPrograms programs(ctx, pair);
   render::Camera camera = render::cameraPreset("street", crowd::scenarioExtent(scenario));
   {
-    synth::CrowdSynth cached = synth::makeCrowdSynth(ctx, pair, crowd, cache);
-    synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd);
-    ImageRgba8 a = renderFrames(ctx, programs, cached, camera, 3);
-    ImageRgba8 b = renderFrames(ctx, programs, plain, camera, 3);
+    std::unique_ptr<scene::Scene> cached = makeScene(pair, crowd, cache);
+    std::unique_ptr<scene::Scene> plain = makeScene(pair, crowd, {});
+    ImageRgba8 a = renderFrames(ctx, *cached, camera, 3);
+    ImageRgba8 b = renderFrames(ctx, *plain, camera, 3);
     ImageDiff diff = compareImages(a, b, 24);
     MESSAGE("cached vs synthesized frame: mean ", diff.meanAbsError, ", max ", diff.maxError);
     // A cached pose is the nearest of 480 stored rows per second of cycle, not the continuous
@@ -59,7 +71,7 @@ TEST_CASE("cached draw: the frame equals the frame with every joint synthesized"
     CHECK(diff.fractionDifferent < 0.005);
     CHECK(diff.meanAbsError < 0.2);
     // And the cached characters really took the composed path.
-    auto sources = gpu::readback<uint32_t>(ctx, cached.poseSource, crowd.size());
+    auto sources = gpu::readback<uint32_t>(ctx, cached->synth().poseSource, crowd.size());
     size_t composed = 0;
     for (uint32_t s : sources) composed += s != gpu_types::kPoseInJoints;
     CHECK(composed == crowd.size());

@@ -1,6 +1,6 @@
-// The storyboard crowd in the frame (render::SteeredCrowd through recordCrowdFrame's hooks):
-// steering before root motion moves walkers along their path vectors, standing pairs stay,
-// several motion pairs draw as one crowd, and group tints colour the characters.
+// A steered scene in the frame (scene::Scene through scene::recordFrame's stages): steering
+// before root motion moves walkers along their path vectors, standing pairs stay, several
+// motion pairs (groups over one set of buffers) draw as one crowd, and tints colour them.
 #include <doctest/doctest.h>
 
 #include <array>
@@ -12,7 +12,7 @@
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "render/offscreen_target.h"
-#include "render/steered_crowd.h"
+#include "scene/frame.h"
 
 using namespace throng;
 
@@ -21,8 +21,9 @@ namespace {
 // `walkers` agents 6 m apart along x facing +z, then `talkers`; every walker follows one
 // straight source at 1.2 m/s. Walkers use the walk pair, talkers the idle/talk pair (or all
 // the walk pair with `onePair`).
-render::SteeredCrowdSetup lineSetup(uint32_t walkers, uint32_t talkers, bool onePair) {
-  render::SteeredCrowdSetup s;
+scene::SceneSetup lineSetup(uint32_t walkers, uint32_t talkers, bool onePair) {
+  scene::SceneSetup s;
+  s.steering.emplace();
   const uint32_t n = walkers + talkers;
   s.crowd.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
@@ -32,19 +33,19 @@ render::SteeredCrowdSetup lineSetup(uint32_t walkers, uint32_t talkers, bool one
   crowd::PathSource source;
   source.vectors.assign(12, glm::vec2(0.0f, 1.2f));
   std::vector<crowd::PathSource> sources{source};
-  s.paths = crowd::followSources(s.crowd, sources, std::vector<uint32_t>(n, 0),
-                                 std::vector<float>(n, 2.0f));
-  for (uint32_t i = walkers; i < n; ++i) s.paths.lastSecond[i] = 0;  // talkers never steer
+  s.steering->paths = crowd::followSources(s.crowd, sources, std::vector<uint32_t>(n, 0),
+                                           std::vector<float>(n, 2.0f));
+  for (uint32_t i = walkers; i < n; ++i) s.steering->paths.lastSecond[i] = 0;  // never steer
   s.tints.assign(n, 0);
   for (uint32_t i = walkers; i < n; ++i) s.tints[i] = 1;
   anim::ClipPair walk = anim::defaultWalkPair();
   s.pairs.push_back(anim::makeMotionPair(walk.slow, walk.fast));
   if (onePair || talkers == 0) {
-    s.pairFirst = {0, n};
+    s.groupFirst = {0, n};
   } else {
     anim::ClipPair talk = anim::defaultTalkPair();
     s.pairs.push_back(anim::makeMotionPair(talk.slow, talk.fast));
-    s.pairFirst = {0, walkers, n};
+    s.groupFirst = {0, walkers, n};
   }
   return s;
 }
@@ -54,20 +55,21 @@ struct Rendered {
   ImageRgba8 image;
 };
 
-Rendered run(render::SteeredCrowd& steered, int frames, float dt, const render::Camera& camera,
+Rendered run(scene::Scene& steered, int frames, float dt, const render::Camera& camera,
              uint32_t width, uint32_t height) {
   gpu::Context& ctx = test::gpuContext();
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
-  const render::FrameTargets targets = render::offscreenFrameTargets(target);
+  scene::FrameSettings settings;
+  settings.camera = camera;
+  settings.targets = render::offscreenFrameTargets(target);
+  settings.groundExtent = 60.0f;
   gpu::TimestampPool timestamps(ctx, 8);
   for (int f = 0; f < frames; ++f) {
     timestamps.reset();
-    render::FrameHooks hooks;
-    steered.addHooks(hooks, dt);
+    const scene::SceneStep step = steered.advance(dt);
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      render::recordCrowdFrame(cmd, ctx, steered.programs(), steered.synth(), renderer, camera,
-                               60.0f, targets, dt, timestamps, 0, {}, false, &hooks);
+      scene::recordFrame(cmd, ctx, steered, step, renderer, nullptr, settings, timestamps);
       render::recordReadback(cmd, target);
     });
   }
@@ -86,15 +88,15 @@ bool finite(glm::vec4 v) {
 }  // namespace
 
 TEST_CASE(
-    "steered crowd: walkers follow their path vectors through root motion, talkers stand, nothing "
+    "steered scene: walkers follow their path vectors through root motion, talkers stand, nothing "
     "is NaN") {
   for (bool onePair : {false, true}) {
     CAPTURE(onePair);
     const uint32_t walkers = 5, talkers = 2;
-    render::SteeredCrowdSetup setup = lineSetup(walkers, talkers, onePair);
+    scene::SceneSetup setup = lineSetup(walkers, talkers, onePair);
     const std::vector<glm::vec4> start = setup.crowd.placement;
-    render::SteeredCrowd steered(test::gpuContext(), std::move(setup), {}, {});
-    CHECK(steered.pairCount() == (onePair ? 1u : 2u));
+    scene::Scene steered(test::gpuContext(), std::move(setup), {}, {});
+    CHECK(steered.groupCount() == (onePair ? 1u : 2u));
     CHECK(steered.count() == walkers + talkers);
     render::Camera camera = render::cameraPreset("top", 25.0f);
     Rendered r = run(steered, 60, 1.0f / 30.0f, camera, 96, 54);  // two simulated seconds
@@ -141,7 +143,7 @@ std::array<glm::vec3, 2> sideColours(const ImageRgba8& image) {
   return {glm::normalize(sum[0] / float(count[0])), glm::normalize(sum[1] / float(count[1]))};
 }
 
-TEST_CASE("steered crowd: each group gets its own colour, several pairs draw as one crowd") {
+TEST_CASE("steered scene: each group gets its own colour, several pairs draw as one crowd") {
   // Two groups (one per motion pair) far apart seen from above: two hues; with one group
   // for all, one hue (so the colour comes from the group, not from the character).
   render::Camera camera;
@@ -149,17 +151,17 @@ TEST_CASE("steered crowd: each group gets its own colour, several pairs draw as 
   camera.target = {0.0f, 0.0f, 0.0f};
   std::array<glm::vec3, 2> colours[2];
   for (int sameGroup = 0; sameGroup < 2; ++sameGroup) {
-    render::SteeredCrowdSetup setup = lineSetup(4, 4, false);
+    scene::SceneSetup setup = lineSetup(4, 4, false);
     for (uint32_t i = 0; i < 8; ++i)
       setup.crowd.placement[i] =
           glm::vec4(i < 4 ? -4.0f : 4.0f, 0.0f, 1.5f * float(i % 4) - 2.25f, 0.0f);
     crowd::PathSource still;
     still.vectors.assign(4, glm::vec2(0.0f, 0.0f));
     std::vector<crowd::PathSource> sources{still};
-    setup.paths = crowd::followSources(setup.crowd, sources, std::vector<uint32_t>(8, 0),
-                                       std::vector<float>(8, 1.0f));
+    setup.steering->paths = crowd::followSources(setup.crowd, sources, std::vector<uint32_t>(8, 0),
+                                                 std::vector<float>(8, 1.0f));
     if (sameGroup) setup.tints.assign(8, 3);
-    render::SteeredCrowd steered(test::gpuContext(), std::move(setup), {}, {});
+    scene::Scene steered(test::gpuContext(), std::move(setup), {}, {});
     colours[sameGroup] = sideColours(run(steered, 2, 1.0f / 30.0f, camera, 128, 96).image);
   }
   const glm::vec3 a = colours[0][0], b = colours[0][1];
@@ -169,21 +171,26 @@ TEST_CASE("steered crowd: each group gets its own colour, several pairs draw as 
   CHECK(glm::dot(colours[1][0], colours[1][1]) > 0.995f);  // one group: one hue on both sides
 }
 
-TEST_CASE("steered crowd: inconsistent setups are refused") {
-  render::SteeredCrowdSetup setup = lineSetup(3, 2, false);
+TEST_CASE("steered scene: inconsistent setups are refused") {
+  scene::SceneSetup setup = lineSetup(3, 2, false);
   SUBCASE("ranges that leave agents out") {
-    setup.pairFirst = {0, 3, 4};
-    CHECK_THROWS_WITH_AS(render::SteeredCrowd(test::gpuContext(), std::move(setup), {}, {}),
-                         doctest::Contains("pair ranges"), Error);
+    setup.groupFirst = {0, 3, 4};
+    CHECK_THROWS_WITH_AS(scene::Scene(test::gpuContext(), std::move(setup), {}, {}),
+                         doctest::Contains("groups must run from 0 to the 5 characters"), Error);
   }
   SUBCASE("a pair without agents") {
-    setup.pairFirst = {0, 5, 5};
-    CHECK_THROWS_WITH_AS(render::SteeredCrowd(test::gpuContext(), std::move(setup), {}, {}),
-                         doctest::Contains("motion pair 1 has no agent"), Error);
+    setup.groupFirst = {0, 5, 5};
+    CHECK_THROWS_WITH_AS(scene::Scene(test::gpuContext(), std::move(setup), {}, {}),
+                         doctest::Contains("group 1 has no character"), Error);
   }
   SUBCASE("too few tints") {
     setup.tints.pop_back();
-    CHECK_THROWS_WITH_AS(render::SteeredCrowd(test::gpuContext(), std::move(setup), {}, {}),
+    CHECK_THROWS_WITH_AS(scene::Scene(test::gpuContext(), std::move(setup), {}, {}),
                          doctest::Contains("tints"), Error);
+  }
+  SUBCASE("too few paths") {
+    setup.steering->paths.source.pop_back();
+    CHECK_THROWS_WITH_AS(scene::Scene(test::gpuContext(), std::move(setup), {}, {}),
+                         doctest::Contains("paths"), Error);
   }
 }

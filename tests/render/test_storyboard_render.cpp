@@ -65,7 +65,7 @@ TEST_CASE("render: storyboard options that cannot work are refused before anythi
       {"--storyboard " + board() + " --trajectories missing.txt",
        "--trajectories missing.txt: no such file"},
       {"--storyboard " + board() + " --trajectories " + board() + " --policy boids",
-       "--policy: boids not in"},
+       "unknown policy 'boids'"},
       {"--storyboard " + board() + " --trajectories " + board() + " --cell 0",
        "--cell: expected metres > 0"},
       {"--storyboard " + board() + " --trajectories " + board() + " --speed-period 5",

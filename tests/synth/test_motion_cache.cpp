@@ -38,8 +38,9 @@ crowd::Crowd crowdAt(const std::vector<float>& speeds, size_t n) {
 TEST_CASE("CacheJob: validity") {
   synth::CacheJob job;
   auto problems = job.validate();
-  REQUIRE(problems.size() == 3);
+  REQUIRE(problems.size() == 4);
   CHECK(problems[2].find("'cache'") != std::string::npos);
+  CHECK(problems[3].find("'data'") != std::string::npos);
   gpu::Context& ctx = test::gpuContext();
   anim::MotionPair pair = builtInPair();
   synth::GpuMotionCache disabled = synth::makeGpuMotionCache(ctx, pair, {});
@@ -107,7 +108,7 @@ TEST_CASE(
   crowd::Crowd crowd = crowdAt({0.2f}, 64);
   synth::SynthPrograms programs(ctx, pair);
   synth::CrowdSynth gpu = synth::makeCrowdSynth(ctx, pair, crowd, options);
-  REQUIRE(gpu.cache.capacity == 2);
+  REQUIRE(gpu.front().cache.capacity == 2);
   std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
   for (const Step& step : script) {
     crowd = crowdAt(step.speeds, 64);
@@ -122,7 +123,7 @@ TEST_CASE(
       synth::recordMaterializeCachedPoses(cmd, programs, gpu, 1u << 27);
     });
     cpu.update(crowd);
-    synth::MotionCacheStats g = synth::readCacheStats(gpu.cache), c = cpu.stats();
+    synth::MotionCacheStats g = synth::readCacheStats(gpu), c = cpu.stats();
     CHECK(c.hits == step.hits);
     CHECK(c.misses == step.misses);
     CHECK(c.evictions == step.evictions);
@@ -181,10 +182,10 @@ TEST_CASE(
   crowd::Crowd state;
   crowd::downloadCrowd(ctx, cached.crowd, state);
   std::vector<synth::JointMatrix> atRows(n);
-  synth::poseCrowdCpu(pair, atCacheRows(state, cached.cache.rowCount), atRows, 2);
+  synth::poseCrowdCpu(pair, atCacheRows(state, cached.front().cache.rowCount), atRows, 2);
   float worst = test::maxAbsDifference(&a[0].row0.x, &atRows[0].row0.x, n * 12);
   float offRow = test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12);
-  synth::MotionCacheStats stats = synth::readCacheStats(cached.cache);
+  synth::MotionCacheStats stats = synth::readCacheStats(cached);
   MESSAGE("cache vs synthesis at the cache rows over 5 frames: max diff ", worst,
           "; vs the continuous phase ", offRow, "; hits ", stats.hits, " misses ", stats.misses,
           " entries ", stats.entries, " bytes ", stats.bytesUsed);

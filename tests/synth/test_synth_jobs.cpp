@@ -38,7 +38,7 @@ Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd
   std::vector<synth::JointMatrix> cpuJoints(jointCount);
   Comparison worst;
   for (int f = 0; f < frames; ++f) {
-    synth::RootMotionJob root{&run.motion, &pair, &run.crowd, dt, cpuCrowd.steering};
+    synth::RootMotionJob root{&run.motion, &pair, &run.crowd, 0, 0, dt, cpuCrowd.steering};
     synth::PoseJob pose{&run.motion, &run.crowd, &run.joints};
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       root.record(cmd, programs);

@@ -1,0 +1,50 @@
+#pragma once
+// Steering of a crowd on the GPU: agents follow their path vectors (waypoints once per simulated
+// second) and avoid each other (uniform grid, then the avoidance policy), writing each agent's
+// heading and speed weight into the crowd's buffers for the root-motion pass to take up. Used
+// by storyboard crowds and the circle scene's lanes; the state of the simulated clock lives here.
+#include <cstdint>
+#include <vector>
+
+#include "crowd/avoidance_jobs.h"
+#include "crowd/path_goals.h"
+
+namespace throng::crowd {
+
+// This step's steering: what changes from step to step and whether new waypoints are due.
+struct SteerStep {
+  SteerFrame frame;
+  int64_t goalSecond = -1;  // ≥ 0: the waypoints of this second are computed first
+};
+
+class CrowdSteering {
+ public:
+  // `speeds`: per clip set its root speeds and the end of its agent range (speed → w).
+  // Throws Error for inconsistent sizes or avoidance parameters.
+  CrowdSteering(const gpu::Context& context, const AgentPaths& paths,
+                const AvoidanceParams& avoidance, std::vector<ClipSpeeds> speeds);
+
+  // Advances the simulated clock by dt and says what this step does.
+  SteerStep advance(float dt);
+  // Goals (when due), grid and avoidance over `crowd` (placement and motion are read and the
+  // motion's speed weights written); barriers before and after.
+  void record(VkCommandBuffer cmd, const CrowdBuffers& crowd, const SteerStep& step) const;
+
+  double seconds() const { return time_; }
+  uint32_t count() const { return count_; }
+  const AvoidanceParams& avoidance() const { return avoidance_; }
+
+ private:
+  AvoidanceParams avoidance_;
+  uint32_t count_ = 0;
+  AvoidancePrograms programs_;
+  SteerBuffers agents_;
+  GridBuffers grid_;
+  PathBuffers paths_;
+  std::vector<ClipSpeeds> speeds_;
+  double time_ = 0.0;
+  uint32_t step_ = 0;
+  int64_t goalSecond_ = -1;
+};
+
+}  // namespace throng::crowd

@@ -1,0 +1,21 @@
+#pragma once
+// The images a frame draws into: the offscreen target of headless runs or a swapchain image of
+// the viewer (the same frame draws into either).
+#include <cstdint>
+
+#include <volk.h>
+
+namespace throng::render {
+
+struct FrameTargets {
+  VkImage color = VK_NULL_HANDLE;
+  VkImageView colorView = VK_NULL_HANDLE;
+  VkImage depth = VK_NULL_HANDLE;
+  VkImageView depthView = VK_NULL_HANDLE;
+  uint32_t width = 0, height = 0;
+  // TRANSFER_SRC_OPTIMAL for readback, PRESENT_SRC_KHR for a swapchain, COLOR_ATTACHMENT_OPTIMAL
+  // when overlays draw after the crowd.
+  VkImageLayout finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+};
+
+}  // namespace throng::render

@@ -1,0 +1,50 @@
+#pragma once
+// One frame of a scene, as a plain ordered list of stages (scene/frame_stages.h):
+//   1. steer       goals, grid and avoidance (steered scenes)
+//   2. synthesize  root motion, coverage LOD, motion cache and pose pass over each group's range
+//   3. secondary   capes: advance, mark, decode (when the scene wears capes)
+//   4. draw        joints (compute splat and sprites), capes' splat and draw, ground
+// with GPU timestamps between them. A headless target and a window are two targets for the
+// same frame. A new pass goes into the stage it belongs to; a new stage goes into recordFrame.
+#include "gpu/context.h"
+#include "gpu/timestamps.h"
+#include "render/camera.h"
+#include "render/crowd_renderer.h"
+#include "render/frame_targets.h"
+#include "scene/scene.h"
+#include "secondary/cloth_gpu_layer.h"
+
+namespace throng::scene {
+
+struct FrameSettings {
+  render::Camera camera;
+  render::FrameTargets targets;
+  float groundExtent = 100.0f;
+  uint32_t frameSlot = 0;   // < render::kFramesInFlight
+  bool tintLevels = false;  // colour characters by LOD level (paper Fig. 8)
+};
+
+// Timestamp indices written by recordFrame.
+struct FrameTimestamps {
+  uint32_t start = 0, steered = 0, synthesized = 0, rendered = 0;
+};
+
+// GPU milliseconds of a frame's stages (render includes the capes' compute and draw).
+struct FrameTimings {
+  double steerMs = 0.0;
+  double synthesisMs = 0.0;
+  double renderMs = 0.0;
+};
+
+// What the draw stage draws for this scene through this camera.
+render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings);
+
+// Records the frame's stages for `step` (from scene.advance). `capes` may be null.
+FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, const Scene& scene,
+                            const SceneStep& step, render::CrowdRenderer& renderer,
+                            secondary::ClothLayer* capes, const FrameSettings& settings,
+                            gpu::TimestampPool& timestamps);
+
+FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks);
+
+}  // namespace throng::scene

@@ -1,0 +1,176 @@
+// Synthesis over groups: several clip sets animating contiguous ranges of ONE set of crowd
+// buffers (storyboard crowds). Validity of the groups, then GPU vs the CPU twin run on the same
+// ranges, with and without the motion cache (cached characters stay cached, each group's entries
+// in its own part of the shared data buffer).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "anim/default_clips.h"
+#include "core/error.h"
+#include "crowd/scenario.h"
+#include "gpu/commands.h"
+#include "gpu_fixture.h"
+#include "synth/cpu_synth.h"
+#include "synth/crowd_synth.h"
+#include "synth_fixtures.h"
+#include "test_support.h"
+
+using namespace throng;
+
+namespace {
+
+struct Groups {
+  std::vector<anim::MotionPair> pairs;
+  std::vector<const anim::MotionPair*> pointers;
+  std::vector<uint32_t> first;
+};
+
+// Run, walk and hop pairs over three ranges of an n-character crowd.
+Groups threeGroups(uint32_t n) {
+  Groups g;
+  for (const anim::ClipPair& clips :
+       {anim::defaultRunPair(), anim::defaultWalkPair(), anim::defaultJumpPair()})
+    g.pairs.push_back(anim::makeMotionPair(clips.slow, clips.fast));
+  for (const anim::MotionPair& p : g.pairs) g.pointers.push_back(&p);
+  g.first = {0, n * 3 / 10, n * 7 / 10, n};
+  return g;
+}
+
+crowd::Crowd groupCrowd(uint32_t n, float bucketWidth = 0.0f) {
+  crowd::ScenarioOptions options;
+  options.characters = n;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  if (bucketWidth > 0.0f)
+    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, bucketWidth);
+  return crowd;
+}
+
+std::vector<std::unique_ptr<synth::SynthPrograms>> groupPrograms(const Groups& g) {
+  std::vector<std::unique_ptr<synth::SynthPrograms>> programs;
+  for (const anim::MotionPair& p : g.pairs)
+    programs.push_back(std::make_unique<synth::SynthPrograms>(test::gpuContext(), p));
+  return programs;
+}
+
+std::vector<const synth::SynthPrograms*> pointers(
+    const std::vector<std::unique_ptr<synth::SynthPrograms>>& programs) {
+  std::vector<const synth::SynthPrograms*> out;
+  for (const auto& p : programs) out.push_back(p.get());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("crowd groups: ranges must cover the crowd in order, each with a pair") {
+  gpu::Context& ctx = test::gpuContext();
+  Groups g = threeGroups(100);
+  crowd::Crowd crowd = groupCrowd(100);
+  std::vector<uint32_t> gap = {0, 30, 60, 90};  // misses the last ten characters
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, g.pointers, gap, crowd),
+                       doctest::Contains("run from 0 to the 100 characters"), Error);
+  std::vector<uint32_t> empty = {0, 30, 30, 100};
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, g.pointers, empty, crowd),
+                       doctest::Contains("group 1 has no character"), Error);
+  std::vector<const anim::MotionPair*> none;
+  std::vector<uint32_t> whole = {0, 100};
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, none, whole, crowd),
+                       doctest::Contains("at least one motion pair"), Error);
+  synth::CrowdSynth ok = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd);
+  const synth::SynthPrograms one(ctx, g.pairs[0]);
+  const synth::SynthPrograms* tooFew[] = {&one};
+  gpu::CommandPool pool(ctx);
+  CHECK_THROWS_WITH_AS(synth::recordSynthesis(pool.allocate(), tooFew, ok, 0.03f, 1u << 27),
+                       doctest::Contains("3 groups but 1 program sets"), Error);
+}
+
+TEST_CASE("crowd groups: three clip sets over one set of buffers equal the CPU twin per range") {
+  gpu::Context& ctx = test::gpuContext();
+  const uint32_t n = 700;
+  Groups g = threeGroups(n);
+  crowd::Crowd cpu = groupCrowd(n);
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, g.pointers, g.first, cpu);
+  auto programs = groupPrograms(g);
+  const std::vector<const synth::SynthPrograms*> used = pointers(programs);
+  // A small binding limit: several pose chunks per group.
+  const VkDeviceSize chunkBytes = VkDeviceSize(96) * g.pairs[0].jointCount() * 48;
+  const float dt = 1 / 30.0f;
+  std::vector<synth::JointMatrix> cpuJoints(size_t(n) * g.pairs[0].jointCount());
+  for (int f = 0; f < 4; ++f) {
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, used, gpuSynth, dt, chunkBytes);
+    });
+    for (size_t k = 0; k < g.pairs.size(); ++k)
+      synth::stepCrowdCpu(g.pairs[k], cpu, {g.first[k], g.first[k + 1] - g.first[k]}, dt, 2);
+  }
+  for (size_t k = 0; k < g.pairs.size(); ++k)
+    synth::poseCrowdCpu(g.pairs[k], cpu, {g.first[k], g.first[k + 1] - g.first[k]}, cpuJoints, 2);
+  auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, cpuJoints.size());
+  crowd::Crowd gpuCrowd;
+  crowd::downloadCrowd(ctx, gpuSynth.crowd, gpuCrowd);
+  const float joints =
+      test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12);
+  const float placement =
+      test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpu.placement[0].x, size_t(n) * 4);
+  MESSAGE("three groups, 4 frames: max |GPU - CPU| joints ", joints, ", placement ", placement);
+  CHECK(joints <= 1e-4f);
+  CHECK(placement <= 1e-4f);
+  // The groups really animate differently: the walk group's pelvis height differs from the
+  // run group's twin output evaluated with the wrong pair.
+  std::vector<synth::JointMatrix> wrongPair(cpuJoints.size());
+  synth::poseCrowdCpu(g.pairs[0], cpu, {g.first[1], g.first[2] - g.first[1]}, wrongPair, 2);
+  const size_t from = size_t(g.first[1]) * g.pairs[0].jointCount();
+  CHECK(test::maxAbsDifference(&wrongPair[from].row0.x, &cpuJoints[from].row0.x,
+                               (size_t(g.first[2] - g.first[1])) * g.pairs[0].jointCount() * 12) >
+        0.01f);
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("crowd groups with the motion cache: cached characters stay cached, per-group entries") {
+  gpu::Context& ctx = test::gpuContext();
+  const uint32_t n = 900;
+  Groups g = threeGroups(n);
+  synth::MotionCacheOptions cache{true, 0.05f, 20ull << 20};
+  crowd::Crowd crowd = groupCrowd(n, cache.bucketWidth);
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd, cache);
+  auto programs = groupPrograms(g);
+  const std::vector<const synth::SynthPrograms*> used = pointers(programs);
+  for (int f = 0; f < 3; ++f)
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, used, gpuSynth, 1 / 30.0f, 1u << 27);
+    });
+  // Every bucket became resident in the first frame: no character was synthesized in full,
+  // and each points into its own group's part of the shared data.
+  auto sources = gpu::readback<uint32_t>(ctx, gpuSynth.poseSource, n);
+  for (size_t k = 0; k < g.pairs.size(); ++k) {
+    const synth::GpuMotionCache& c = gpuSynth.groups[k].cache;
+    const uint64_t begin = c.dataBase, end = begin + c.dataBytes() / 48;
+    for (uint32_t i = g.first[k]; i < g.first[k + 1]; ++i) {
+      REQUIRE(sources[i] != gpu_types::kPoseInJoints);
+      REQUIRE(sources[i] >= begin);
+      REQUIRE(sources[i] < end);
+    }
+  }
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    synth::recordMaterializeCachedPoses(cmd, used, gpuSynth, 1u << 27);
+  });
+  crowd::Crowd state;
+  crowd::downloadCrowd(ctx, gpuSynth.crowd, state);
+  const size_t joints = g.pairs[0].jointCount();
+  std::vector<synth::JointMatrix> atRows(size_t(n) * joints);
+  for (size_t k = 0; k < g.pairs.size(); ++k) {
+    const uint32_t rows = gpuSynth.groups[k].cache.rowCount;
+    crowd::Crowd rowed = state;
+    for (glm::vec4& m : rowed.motion) m.x = synth::cacheRowPhase(synth::cacheRow(m.x, rows), rows);
+    synth::poseCrowdCpu(g.pairs[k], rowed, {g.first[k], g.first[k + 1] - g.first[k]}, atRows, 2);
+  }
+  auto materialized = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, atRows.size());
+  const float worst =
+      test::maxAbsDifference(&materialized[0].row0.x, &atRows[0].row0.x, atRows.size() * 12);
+  const synth::MotionCacheStats stats = synth::readCacheStats(gpuSynth);
+  MESSAGE("three cached groups: max |GPU - CPU at the cache rows| ", worst, "; misses ",
+          stats.misses, ", hits ", stats.hits);
+  CHECK(worst <= 1e-4f);
+  CHECK(stats.misses == 3 * 21);  // every bucket of each clip set once
+  CHECK(ctx.validationMessageCount() == 0);
+}
