@@ -1,4 +1,5 @@
-// Viewer input scripts (wait, drag, key, scroll, resize, respawn, close) → per-frame events.
+// Viewer input scripts (wait, drag, key, scroll, resize, respawn, lod, cache, close) → per-frame
+// events.
 #include <string>
 
 #include "fuzz_support.h"

@@ -86,6 +86,8 @@ printf 'resize 640 480\nrespawn 500 circle\nrespawn 20\ndrag 10 10 300 200 4 rig
   > corpus/input_script/respawn_resize.txt
 printf 'key 1\nkey 2 2\nkey SPACE\nkey TAB\nscroll -1.5\ndrag 0 0 1 1 1 middle\nkey ESCAPE\n' \
   > corpus/input_script/keys.txt
+printf 'lod off\ncache on\nrespawn 300 random\nlod ON\ncache off\nwait 2\n' \
+  > corpus/input_script/switches.txt
 
 # Cloth files: a tiny explored graph of the toy garment and its compressed database.
 reset tsg

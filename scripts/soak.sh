@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Soak test of the viewer (not part of CI): `throng view` under Xvfb with the validation layer,
 # the coverage LOD and the motion cache on, replaying an input script in a loop for SECONDS
-# (default 600): respawns (random and circle scenes, changing sizes), window resizes, camera
-# orbits, pans, zooms, flights and presets, pause and vsync toggles. It samples the viewer's
-# resident memory (VmRSS) every 5 s and reports its growth after warm-up: the largest VmRSS of the
-# last minute against the largest of the minute after warm-up (the first fifth of the run), so
-# both windows hold whole script cycles (shorter runs: windows of a quarter of the run). Exits 1 when the growth exceeds
-# 5% or the validation layer printed any message (or the viewer failed).
+# (default 600): respawns (random and circle scenes, changing sizes), the LOD and the cache
+# switched off and on again (`lod`, `cache`), window resizes, camera orbits, pans, zooms,
+# flights and presets, pause and vsync toggles. It samples the viewer's resident memory (VmRSS)
+# every 5 s and reports its growth after warm-up: the largest VmRSS of the last minute against
+# the largest of the minute after warm-up (the first fifth of the run), so both windows hold
+# whole script cycles (shorter runs: windows of a quarter of the run). Exits 1 when the growth
+# exceeds 5% or the validation layer printed any message (or the viewer failed).
 #   scripts/soak.sh [SECONDS]      THRONG_BIN=path/to/throng to use another build
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -50,7 +51,7 @@ done
 [ -n "$xvfb_pid" ] || { echo "error: could not start Xvfb on any display :150..:199" >&2; exit 1; }
 export XDG_RUNTIME_DIR=$work LP_NUM_THREADS=${LP_NUM_THREADS:-2}
 
-# One cycle of the script (about 420 frames).
+# One cycle of the script (about 280 frames). It ends with the LOD and the cache on, as it starts.
 cat > "$work/cycle.txt" << 'SCRIPT'
 respawn 3000 random
 drag 640 360 760 380 20
@@ -60,8 +61,10 @@ key 3
 resize 960 540
 wait 30
 drag 400 300 300 250 15 right
+cache off
 respawn 1500 circle
 key 1
+lod off
 resize 1280 720
 scroll -2
 drag 600 200 500 260 10 middle
@@ -72,19 +75,25 @@ key SPACE
 key V
 wait 20
 key V
+lod on
 key SHIFT 5
 key S 20
 key 2
+cache on
 respawn 2500
 resize 1024 768
 key R
-wait 60
+lod off
+wait 20
+lod on
+wait 40
 resize 1280 720
 wait 30
 SCRIPT
 cycle_frames=$(awk '
   $1 == "wait" { f += $2 } $1 == "drag" { f += ($6 == "" ? 10 : $6) + 1 }
-  $1 == "key" { f += ($3 == "" ? 1 : $3) + 1 } $1 ~ /^(scroll|resize|respawn|close)$/ { f += 1 }
+  $1 == "key" { f += ($3 == "" ? 1 : $3) + 1 }
+  $1 ~ /^(scroll|resize|respawn|lod|cache|close)$/ { f += 1 }
   END { print f }' "$work/cycle.txt")
 
 view() {  # FRAMES SCRIPT LOG: runs the viewer in the background, sets viewer_pid

@@ -124,6 +124,12 @@ void ViewSession::applyScript(const std::vector<render::ScriptEvent>& events) {
         scriptRespawnLabel_ =
             concat(e.where, ": respawn ", long(e.x), e.text.empty() ? "" : " ", e.text);
         break;
+      case Kind::Lod:  // as the checkbox: applyLodPanel respawns when it differs from the crowd
+        panel_.lod = e.pressed;
+        break;
+      case Kind::Cache:  // as the checkbox: the next respawn builds the crowd with it or without
+        panel_.cache = e.pressed;
+        break;
       case Kind::Close:
         window_.requestClose();
         break;

@@ -100,6 +100,21 @@ void parseDrag(LineReader& line, InputScript& script) {
   }
 }
 
+// `lod on|off`, `cache on|off`: one frame that sets the panel's checkbox.
+void parseSwitch(LineReader& line, InputScript& script, const std::string& command,
+                 ScriptEvent::Kind kind) {
+  std::string value;
+  line.optionalWord(value);
+  const std::string v = upper(value);
+  if (v != "ON" && v != "OFF")
+    fail(line.where, ": expected 'on' or 'off' after '", command, "'",
+         value.empty() ? "" : concat(", got '", value, "'"));
+  line.end();
+  ScriptEvent e{kind};
+  e.pressed = v == "ON";
+  script.frames.push_back({e});
+}
+
 void parseLine(LineReader& line, InputScript& script) {
   std::string command = line.word("a command");
   if (command == "wait") {
@@ -139,12 +154,16 @@ void parseLine(LineReader& line, InputScript& script) {
     line.optionalWord(e.text);
     line.end();
     script.frames.push_back({e});
+  } else if (command == "lod") {
+    parseSwitch(line, script, command, ScriptEvent::Kind::Lod);
+  } else if (command == "cache") {
+    parseSwitch(line, script, command, ScriptEvent::Kind::Cache);
   } else if (command == "close") {
     line.end();
     script.frames.push_back({{ScriptEvent::Kind::Close}});
   } else {
     fail(line.where, ": unknown command '", command,
-         "' (expected wait, drag, key, scroll, resize, respawn or close)");
+         "' (expected wait, drag, key, scroll, resize, respawn, lod, cache or close)");
   }
 }
 

@@ -9,6 +9,8 @@
 //   scroll STEPS                    mouse wheel (positive zooms in), at most 1000 steps
 //   resize W H                      ask the window system for a W×H window
 //   respawn N [SCENARIO]            the panel's respawn: N characters (scenario kept if absent)
+//   lod on|off                      the panel's "coverage LOD" checkbox (switching respawns)
+//   cache on|off                    the panel's "motion cache" checkbox (applies at a respawn)
 //   close                           close the window, as its close button does
 // clang-format on
 #include <filesystem>
@@ -18,13 +20,13 @@
 namespace throng::render {
 
 struct ScriptEvent {
-  enum class Kind { Cursor, Button, Scroll, Key, Resize, Respawn, Close };
+  enum class Kind { Cursor, Button, Scroll, Key, Resize, Respawn, Lod, Cache, Close };
   Kind kind = Kind::Cursor;
   double x = 0.0, y = 0.0;  // cursor position, scroll steps (x), window size (x, y)
   int code = 0;             // GLFW mouse button or key code
-  bool pressed = false;
-  std::string text;   // respawn: the scenario name (empty: keep)
-  std::string where;  // resize, respawn: "NAME:LINE" of the command, for errors about it
+  bool pressed = false;     // button, key: pressed; lod, cache: on
+  std::string text;         // respawn: the scenario name (empty: keep)
+  std::string where;        // resize, respawn: "NAME:LINE" of the command, for errors about it
 };
 
 struct InputScript {

@@ -65,6 +65,23 @@ TEST_CASE("input script: resize and respawn remember their line for later errors
   CHECK(script.frames[1][0].x == 99999.0);
 }
 
+TEST_CASE("input script: lod and cache switch the panel's checkboxes, one frame each") {
+  render::InputScript s =
+      render::parseInputScript("lod off\ncache on  # a comment\nwait 1\nlod\tOn\ncache OFF\n", "t");
+  REQUIRE(s.frames.size() == 5);
+  REQUIRE(s.frames[0].size() == 1);
+  CHECK(s.frames[0][0].kind == Kind::Lod);
+  CHECK_FALSE(s.frames[0][0].pressed);
+  CHECK(s.frames[1][0].kind == Kind::Cache);
+  CHECK(s.frames[1][0].pressed);
+  CHECK(s.frames[2].empty());
+  // The values are not case-sensitive (as mouse button names).
+  CHECK(s.frames[3][0].kind == Kind::Lod);
+  CHECK(s.frames[3][0].pressed);
+  CHECK(s.frames[4][0].kind == Kind::Cache);
+  CHECK_FALSE(s.frames[4][0].pressed);
+}
+
 TEST_CASE("input script: key names") {
   CHECK(render::keyCodeFromName("a") == GLFW_KEY_A);
   CHECK(render::keyCodeFromName("7") == GLFW_KEY_7);
@@ -96,6 +113,13 @@ TEST_CASE("input script: errors name the file, the line and what was expected") 
       {"scroll nan\n", "s.txt:1: expected wheel steps, got 'nan'"},
       {"respawn 0\n", "s.txt:1: expected a character count in 1..4000000, got '0'"},
       {"respawn 10 circle extra\n", "s.txt:1: unexpected 'extra'"},
+      {"wait 1\nlod\n", "s.txt:2: expected 'on' or 'off' after 'lod'"},
+      {"lod yes\n", "s.txt:1: expected 'on' or 'off' after 'lod', got 'yes'"},
+      {"lod 1\n", "s.txt:1: expected 'on' or 'off' after 'lod', got '1'"},
+      {"lod on off\n", "s.txt:1: unexpected 'off' at the end of the line"},
+      {"cache\n", "s.txt:1: expected 'on' or 'off' after 'cache'"},
+      {"cache onn\n", "s.txt:1: expected 'on' or 'off' after 'cache', got 'onn'"},
+      {"cache off 3\n", "s.txt:1: unexpected '3' at the end of the line"},
       // Finite but absurd values would overflow the camera's floats.
       {"wait 1\ndrag 1e308 2 3 4\n", "s.txt:2: expected X0 in -100000..100000, got '1e308'"},
       {"drag 1 2 3 -2e5\n", "s.txt:1: expected Y1 in -100000..100000, got '-2e5'"},
