@@ -3,8 +3,9 @@
 // Ground with 1 m and 10 m grid lines, anti-aliased with screen-space derivatives and faded
 // with distance.
 #include "shared_types.h"
+#include "render_bindings.h"
 
-layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(location = 0) in vec3 worldPosition;
 layout(location = 0) out vec4 color;
 

@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // A ground quad at y = 0 covering ±eye.w metres (two triangles, no vertex buffer).
 #include "shared_types.h"
+#include "render_bindings.h"
 
-layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(location = 0) out vec3 worldPosition;
 
 void main() {

@@ -5,11 +5,12 @@
 #ifndef THRONG_JOINT_FETCH_GLSL
 #define THRONG_JOINT_FETCH_GLSL
 #include "cached_pose.glsl"
+#include "render_bindings.h"
 
-layout(std430, binding = 6) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = 7) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 8) readonly buffer PoseSource { uint poseSource[]; };
-layout(std430, binding = 9) readonly buffer CacheData { JointMatrix cacheData[]; };
+layout(std430, binding = kRenderBindingPlacement) readonly buffer Placement { vec4 placement[]; };
+layout(std430, binding = kRenderBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kRenderBindingPoseSource) readonly buffer PoseSource { uint poseSource[]; };
+layout(std430, binding = kRenderBindingCacheData) readonly buffer CacheData { JointMatrix cacheData[]; };
 
 // chunkJoint indexes the chunk's joints binding; character is global.
 JointMatrix fetchJoint(uint chunkJoint, uint character, uint joint, uint flags) {

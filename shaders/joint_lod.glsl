@@ -6,8 +6,9 @@
 #ifndef THRONG_JOINT_LOD_GLSL
 #define THRONG_JOINT_LOD_GLSL
 #include "coverage_types.h"
+#include "render_bindings.h"
 
-layout(std140, binding = 11) uniform LodLevels { CoverageParts lodParts; };  // kDrawLodLevels
+layout(std140, binding = kRenderBindingLodLevels) uniform LodLevels { CoverageParts lodParts; };  // kDrawLodLevels
 
 bool bitOf(uvec2 bits, uint j) { return ((j < 32u ? bits.x >> j : bits.y >> (j - 32u)) & 1u) != 0u; }
 

@@ -7,16 +7,17 @@
 // (depth bits << 32 | colour). Joints wider than push.maxPixels are listed for an indirect
 // draw by the graphics pipeline instead. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
+#include "render_bindings.h"
 #include "joint_sprite.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Joints { JointMatrix joints[]; };
-layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
-layout(std430, binding = 2) buffer Visibility { uint64_t visibility[]; };
-layout(std430, binding = 3) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
-layout(std430, binding = 4) writeonly buffer NearList { uint nearList[]; };
-layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
-layout(std430, binding = 10) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
+layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
+layout(std430, binding = kRenderBindingDraws) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
+layout(std430, binding = kRenderBindingNearList) writeonly buffer NearList { uint nearList[]; };
+layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
+layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
 layout(push_constant) uniform Push { SplatPush push; };
 #include "joint_fetch.glsl"
 #include "joint_lod.glsl"

@@ -2,9 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // Ray-casts the joint's ellipsoid through this pixel, writes its true depth, and shades it.
 #include "shared_types.h"
+#include "render_bindings.h"
 #include "joint_sprite.glsl"
 
-layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(location = 0) flat in vec3 tint;
 layout(location = 1) flat in vec4 inverse0;
 layout(location = 2) flat in vec4 inverse1;

@@ -5,13 +5,14 @@
 // splat on, the draw is indirect over the list of joints the splat found too wide for it
 // (joint_splat.comp), so tiny far joints never reach lavapipe's single-threaded vertex path.
 #include "shared_types.h"
+#include "render_bindings.h"
 #include "joint_sprite.glsl"
 
-layout(std430, binding = 0) readonly buffer Joints { JointMatrix joints[]; };
-layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
-layout(std430, binding = 4) readonly buffer NearList { uint nearList[]; };
-layout(std430, binding = 5) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
-layout(std430, binding = 10) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
+layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+layout(std430, binding = kRenderBindingNearList) readonly buffer NearList { uint nearList[]; };
+layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
+layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
 layout(push_constant) uniform Push { DrawPush push; };
 #include "joint_fetch.glsl"
 #include "joint_lod.glsl"

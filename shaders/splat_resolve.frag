@@ -4,9 +4,10 @@
 // Writes the splatted joints into the frame with their depth, so the depth test composites
 // them with the ground and the near joints.
 #include "shared_types.h"
+#include "render_bindings.h"
 
-layout(std140, binding = 1) uniform Frame { FrameUniforms frame; };
-layout(std430, binding = 2) readonly buffer Visibility { uint64_t visibility[]; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { uint64_t visibility[]; };
 layout(location = 0) out vec4 color;
 
 void main() {

@@ -1,0 +1,30 @@
+// Descriptor binding numbers of the joint renderer (engine/render: crowd_renderer.cpp,
+// joint_splat.cpp), named once for the shaders and the C++. The renderer's passes share one
+// numbering (the joint draw, the joint splat, the ground and the splat resolve), so a buffer
+// bound to several of them has one number; included like shared_types.h.
+#ifndef THRONG_RENDER_BINDINGS_H
+#define THRONG_RENDER_BINDINGS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace throng::gpu_types {
+using uint = uint32_t;
+#endif
+
+const uint kRenderBindingJoints = 0u;      // the chunk's JointMatrix, synthesized this frame
+const uint kRenderBindingFrame = 1u;       // FrameUniforms (uniform)
+const uint kRenderBindingVisibility = 2u;  // the splat's (depth bits << 32 | colour) per pixel
+const uint kRenderBindingDraws = 3u;       // VkDrawIndirectCommand per chunk
+const uint kRenderBindingNearList = 4u;    // joints left to the graphics pipeline
+const uint kRenderBindingMasks = 5u;       // coverage LOD, per character
+const uint kRenderBindingPlacement = 6u;   // joint_fetch.glsl: cached characters' root transform
+const uint kRenderBindingMotion = 7u;
+const uint kRenderBindingPoseSource = 8u;
+const uint kRenderBindingCacheData = 9u;
+const uint kRenderBindingGroups = 10u;     // kDrawGroupTint: a uint per character
+const uint kRenderBindingLodLevels = 11u;  // kDrawLodLevels: CoverageParts (uniform)
+
+#ifdef __cplusplus
+}  // namespace throng::gpu_types
+#endif
+#endif
