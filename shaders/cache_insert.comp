@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 // Motion cache, step 2 (a single invocation, buckets in ascending order): each requested bucket
 // is a hit when resident, else a miss that takes the FIFO head slot, evicting the oldest entry
-// when the budget is full. A bucket requested by many characters is looked up (and synthesized)
+// when the budget is full, unless that entry is in use this frame. A bucket requested by many characters is looked up (and synthesized)
 // once. CPU twin: synth::MotionCacheCpu::update.
 #include "shared_types.h"
 
@@ -18,18 +18,23 @@ layout(std430, binding = 8) writeonly buffer FillArgs { uint fillArgs[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
 void main() {
+  // Requested buckets already resident are hits; they and the entries inserted below are in use
+  // this frame (requested = 2) and are never evicted for another bucket of the same frame: with
+  // more buckets requested than the cache holds, the FIFO would otherwise refill (and the fill
+  // pass re-synthesize) entries every frame, each evicting one that this frame needs.
+  for (uint b = 0u; b < counters.bucketCount; ++b) {
+    if (requested[b] == 0u || bucketSlot[b] < 0) continue;
+    counters.hits += 1u;
+    requested[b] = 2u;
+  }
   uint fresh = 0u;
   for (uint b = 0u; b < counters.bucketCount; ++b) {
-    if (requested[b] == 0u) continue;
-    requested[b] = 0u;
-    if (bucketSlot[b] >= 0) {
-      counters.hits += 1u;
-      continue;
-    }
+    if (requested[b] != 1u) continue;
     counters.misses += 1u;
     if (counters.capacity == 0u) continue;
     uint slot = counters.head;
     int previous = slotBucket[slot];
+    if (previous >= 0 && requested[previous] != 0u) continue;  // in use: the bucket stays uncached
     if (previous >= 0) {
       bucketSlot[previous] = -1;
       counters.evictions += 1u;
@@ -38,12 +43,12 @@ void main() {
     }
     bucketSlot[b] = int(slot);
     slotBucket[slot] = int(b);
+    requested[b] = 2u;
     freshSlots[1u + fresh] = slot;
     fresh += 1u;
     counters.head = (slot + 1u) % counters.capacity;
   }
-  // A slot refilled twice in one frame (more misses than capacity) is listed twice; both fills
-  // write the same entry for its final bucket.
+  for (uint b = 0u; b < counters.bucketCount; ++b) requested[b] = 0u;
   freshSlots[0] = fresh;
   fillArgs[0] = (fresh * push.rowCount + 63u) / 64u;
   fillArgs[1] = 1u;

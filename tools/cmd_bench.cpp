@@ -12,6 +12,7 @@
 
 #include "bench_cloth.h"
 #include "bench_experiments.h"
+#include "bench_scene.h"
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
@@ -33,6 +34,7 @@ struct BenchOptions {
   int frames = 20;
   int warmup = 3;
   uint32_t renderCharacters = 10000;
+  uint32_t clipSetCharacters = 8000;  // the storyboard-crowd row
   std::string size = "1280x720";
   std::string device;
   bool quick = false;
@@ -228,6 +230,7 @@ void runBench(BenchOptions& o) {
     o.frames = 5;
     o.warmup = 1;
     o.renderCharacters = 1000;
+    o.clipSetCharacters = 1000;
     o.size = "320x180";
   }
   if (o.frames < 1 || o.warmup < 0) fail("--frames must be >= 1 and --warmup >= 0");
@@ -265,6 +268,12 @@ void runBench(BenchOptions& o) {
     if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
   }
   if (!o.clothOnly) {
+    const ClipSetBenchResult sets = benchClipSets(context, o.clipSetCharacters, o.frames, o.warmup);
+    report({"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames});
+    report({"gpu-synthesis-lod+cache-4-clip-sets", sets.characters, sets.fourSetsMs, 0.0,
+            sets.frames});
+    std::printf("  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
+                sets.ratioMedian, sets.ratioMin, sets.ratioMax);
     report(benchRender(context, pair, clips.slow.skeleton, o, Variant::Full));
     report(benchRender(context, pair, clips.slow.skeleton, o, Variant::LodCache));
   }
@@ -335,6 +344,10 @@ void addBenchCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--render-characters", options->renderCharacters, "Crowd size of the render row")
       ->capture_default_str();
+  cmd->add_option("--clip-set-characters", options->clipSetCharacters,
+                  "Crowd size of the storyboard-crowd row (four clip sets against one)")
+      ->capture_default_str()
+      ->check(CLI::Range(1u, 4000000u));
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
   cmd->add_option(

@@ -9,6 +9,14 @@ SynthesisTimer::SynthesisTimer(const gpu::Context& context)
 
 double SynthesisTimer::frame(const synth::SynthPrograms& programs, const synth::CrowdSynth& synth, float dt,
                              const anim::SpeedRetarget& retarget, const synth::CoverageCamera* lodCamera) {
+  const synth::SynthPrograms* one[] = {&programs};
+  return frame(one, synth, dt, retarget, lodCamera);
+}
+
+double SynthesisTimer::frame(std::span<const synth::SynthPrograms* const> programs,
+                             const synth::CrowdSynth& synth, float dt,
+                             const anim::SpeedRetarget& retarget,
+                             const synth::CoverageCamera* lodCamera) {
   timestamps_.reset();
   gpu::beginCommands(cmd_);
   timestamps_.write(cmd_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);

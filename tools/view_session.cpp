@@ -185,10 +185,10 @@ void ViewSession::applyPanel() {
   presenter_.setVsync(panel_.vsync);
   // The speed range and period apply live (from the next speed change) and to respawns.
   if (panel_.speedMin <= panel_.speedMax) {
-    scene_->speeds.lo = panel_.speedMin;
-    scene_->speeds.hi = panel_.speedMax;
+    scene_->crowd->speeds().lo = panel_.speedMin;
+    scene_->crowd->speeds().hi = panel_.speedMax;
   }
-  scene_->speeds.period = panel_.speedPeriod;
+  scene_->crowd->speeds().period = panel_.speedPeriod;
   applyLodPanel();
   if (panel_.respawn) {
     panel_.respawn = false;
@@ -244,21 +244,22 @@ void ViewSession::respawn(const SceneOptions& next, const std::string& label) {
   }
 }
 
-render::FrameTimestamps ViewSession::recordCrowdOnce(const render::PresentFrame& frame, float dt) {
-  anim::SpeedRetarget retarget = scene_->speeds.advance(dt);
-  if (retarget.epoch != 0) ++speedChanges_;
-  render::FrameHooks clothHooks;
-  if (scene_->cloth) clothHooks = scene_->cloth->hooks(frame.slot);
-  if (scene_->steered) scene_->steered->addHooks(clothHooks, dt);  // storyboard steering
-  return render::recordCrowdFrame(frame.cmd, context_, framePrograms(*scene_), frameSynth(*scene_),
-                                  renderer_, camera_, scene_->groundExtent, frame.targets, dt,
-                                  *frame.timestamps, frame.slot, retarget,
-                                  panel_.lodTint && frameSynth(*scene_).lod, &clothHooks);
+scene::FrameTimestamps ViewSession::recordCrowdOnce(const render::PresentFrame& frame, float dt) {
+  const scene::SceneStep step = scene_->crowd->advance(dt);
+  if (step.retarget.epoch != 0) ++speedChanges_;
+  scene::FrameSettings settings;
+  settings.camera = camera_;
+  settings.targets = frame.targets;
+  settings.groundExtent = scene_->groundExtent;
+  settings.frameSlot = frame.slot;
+  settings.tintLevels = panel_.lodTint && frameSynth(*scene_).lod;
+  return scene::recordFrame(frame.cmd, context_, *scene_->crowd, step, renderer_,
+                            scene_->cloth.get(), settings, *frame.timestamps);
 }
 
-render::FrameTimestamps ViewSession::recordCrowd(const render::PresentFrame& frame, float dt) {
+scene::FrameTimestamps ViewSession::recordCrowd(const render::PresentFrame& frame, float dt) {
   try {
-    render::FrameTimestamps marks = recordCrowdOnce(frame, dt);
+    scene::FrameTimestamps marks = recordCrowdOnce(frame, dt);
     if (respawned_ || !recorded_) recorded_ = scene_->options;
     respawned_ = false;
     return marks;
@@ -274,8 +275,7 @@ render::FrameTimestamps ViewSession::recordCrowd(const render::PresentFrame& fra
 void ViewSession::recordTrajectories() {
   if (!trajectories_ || respawns_ > 0) return;
   context_.waitIdle();
-  const crowd::CrowdBuffers& buffers =
-      scene_->steered ? scene_->steered->crowd() : scene_->synth.crowd;
+  const crowd::CrowdBuffers& buffers = scene_->crowd->crowd();
   trajectories_->addFrame(gpu::readback<glm::vec4>(context_, buffers.placement, buffers.count));
 }
 
@@ -309,9 +309,9 @@ void ViewSession::collectTimes(uint32_t slot) {
   if (!pending_[slot]) return;
   pending_[slot] = false;
   gpu::TimestampPool& pool = presenter_.timestamps(slot);
-  render::FrameTimings t = render::readFrameTimings(pool, marks_[slot]);
+  scene::FrameTimings t = scene::readFrameTimings(pool, marks_[slot]);
   std::vector<uint64_t> ticks = pool.fetch();
-  stats_.passTimes({t.synthesisMs, t.renderMs,
+  stats_.passTimes({t.steerMs + t.synthesisMs, t.renderMs,
                     pool.millisecondsBetween(ticks, marks_[slot].rendered, panelMarks_[slot])});
   if (scene_->cloth && scene_->cloth->frameNumber(slot) > 0)
     stats_.clothFrame({scene_->cloth->frameNumber(slot), scene_->cloth->stats(slot),
@@ -337,8 +337,8 @@ PanelInfo ViewSession::panelInfo() const {
   info.jointsPerCharacter = frameSynth(*scene_).jointCount();
   info.lod = lodStats();
   info.lodEnabled = frameSynth(*scene_).lod;
-  info.cacheEnabled = frameSynth(*scene_).cache.options.enabled;
-  if (info.cacheEnabled) info.cache = synth::readCacheStats(frameSynth(*scene_).cache);
+  info.cacheEnabled = frameSynth(*scene_).cached();
+  if (info.cacheEnabled) info.cache = synth::readCacheStats(frameSynth(*scene_));
   info.clothEnabled = scene_->cloth != nullptr;
   if (scene_->cloth) {
     info.clothSplat = secondary::clothSplattable(scene_->cloth->gpuData());
@@ -382,8 +382,8 @@ void ViewSession::report() {
                 {"midPixels", scene_->options.lodMidPixels},
                 {"nearPixels", scene_->options.lodNearPixels},
                 {"tint", panel_.lodTint && frameSynth(*scene_).lod}};
-    if (frameSynth(*scene_).cache.options.enabled) {
-      synth::MotionCacheStats c = synth::readCacheStats(frameSynth(*scene_).cache);
+    if (frameSynth(*scene_).cached()) {
+      synth::MotionCacheStats c = synth::readCacheStats(frameSynth(*scene_));
       j["cache"] = {{"hits", c.hits},           {"misses", c.misses},
                     {"evictions", c.evictions}, {"entries", c.entries},
                     {"bytesUsed", c.bytesUsed}, {"budgetBytes", c.budgetBytes}};

@@ -169,11 +169,16 @@ void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> p
 // (numbered across groups), then their indirect dispatch arguments.
 void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                          const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal) {
-  for (size_t k = 0; k < synth.groups.size(); ++k) {
-    const SynthGroup& g = synth.groups[k];
-    CacheJob{&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count}.record(
-        cmd, *programs[k]);
-  }
+  std::vector<CacheJob> jobs;
+  for (const SynthGroup& g : synth.groups)
+    jobs.push_back({&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count});
+  // Each step for every group, then one barrier.
+  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordLookup(cmd, *programs[k]);
+  gpu::computeToComputeBarrier(cmd);
+  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordInsert(cmd, *programs[k]);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordFill(cmd, *programs[k]);
   vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunkTotal) * 4, 0u);
   gpu::computeToComputeBarrier(cmd);
   uint32_t c = 0;

@@ -2,8 +2,11 @@
 // The motion cache of the paper's §3.4, docs/design.md, resident on the GPU: key = speed weight
 // quantized to a bucket, data = the synthesized character-space clip at that speed (cacheRowCount
 // poses evenly spaced in phase, all joints). Lookup before synthesis, a miss synthesizes and
-// inserts, FIFO eviction of the oldest entry when the byte budget is full. A character whose
-// bucket is resident does no blending and no hierarchy: A = M · cached pose.
+// inserts, FIFO eviction of the oldest entry when the byte budget is full — except an entry in
+// use this frame: with more buckets requested than fit, the extra buckets stay uncached (their
+// characters are synthesized in full) rather than thrash the cache, refilling entries every
+// frame. A character whose bucket is resident does no blending and no hierarchy:
+// A = M · cached pose. Each clip set of a crowd has its own cache and budget.
 #include <cstdint>
 #include <span>
 #include <string>

@@ -22,20 +22,24 @@ MotionCacheCpu::MotionCacheCpu(const anim::MotionPair& pair, const MotionCacheOp
 }
 
 void MotionCacheCpu::update(const crowd::Crowd& crowd) {
-  std::vector<bool> requested(bucketCount_, false);
+  // 0: not requested, 1: requested, 2: in use this frame (never evicted for another bucket of
+  // the same frame). Mirrors cache_insert.comp.
+  std::vector<uint8_t> requested(bucketCount_, 0);
   for (const glm::vec4& m : crowd.motion)
-    requested[speedBucket(m.y, options_.bucketWidth, bucketCount_)] = true;
+    requested[speedBucket(m.y, options_.bucketWidth, bucketCount_)] = 1;
+  for (uint32_t b = 0; b < bucketCount_; ++b)
+    if (requested[b] && bucketSlot_[b] >= 0) {
+      ++stats_.hits;
+      requested[b] = 2;
+    }
   std::vector<uint32_t> fresh;
   for (uint32_t b = 0; b < bucketCount_; ++b) {
-    if (!requested[b]) continue;
-    if (bucketSlot_[b] >= 0) {
-      ++stats_.hits;
-      continue;
-    }
+    if (requested[b] != 1) continue;
     ++stats_.misses;
     if (capacity_ == 0) continue;
     uint32_t slot = head_;
     int32_t previous = slotBucket_[slot];
+    if (previous >= 0 && requested[size_t(previous)] != 0) continue;  // in use this frame
     if (previous >= 0) {
       bucketSlot_[previous] = -1;
       ++stats_.evictions;
@@ -44,6 +48,7 @@ void MotionCacheCpu::update(const crowd::Crowd& crowd) {
     }
     bucketSlot_[b] = static_cast<int32_t>(slot);
     slotBucket_[slot] = static_cast<int32_t>(b);
+    requested[b] = 2;
     fresh.push_back(slot);
     head_ = (slot + 1) % capacity_;
   }

@@ -101,29 +101,53 @@ std::vector<std::string> CacheJob::validate() const {
   return problems;
 }
 
+namespace {
+CachePush cachePush(const CacheJob& job) {
+  const uint32_t count =
+      job.characterCount ? job.characterCount : job.crowd->count - job.firstCharacter;
+  CachePush push{count, job.cache->rowCount, job.cache->capacity, job.cache->options.bucketWidth};
+  push.firstCharacter = job.firstCharacter;
+  push.dataBase = job.cache->dataBase;
+  push.slowFrames = job.motion->slowFrames;
+  push.fastFrames = job.motion->fastFrames;
+  return push;
+}
+}  // namespace
+
 void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
+  recordLookup(cmd, programs);
+  gpu::computeToComputeBarrier(cmd);
+  recordInsert(cmd, programs);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  recordFill(cmd, programs);
+  gpu::computeToComputeBarrier(cmd);
+}
+
+void CacheJob::recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("CacheJob", validate());
-  const uint32_t count = characterCount ? characterCount : crowd->count - firstCharacter;
-  CachePush push{count, cache->rowCount, cache->capacity, cache->options.bucketWidth};
-  push.firstCharacter = firstCharacter;
-  push.dataBase = cache->dataBase;
-  push.slowFrames = motion->slowFrames;
-  push.fastFrames = motion->fastFrames;
+  const CachePush push = cachePush(*this);
   gpu::Binding lookup[] = {gpu::storageBinding(0, crowd->motion),
                            gpu::storageBinding(1, cache->counters),
                            gpu::storageBinding(2, cache->requested)};
-  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, count);
-  gpu::computeToComputeBarrier(cmd);
-  gpu::Binding insert[] = {
-      gpu::storageBinding(1, cache->counters),   gpu::storageBinding(2, cache->requested),
+  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, push.characterCount);
+}
+
+void CacheJob::recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const {
+  gpu::throwIfInvalid("CacheJob", validate());
+  const CachePush push = cachePush(*this);
+  gpu::Binding insert[] = {gpu::storageBinding(1, cache->counters),   gpu::storageBinding(2, cache->requested),
       gpu::storageBinding(3, cache->bucketSlot), gpu::storageBinding(4, cache->slotBucket),
       gpu::storageBinding(5, cache->freshSlots), gpu::storageBinding(8, cache->fillArgs)};
   gpu::dispatch(cmd, programs.cacheInsert, insert, push, 1);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
-  if (cache->capacity > 0) {
-    // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
-    gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels),
+}
+
+void CacheJob::recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) const {
+  gpu::throwIfInvalid("CacheJob", validate());
+  if (cache->capacity == 0) return;
+  const CachePush push = cachePush(*this);
+  // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
+  gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels),
                            gpu::storageBinding(1, motion->fastTexels),
                            gpu::uniformBinding(12, motion->slowUniformTexels),
                            gpu::uniformBinding(13, motion->fastUniformTexels),
@@ -132,9 +156,7 @@ void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const 
                            gpu::storageBinding(7, cache->slotBucket),
                            gpu::storageBinding(8, cache->freshSlots),
                            gpu::storageBinding(10, *data)};
-    gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
-    gpu::computeToComputeBarrier(cmd);
-  }
+  gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
 }
 
 std::vector<std::string> RootMotionJob::validate() const {

@@ -101,7 +101,13 @@ struct CacheJob {
   uint32_t characterCount = 0;                 // 0: every character from firstCharacter
 
   std::vector<std::string> validate() const;
+  // The three steps with their barriers.
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+  // The steps one by one, so that a crowd's groups share each barrier: lookup, barrier, insert,
+  // barrier (compute and indirect), fill, barrier.
+  void recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+  void recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+  void recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
 }  // namespace throng::synth

@@ -104,6 +104,11 @@ TEST_CASE(
       {{0.4f, 0.6f}, 1, 3, 1},        // two misses, 0.2 (oldest) evicted
       {{0.2f, 0.6f}, 2, 4, 2},        // 0.6 hits; 0.2 misses again and evicts 0.4
       {{0.6f, 0.2f, 0.6f}, 4, 4, 2},  // both resident: one lookup each, whatever the count
+      // Three buckets, room for two: 0.4 misses but evicts neither entry this frame uses
+      // (else the FIFO would refill entries every frame, each evicting one still needed).
+      {{0.2f, 0.4f, 0.6f}, 6, 5, 2},
+      {{0.2f, 0.4f, 0.6f}, 8, 6, 2},
+      {{0.4f}, 8, 7, 3},  // 0.4 alone: now it takes the head slot (0.6, the oldest)
   };
   crowd::Crowd crowd = crowdAt({0.2f}, 64);
   synth::SynthPrograms programs(ctx, pair);
@@ -133,10 +138,15 @@ TEST_CASE(
     CHECK(g.entries == c.entries);
     CHECK(g.bytesUsed <= options.budgetBytes);
     // Cached output: GPU equals the CPU twin, and both equal plain synthesis at that speed and
-    // the phase of the cache row shown.
+    // the phase of the cache row shown (characters whose bucket stayed uncached: at their own).
     synth::poseCrowdCpuCached(pair, cpu, crowd, cpuJoints, 2);
     std::vector<synth::JointMatrix> direct(cpuJoints.size());
-    synth::poseCrowdCpu(pair, atCacheRows(crowd, cpu.rows()), direct, 2);
+    crowd::Crowd shown = atCacheRows(crowd, cpu.rows());
+    std::vector<synth::JointMatrix> probeJoints(pair.jointCount());
+    for (size_t i = 0; i < crowd.size(); ++i)
+      if (!cpu.pose(crowd.placement[i], crowd.motion[i], probeJoints))
+        shown.motion[i] = crowd.motion[i];
+    synth::poseCrowdCpu(pair, shown, direct, 2);
     auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpu.joints, cpuJoints.size());
     CHECK(test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x,
                                  cpuJoints.size() * 12) <= 1e-4f);

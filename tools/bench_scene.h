@@ -1,0 +1,23 @@
+#pragma once
+// The bench's storyboard-crowd row: a crowd animated by four clip sets (walk, run, idle/talk and
+// hop, in the action mix of the built-in storyboard) as groups over one set of buffers, against
+// the same crowd animated by one clip set, both with the coverage LOD and the motion cache,
+// frames interleaved in one run so the ratio is measured under the same machine load.
+#include <cstdint>
+
+#include "gpu/context.h"
+
+namespace throng::tools {
+
+struct ClipSetBenchResult {
+  uint32_t characters = 0;
+  int frames = 0;
+  double oneSetMs = 0.0;    // synthesis, median
+  double fourSetsMs = 0.0;  // synthesis, median
+  double ratioMedian = 0.0, ratioMin = 0.0, ratioMax = 0.0;  // per-frame pairs four / one
+};
+
+ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t characters, int frames,
+                                 int warmup);
+
+}  // namespace throng::tools
