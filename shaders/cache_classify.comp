@@ -8,15 +8,16 @@
 // others are listed for the full pose pass (dispatched indirectly over just them, since
 // lavapipe would execute both sides of a divergent branch).
 #include "shared_types.h"
+#include "synth_bindings.h"
 #include "motion_common.glsl"
 #include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 3) readonly buffer BucketSlot { int bucketSlot[]; };
-layout(std430, binding = 6) writeonly buffer CharacterList { uint characterList[]; };
-layout(std430, binding = 7) buffer ListCounts { uint listCounts[]; };
-layout(std430, binding = 9) writeonly buffer PoseSource { uint poseSource[]; };
+layout(std430, binding = kCacheClassifyBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kCacheClassifyBindingBucketSlot) readonly buffer BucketSlot { int bucketSlot[]; };
+layout(std430, binding = kCacheClassifyBindingCharacterList) writeonly buffer CharacterList { uint characterList[]; };
+layout(std430, binding = kCacheClassifyBindingListCounts) buffer ListCounts { uint listCounts[]; };
+layout(std430, binding = kCacheClassifyBindingPoseSource) writeonly buffer PoseSource { uint poseSource[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
 void main() {

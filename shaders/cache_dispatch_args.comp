@@ -1,8 +1,10 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
 // Motion cache, step 5: turn the list counts into indirect dispatch sizes (64 per group).
+#include "synth_bindings.h"
 layout(local_size_x = 64) in;
-layout(std430, binding = 7) readonly buffer ListCounts { uint listCounts[]; };
-layout(std430, binding = 8) writeonly buffer DispatchArgs { uint dispatchArgs[]; };
+layout(std430, binding = kCacheArgsBindingListCounts) readonly buffer ListCounts { uint listCounts[]; };
+layout(std430, binding = kCacheArgsBindingDispatchArgs) writeonly buffer DispatchArgs { uint dispatchArgs[]; };
 layout(push_constant) uniform Push { uint countCount; } push;
 
 void main() {

@@ -7,16 +7,17 @@
 // all characters that share it; row r at phase r / R, sampled continuously like the pose pass.
 // CPU twin: synth::MotionCacheCpu::update.
 #include "shared_types.h"
+#include "synth_bindings.h"
 #include "motion_common.glsl"
 #include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
 #include "motion_texels.glsl"
-layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
-layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
-layout(std430, binding = 7) readonly buffer SlotBucket { int slotBucket[]; };
-layout(std430, binding = 8) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
-layout(std430, binding = 10) writeonly buffer CacheData { JointMatrix joints[]; };
+layout(std430, binding = kCacheFillBindingRadius) readonly buffer Radius { float jointRadius[]; };
+layout(std140, binding = kCacheFillBindingConstantOffsets) uniform ConstantOffsets { vec4 constantOffsets[128]; };
+layout(std430, binding = kCacheFillBindingSlotBucket) readonly buffer SlotBucket { int slotBucket[]; };
+layout(std430, binding = kCacheFillBindingFreshSlots) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
+layout(std430, binding = kCacheFillBindingCacheData) writeonly buffer CacheData { JointMatrix joints[]; };
 void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
   joints[index].row0 = row0;
   joints[index].row1 = row1;

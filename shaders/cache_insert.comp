@@ -5,16 +5,17 @@
 // when the budget is full, unless that entry is in use this frame. A bucket requested by many characters is looked up (and synthesized)
 // once. CPU twin: synth::MotionCacheCpu::update.
 #include "shared_types.h"
+#include "synth_bindings.h"
 
 layout(local_size_x = 1) in;
-layout(std430, binding = 1) buffer Counters { CacheCounters counters; };
-layout(std430, binding = 2) buffer Requested { uint requested[]; };
-layout(std430, binding = 3) buffer BucketSlot { int bucketSlot[]; };
-layout(std430, binding = 4) buffer SlotBucket { int slotBucket[]; };
+layout(std430, binding = kCacheInsertBindingCounters) buffer Counters { CacheCounters counters; };
+layout(std430, binding = kCacheInsertBindingRequested) buffer Requested { uint requested[]; };
+layout(std430, binding = kCacheInsertBindingBucketSlot) buffer BucketSlot { int bucketSlot[]; };
+layout(std430, binding = kCacheInsertBindingSlotBucket) buffer SlotBucket { int slotBucket[]; };
 // The slots inserted this frame and the indirect dispatch that fills exactly those:
 // freshSlots[0] = count, freshSlots[1 …] = slots; fillArgs = VkDispatchIndirectCommand.
-layout(std430, binding = 5) buffer FreshSlots { uint freshSlots[]; };
-layout(std430, binding = 8) writeonly buffer FillArgs { uint fillArgs[]; };
+layout(std430, binding = kCacheInsertBindingFreshSlots) buffer FreshSlots { uint freshSlots[]; };
+layout(std430, binding = kCacheInsertBindingFillArgs) writeonly buffer FillArgs { uint fillArgs[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
 void main() {

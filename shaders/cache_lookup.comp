@@ -2,12 +2,13 @@
 #extension GL_GOOGLE_include_directive : require
 // Motion cache, step 1 (one invocation per character of a group): flag the speed bucket it needs this frame.
 #include "shared_types.h"
+#include "synth_bindings.h"
 #include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 1) buffer Counters { CacheCounters counters; };
-layout(std430, binding = 2) writeonly buffer Requested { uint requested[]; };
+layout(std430, binding = kCacheLookupBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kCacheLookupBindingCounters) buffer Counters { CacheCounters counters; };
+layout(std430, binding = kCacheLookupBindingRequested) writeonly buffer Requested { uint requested[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
 void main() {

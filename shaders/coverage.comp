@@ -8,15 +8,16 @@
 // CPU twin: synth::coverageCharacter (engine/synth/coverage.cpp), mirrored operation for
 // operation (the math is in coverage_common.glsl).
 #include "coverage_types.h"
+#include "synth_bindings.h"
 #include "coverage_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(std140, binding = 0) uniform Parts { CoverageParts parts; };
-layout(std430, binding = 1) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = 2) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 3) readonly buffer Joints { JointMatrix joints[]; };  // the chunk's characters
-layout(std430, binding = 4) buffer Masks { CoverageMask masks[]; };           // global index, in/out
-layout(std430, binding = 5) writeonly buffer Areas { float areas[]; };        // global index × 5
+layout(std140, binding = kCoverageBindingParts) uniform Parts { CoverageParts parts; };
+layout(std430, binding = kCoverageBindingPlacement) readonly buffer Placement { vec4 placement[]; };
+layout(std430, binding = kCoverageBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kCoverageBindingJoints) readonly buffer Joints { JointMatrix joints[]; };  // the chunk's characters
+layout(std430, binding = kCoverageBindingMasks) buffer Masks { CoverageMask masks[]; };           // global index, in/out
+layout(std430, binding = kCoverageBindingAreas) writeonly buffer Areas { float areas[]; };        // global index × 5
 layout(push_constant) uniform Push { CoveragePush push; };
 
 void main() {

@@ -5,14 +5,15 @@
 #ifndef THRONG_MOTION_TEXELS_GLSL
 #define THRONG_MOTION_TEXELS_GLSL
 
+#include "synth_bindings.h"
 #include "words64.glsl"
 
-layout(constant_id = 582) const int kUniformTexels = 1;
-layout(constant_id = 583) const bool kTexelsInUniform = false;
-layout(std430, binding = 0) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
-layout(std430, binding = 1) readonly buffer FastMotion { u64vec2 fastMotion[]; };
-layout(std140, binding = 12) uniform SlowUniform { vec4 slowUniform[kUniformTexels]; };
-layout(std140, binding = 13) uniform FastUniform { vec4 fastUniform[kUniformTexels]; };
+layout(constant_id = kTexelsConstantUniformTexels) const int kUniformTexels = 1;
+layout(constant_id = kTexelsConstantInUniform) const bool kTexelsInUniform = false;
+layout(std430, binding = kTexelsBindingSlow) readonly buffer SlowMotion { u64vec2 slowMotion[]; };
+layout(std430, binding = kTexelsBindingFast) readonly buffer FastMotion { u64vec2 fastMotion[]; };
+layout(std140, binding = kTexelsBindingSlowUniform) uniform SlowUniform { vec4 slowUniform[kUniformTexels]; };
+layout(std140, binding = kTexelsBindingFastUniform) uniform FastUniform { vec4 fastUniform[kUniformTexels]; };
 
 vec4 slowTexel(int i) {
   if (kTexelsInUniform) return slowUniform[i];

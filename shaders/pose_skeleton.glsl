@@ -5,81 +5,83 @@
 #ifndef THRONG_POSE_SKELETON_GLSL
 #define THRONG_POSE_SKELETON_GLSL
 
+#include "synth_bindings.h"
+
 // The skeleton is baked into the pipeline as specialization constants (joint count and parent
 // array), so the joint loop has a constant trip count and constant parent indices: the compiler
 // unrolls it and keeps the hierarchy in registers instead of a per-invocation array in memory.
-layout(constant_id = 0) const int kJointCount = 1;
-layout(constant_id = 1) const int kParent0 = -1;
-layout(constant_id = 2) const int kParent1 = -1;
-layout(constant_id = 3) const int kParent2 = -1;
-layout(constant_id = 4) const int kParent3 = -1;
-layout(constant_id = 5) const int kParent4 = -1;
-layout(constant_id = 6) const int kParent5 = -1;
-layout(constant_id = 7) const int kParent6 = -1;
-layout(constant_id = 8) const int kParent7 = -1;
-layout(constant_id = 9) const int kParent8 = -1;
-layout(constant_id = 10) const int kParent9 = -1;
-layout(constant_id = 11) const int kParent10 = -1;
-layout(constant_id = 12) const int kParent11 = -1;
-layout(constant_id = 13) const int kParent12 = -1;
-layout(constant_id = 14) const int kParent13 = -1;
-layout(constant_id = 15) const int kParent14 = -1;
-layout(constant_id = 16) const int kParent15 = -1;
-layout(constant_id = 17) const int kParent16 = -1;
-layout(constant_id = 18) const int kParent17 = -1;
-layout(constant_id = 19) const int kParent18 = -1;
-layout(constant_id = 20) const int kParent19 = -1;
-layout(constant_id = 21) const int kParent20 = -1;
-layout(constant_id = 22) const int kParent21 = -1;
-layout(constant_id = 23) const int kParent22 = -1;
-layout(constant_id = 24) const int kParent23 = -1;
-layout(constant_id = 25) const int kParent24 = -1;
-layout(constant_id = 26) const int kParent25 = -1;
-layout(constant_id = 27) const int kParent26 = -1;
-layout(constant_id = 28) const int kParent27 = -1;
-layout(constant_id = 29) const int kParent28 = -1;
-layout(constant_id = 30) const int kParent29 = -1;
-layout(constant_id = 31) const int kParent30 = -1;
-layout(constant_id = 32) const int kParent31 = -1;
-layout(constant_id = 33) const int kParent32 = -1;
-layout(constant_id = 34) const int kParent33 = -1;
-layout(constant_id = 35) const int kParent34 = -1;
-layout(constant_id = 36) const int kParent35 = -1;
-layout(constant_id = 37) const int kParent36 = -1;
-layout(constant_id = 38) const int kParent37 = -1;
-layout(constant_id = 39) const int kParent38 = -1;
-layout(constant_id = 40) const int kParent39 = -1;
-layout(constant_id = 41) const int kParent40 = -1;
-layout(constant_id = 42) const int kParent41 = -1;
-layout(constant_id = 43) const int kParent42 = -1;
-layout(constant_id = 44) const int kParent43 = -1;
-layout(constant_id = 45) const int kParent44 = -1;
-layout(constant_id = 46) const int kParent45 = -1;
-layout(constant_id = 47) const int kParent46 = -1;
-layout(constant_id = 48) const int kParent47 = -1;
-layout(constant_id = 49) const int kParent48 = -1;
-layout(constant_id = 50) const int kParent49 = -1;
-layout(constant_id = 51) const int kParent50 = -1;
-layout(constant_id = 52) const int kParent51 = -1;
-layout(constant_id = 53) const int kParent52 = -1;
-layout(constant_id = 54) const int kParent53 = -1;
-layout(constant_id = 55) const int kParent54 = -1;
-layout(constant_id = 56) const int kParent55 = -1;
-layout(constant_id = 57) const int kParent56 = -1;
-layout(constant_id = 58) const int kParent57 = -1;
-layout(constant_id = 59) const int kParent58 = -1;
-layout(constant_id = 60) const int kParent59 = -1;
-layout(constant_id = 61) const int kParent60 = -1;
-layout(constant_id = 62) const int kParent61 = -1;
-layout(constant_id = 63) const int kParent62 = -1;
-layout(constant_id = 64) const int kParent63 = -1;
+layout(constant_id = kPoseConstantJointCount) const int kJointCount = 1;
+layout(constant_id = kPoseConstantParents + 0u) const int kParent0 = -1;
+layout(constant_id = kPoseConstantParents + 1u) const int kParent1 = -1;
+layout(constant_id = kPoseConstantParents + 2u) const int kParent2 = -1;
+layout(constant_id = kPoseConstantParents + 3u) const int kParent3 = -1;
+layout(constant_id = kPoseConstantParents + 4u) const int kParent4 = -1;
+layout(constant_id = kPoseConstantParents + 5u) const int kParent5 = -1;
+layout(constant_id = kPoseConstantParents + 6u) const int kParent6 = -1;
+layout(constant_id = kPoseConstantParents + 7u) const int kParent7 = -1;
+layout(constant_id = kPoseConstantParents + 8u) const int kParent8 = -1;
+layout(constant_id = kPoseConstantParents + 9u) const int kParent9 = -1;
+layout(constant_id = kPoseConstantParents + 10u) const int kParent10 = -1;
+layout(constant_id = kPoseConstantParents + 11u) const int kParent11 = -1;
+layout(constant_id = kPoseConstantParents + 12u) const int kParent12 = -1;
+layout(constant_id = kPoseConstantParents + 13u) const int kParent13 = -1;
+layout(constant_id = kPoseConstantParents + 14u) const int kParent14 = -1;
+layout(constant_id = kPoseConstantParents + 15u) const int kParent15 = -1;
+layout(constant_id = kPoseConstantParents + 16u) const int kParent16 = -1;
+layout(constant_id = kPoseConstantParents + 17u) const int kParent17 = -1;
+layout(constant_id = kPoseConstantParents + 18u) const int kParent18 = -1;
+layout(constant_id = kPoseConstantParents + 19u) const int kParent19 = -1;
+layout(constant_id = kPoseConstantParents + 20u) const int kParent20 = -1;
+layout(constant_id = kPoseConstantParents + 21u) const int kParent21 = -1;
+layout(constant_id = kPoseConstantParents + 22u) const int kParent22 = -1;
+layout(constant_id = kPoseConstantParents + 23u) const int kParent23 = -1;
+layout(constant_id = kPoseConstantParents + 24u) const int kParent24 = -1;
+layout(constant_id = kPoseConstantParents + 25u) const int kParent25 = -1;
+layout(constant_id = kPoseConstantParents + 26u) const int kParent26 = -1;
+layout(constant_id = kPoseConstantParents + 27u) const int kParent27 = -1;
+layout(constant_id = kPoseConstantParents + 28u) const int kParent28 = -1;
+layout(constant_id = kPoseConstantParents + 29u) const int kParent29 = -1;
+layout(constant_id = kPoseConstantParents + 30u) const int kParent30 = -1;
+layout(constant_id = kPoseConstantParents + 31u) const int kParent31 = -1;
+layout(constant_id = kPoseConstantParents + 32u) const int kParent32 = -1;
+layout(constant_id = kPoseConstantParents + 33u) const int kParent33 = -1;
+layout(constant_id = kPoseConstantParents + 34u) const int kParent34 = -1;
+layout(constant_id = kPoseConstantParents + 35u) const int kParent35 = -1;
+layout(constant_id = kPoseConstantParents + 36u) const int kParent36 = -1;
+layout(constant_id = kPoseConstantParents + 37u) const int kParent37 = -1;
+layout(constant_id = kPoseConstantParents + 38u) const int kParent38 = -1;
+layout(constant_id = kPoseConstantParents + 39u) const int kParent39 = -1;
+layout(constant_id = kPoseConstantParents + 40u) const int kParent40 = -1;
+layout(constant_id = kPoseConstantParents + 41u) const int kParent41 = -1;
+layout(constant_id = kPoseConstantParents + 42u) const int kParent42 = -1;
+layout(constant_id = kPoseConstantParents + 43u) const int kParent43 = -1;
+layout(constant_id = kPoseConstantParents + 44u) const int kParent44 = -1;
+layout(constant_id = kPoseConstantParents + 45u) const int kParent45 = -1;
+layout(constant_id = kPoseConstantParents + 46u) const int kParent46 = -1;
+layout(constant_id = kPoseConstantParents + 47u) const int kParent47 = -1;
+layout(constant_id = kPoseConstantParents + 48u) const int kParent48 = -1;
+layout(constant_id = kPoseConstantParents + 49u) const int kParent49 = -1;
+layout(constant_id = kPoseConstantParents + 50u) const int kParent50 = -1;
+layout(constant_id = kPoseConstantParents + 51u) const int kParent51 = -1;
+layout(constant_id = kPoseConstantParents + 52u) const int kParent52 = -1;
+layout(constant_id = kPoseConstantParents + 53u) const int kParent53 = -1;
+layout(constant_id = kPoseConstantParents + 54u) const int kParent54 = -1;
+layout(constant_id = kPoseConstantParents + 55u) const int kParent55 = -1;
+layout(constant_id = kPoseConstantParents + 56u) const int kParent56 = -1;
+layout(constant_id = kPoseConstantParents + 57u) const int kParent57 = -1;
+layout(constant_id = kPoseConstantParents + 58u) const int kParent58 = -1;
+layout(constant_id = kPoseConstantParents + 59u) const int kParent59 = -1;
+layout(constant_id = kPoseConstantParents + 60u) const int kParent60 = -1;
+layout(constant_id = kPoseConstantParents + 61u) const int kParent61 = -1;
+layout(constant_id = kPoseConstantParents + 62u) const int kParent62 = -1;
+layout(constant_id = kPoseConstantParents + 63u) const int kParent63 = -1;
 // True in the LOD variant of the pipeline: joints outside a character's mask are skipped. A
 // constant, so the variant without LOD carries no per-joint branch at all.
-layout(constant_id = 67) const bool kUseMasks = false;
+layout(constant_id = kPoseConstantUseMasks) const bool kUseMasks = false;
 
 // Bit j set: joint j's offset changes over frames (read per lane from the motion texels).
-layout(constant_id = 65) const uint kAnimatedOffsetsLow = 1u;
-layout(constant_id = 66) const uint kAnimatedOffsetsHigh = 0u;
+layout(constant_id = kPoseConstantAnimatedOffsets) const uint kAnimatedOffsetsLow = 1u;
+layout(constant_id = kPoseConstantAnimatedOffsets + 1u) const uint kAnimatedOffsetsHigh = 0u;
 bool offsetAnimated(int j) {
   return j < 32 ? ((kAnimatedOffsetsLow >> uint(j)) & 1u) != 0u : ((kAnimatedOffsetsHigh >> uint(j - 32)) & 1u) != 0u;
 }
@@ -89,8 +91,8 @@ bool offsetAnimated(int j) {
 // (fixedBoneOffset/Length/Align, generated), so the compiler folds them into the arithmetic:
 // no square root, division or alignYTo per joint, and the zero components of an axis-aligned
 // bone (most BVH skeletons have many) drop out of the rotations altogether.
-layout(constant_id = 68) const uint kFixedBonesLow = 0u;
-layout(constant_id = 69) const uint kFixedBonesHigh = 0u;
+layout(constant_id = kPoseConstantFixedBones) const uint kFixedBonesLow = 0u;
+layout(constant_id = kPoseConstantFixedBones + 1u) const uint kFixedBonesHigh = 0u;
 bool boneFixed(int j) {
   return j < 32 ? ((kFixedBonesLow >> uint(j)) & 1u) != 0u : ((kFixedBonesHigh >> uint(j - 32)) & 1u) != 0u;
 }

@@ -7,16 +7,17 @@
 // the step is continuous in the phase) rotated by the heading and scaled; w changes to wTarget
 // only when the cycle ends. CPU twin: anim::stepCharacter.
 #include "shared_types.h"
+#include "synth_bindings.h"
 #include "motion_common.glsl"
 #include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
 // The motion texels like the pose pass reads them (motion_texels.glsl): on lavapipe a texelFetch
 // goes through the whole sampler path.
-layout(constant_id = 0) const int kJointCount = 1;
+layout(constant_id = kRootMotionConstantJointCount) const int kJointCount = 1;
 #include "motion_texels.glsl"
-layout(std430, binding = 2) buffer Placement { vec4 placement[]; };
-layout(std430, binding = 3) buffer Motion { vec4 motion[]; };
+layout(std430, binding = kRootMotionBindingPlacement) buffer Placement { vec4 placement[]; };
+layout(std430, binding = kRootMotionBindingMotion) buffer Motion { vec4 motion[]; };
 layout(push_constant) uniform Push { RootMotionPush push; };
 
 // Root position at row k ≥ 0 counted on from the cycle start (k ≥ F continues into the next

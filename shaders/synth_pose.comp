@@ -8,19 +8,20 @@
 // matrices A = M·O·F (the paper's eq. 11, docs/design.md). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
 // the motion cache skip all of that in synth_pose_cached.comp.
 #include "shared_types.h"
+#include "synth_bindings.h"
 #include "motion_common.glsl"
 
 layout(local_size_x = 64) in;
 #include "motion_texels.glsl"
-layout(std430, binding = 2) readonly buffer Radius { float jointRadius[]; };
+layout(std430, binding = kPoseBindingRadius) readonly buffer Radius { float jointRadius[]; };
 // Offsets of joints whose offset never changes: (slow, fast) at (2j, 2j + 1). Read at a
 // constant index, so every lane shares one load instead of gathering per lane.
-layout(std140, binding = 6) uniform ConstantOffsets { vec4 constantOffsets[128]; };
+layout(std140, binding = kPoseBindingConstantOffsets) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 // Read as 64-bit words too (two per vec4, see motion_texels.glsl).
-layout(std430, binding = 3) readonly buffer Placement { u64vec2 placement[]; };
-layout(std430, binding = 4) readonly buffer Motion { u64vec2 motion[]; };
+layout(std430, binding = kPoseBindingPlacement) readonly buffer Placement { u64vec2 placement[]; };
+layout(std430, binding = kPoseBindingMotion) readonly buffer Motion { u64vec2 motion[]; };
 // Written as 64-bit words (words64.glsl): six 64-bit components per joint instead of twelve floats.
-layout(std430, binding = 5) writeonly buffer Joints { u64vec2 jointWords[]; };
+layout(std430, binding = kPoseBindingJoints) writeonly buffer Joints { u64vec2 jointWords[]; };
 void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
   uint at = 3u * index;
   jointWords[at] = toWords(row0);
@@ -29,10 +30,10 @@ void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
 }
 // With the motion cache on, only the characters whose bucket is not resident are posed here,
 // listed by cache_classify.comp.
-layout(std430, binding = 7) readonly buffer CharacterList { uint characterList[]; };
-layout(std430, binding = 8) readonly buffer ListCounts { uint listCounts[]; };
+layout(std430, binding = kPoseBindingCharacterList) readonly buffer CharacterList { uint characterList[]; };
+layout(std430, binding = kPoseBindingListCounts) readonly buffer ListCounts { uint listCounts[]; };
 // Coverage LOD (the kUseMasks variant): the joints each character needs this frame.
-layout(std430, binding = 11) readonly buffer Masks { u64vec2 masks[]; };  // the joint bits in .x
+layout(std430, binding = kPoseBindingMasks) readonly buffer Masks { u64vec2 masks[]; };  // the joint bits in .x
 layout(push_constant) uniform Push { PosePush push; };
 
 #include "pose_skeleton.glsl"

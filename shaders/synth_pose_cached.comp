@@ -6,18 +6,19 @@
 // the same matrices itself); consumers that want every matrix in one buffer (tests, exports)
 // do. CPU twin: synth::MotionCacheCpu::pose.
 #include "shared_types.h"
+#include "synth_bindings.h"
 #include "cached_pose.glsl"
 
 layout(local_size_x = 64) in;
-layout(std430, binding = 3) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = 4) readonly buffer Motion { vec4 motion[]; };
-layout(std430, binding = 5) writeonly buffer Joints { JointMatrix joints[]; };
-layout(std430, binding = 9) readonly buffer PoseSource { uint poseSource[]; };
-layout(std430, binding = 10) readonly buffer CacheData { JointMatrix cacheData[]; };
-layout(std430, binding = 11) readonly buffer Masks { uvec4 masks[]; };
+layout(std430, binding = kPoseCachedBindingPlacement) readonly buffer Placement { vec4 placement[]; };
+layout(std430, binding = kPoseCachedBindingMotion) readonly buffer Motion { vec4 motion[]; };
+layout(std430, binding = kPoseCachedBindingJoints) writeonly buffer Joints { JointMatrix joints[]; };
+layout(std430, binding = kPoseCachedBindingPoseSource) readonly buffer PoseSource { uint poseSource[]; };
+layout(std430, binding = kPoseCachedBindingCacheData) readonly buffer CacheData { JointMatrix cacheData[]; };
+layout(std430, binding = kPoseCachedBindingMasks) readonly buffer Masks { uvec4 masks[]; };
 layout(push_constant) uniform Push { PosePush push; };
 
-layout(constant_id = 0) const int kJointCount = 1;
+layout(constant_id = kPoseCachedConstantJointCount) const int kJointCount = 1;
 
 void main() {
   uint local = gl_GlobalInvocationID.x;

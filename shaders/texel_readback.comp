@@ -1,11 +1,13 @@
 #version 450
+#extension GL_GOOGLE_include_directive : require
 // Reads a motion texture back through texelFetch, as the paper's shaders sample it, together
 // with the parent array SSBO; used by the motion-texture round-trip test.
+#include "synth_bindings.h"
 layout(local_size_x = 64) in;
-layout(binding = 0) uniform sampler2D motionTexture;
-layout(std430, binding = 1) readonly buffer Parents { int parents[]; };
-layout(std430, binding = 2) writeonly buffer Texels { vec4 texels[]; };
-layout(std430, binding = 3) writeonly buffer ParentsOut { int parentsOut[]; };
+layout(binding = kTexelReadbackBindingTexture) uniform sampler2D motionTexture;
+layout(std430, binding = kTexelReadbackBindingParents) readonly buffer Parents { int parents[]; };
+layout(std430, binding = kTexelReadbackBindingTexels) writeonly buffer Texels { vec4 texels[]; };
+layout(std430, binding = kTexelReadbackBindingParentsOut) writeonly buffer ParentsOut { int parentsOut[]; };
 layout(push_constant) uniform Push { uint width; uint height; uint jointCount; } push;
 
 void main() {

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/math.h"
 #include "gpu/job_check.h"
+#include "shaders/synth_bindings.h"
 #include "synth/synth_jobs.h"
 
 namespace throng::synth {
@@ -276,14 +277,15 @@ void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program
       (readJoints ? kCoverageReadJoints : 0u) | (writeAreas ? kCoverageWriteAreas : 0u));
   // Unused optional bindings get a stand-in buffer the shader never touches (flags say so).
   gpu::Binding bindings[] = {
-      gpu::uniformBinding(0, *parts, 0, sizeof(CoverageParts)),
-      gpu::storageBinding(1, crowd->placement),
-      gpu::storageBinding(2, crowd->motion),
-      readJoints ? gpu::storageBinding(3, *joints, jointsOffset,
+      gpu::uniformBinding(gpu_types::kCoverageBindingParts, *parts, 0, sizeof(CoverageParts)),
+      gpu::storageBinding(gpu_types::kCoverageBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kCoverageBindingMotion, crowd->motion),
+      readJoints ? gpu::storageBinding(gpu_types::kCoverageBindingJoints, *joints, jointsOffset,
                                        VkDeviceSize(count) * jointCount * sizeof(JointMatrix))
-                 : gpu::storageBinding(3, crowd->placement),
-      gpu::storageBinding(4, *masks),
-      writeAreas ? gpu::storageBinding(5, *areas) : gpu::storageBinding(5, *masks),
+                 : gpu::storageBinding(gpu_types::kCoverageBindingJoints, crowd->placement),
+      gpu::storageBinding(gpu_types::kCoverageBindingMasks, *masks),
+      writeAreas ? gpu::storageBinding(gpu_types::kCoverageBindingAreas, *areas)
+                 : gpu::storageBinding(gpu_types::kCoverageBindingAreas, *masks),
   };
   gpu::dispatch(cmd, program, bindings, push, count);
 }

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "gpu/commands.h"
+#include "shaders/synth_bindings.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
@@ -193,17 +194,19 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
       push.chunk = c;
       push.dataBase = g.cache.dataBase;
       push.jointCount = synth.jointCount();
-      gpu::Binding bindings[] = {gpu::storageBinding(0, synth.crowd.motion),
-                                 gpu::storageBinding(3, g.cache.bucketSlot),
-                                 gpu::storageBinding(6, synth.characterLists),
-                                 gpu::storageBinding(7, synth.listCounts),
-                                 gpu::storageBinding(9, synth.poseSource)};
+      gpu::Binding bindings[] = {
+          gpu::storageBinding(gpu_types::kCacheClassifyBindingMotion, synth.crowd.motion),
+          gpu::storageBinding(gpu_types::kCacheClassifyBindingBucketSlot, g.cache.bucketSlot),
+          gpu::storageBinding(gpu_types::kCacheClassifyBindingCharacterList, synth.characterLists),
+          gpu::storageBinding(gpu_types::kCacheClassifyBindingListCounts, synth.listCounts),
+          gpu::storageBinding(gpu_types::kCacheClassifyBindingPoseSource, synth.poseSource)};
       gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push, push.characterCount);
     }
   }
   gpu::computeToComputeBarrier(cmd);
-  gpu::Binding argBindings[] = {gpu::storageBinding(7, synth.listCounts),
-                                gpu::storageBinding(8, synth.dispatchArgs)};
+  gpu::Binding argBindings[] = {
+      gpu::storageBinding(gpu_types::kCacheArgsBindingListCounts, synth.listCounts),
+      gpu::storageBinding(gpu_types::kCacheArgsBindingDispatchArgs, synth.dispatchArgs)};
   gpu::dispatch(cmd, programs.front()->cacheArgs, argBindings, chunkTotal, chunkTotal);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);

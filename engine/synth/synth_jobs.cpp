@@ -6,51 +6,67 @@
 #include "core/math.h"
 #include "gpu/commands.h"
 #include "gpu/job_check.h"
+#include "shaders/synth_bindings.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
 
 namespace {
-// Specialization constants of synth_pose.comp: [0] joint count, [1 + j] parent of joint j,
-// [65], [66] the bit mask of joints whose offsets change over frames, [67] use LOD masks,
-// [68], [69] the bit mask of fixed bones (synth::fixedBones), and from 70 + 8j joint j's fixed
-// bone: offset xyz, length, and the rotation aligning +y with it (xyzw), as float bits; [582]
-// the texels per uniform block, [583] whether the texels are read from the uniform buffers.
+// One specialization array serves every synthesis pass: the skeleton's ids run up to the
+// texels' (kPoseBoneConstants per joint), and the passes' joint-count ids are the pose pass's.
+static_assert(gpu_types::kPoseConstantBones +
+                  gpu_types::kPoseBoneConstants * gpu_types::kPoseMaxJoints ==
+              gpu_types::kTexelsConstantUniformTexels);
+static_assert(gpu_types::kTexelsConstantInUniform + 1 == gpu_types::kPoseConstantCount);
+static_assert(gpu_types::kRootMotionConstantJointCount == gpu_types::kPoseConstantJointCount &&
+              gpu_types::kPoseCachedConstantJointCount == gpu_types::kPoseConstantJointCount);
+
+// Specialization constants of synth_pose.comp (shaders/synth_bindings.h names the ids): the
+// joint count, each joint's parent, the bit masks of joints whose offsets change over frames
+// and of fixed bones (synth::fixedBones), whether LOD masks are used, each fixed bone's offset
+// xyz, length and the rotation aligning +y with it (xyzw) as float bits, the texels per uniform
+// block and whether the texels are read from the uniform buffers. Unused ids hold -1.
 std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity,
                                          bool useMasks = false) {
   const std::vector<int32_t>& parents = pair.parents;
-  if (parents.empty() || parents.size() > 64)
-    fail("the pose pass supports 1..64 joints, the skeleton has ", parents.size());
-  std::vector<uint32_t> values(70 + 8 * 64 + 2, static_cast<uint32_t>(-1));
+  if (parents.empty() || parents.size() > gpu_types::kPoseMaxJoints)
+    fail("the pose pass supports 1..", gpu_types::kPoseMaxJoints, " joints, the skeleton has ",
+         parents.size());
+  std::vector<uint32_t> values(gpu_types::kPoseConstantCount, static_cast<uint32_t>(-1));
   const bool inUniform = texelsFitUniform(pair, uniformCapacity);
-  values[582] = inUniform ? uniformCapacity : 1u;  // texels per uniform block
-  values[583] = inUniform ? 1u : 0u;
-  values[67] = useMasks ? 1u : 0u;
-  values[0] = static_cast<uint32_t>(parents.size());
-  for (size_t j = 0; j < parents.size(); ++j) values[1 + j] = static_cast<uint32_t>(parents[j]);
-  values[65] = values[66] = 0;
+  values[gpu_types::kTexelsConstantUniformTexels] = inUniform ? uniformCapacity : 1u;
+  values[gpu_types::kTexelsConstantInUniform] = inUniform ? 1u : 0u;
+  values[gpu_types::kPoseConstantUseMasks] = useMasks ? 1u : 0u;
+  values[gpu_types::kPoseConstantJointCount] = static_cast<uint32_t>(parents.size());
+  for (size_t j = 0; j < parents.size(); ++j)
+    values[gpu_types::kPoseConstantParents + j] = static_cast<uint32_t>(parents[j]);
+  values[gpu_types::kPoseConstantAnimatedOffsets] =
+      values[gpu_types::kPoseConstantAnimatedOffsets + 1] = 0;
   for (size_t j = 0; j < pair.animatedOffset.size(); ++j)
-    if (pair.animatedOffset[j]) values[65 + j / 32] |= 1u << (j % 32);
-  values[68] = values[69] = 0;
+    if (pair.animatedOffset[j])
+      values[gpu_types::kPoseConstantAnimatedOffsets + j / 32] |= 1u << (j % 32);
+  values[gpu_types::kPoseConstantFixedBones] = values[gpu_types::kPoseConstantFixedBones + 1] = 0;
   std::vector<bool> fixed = fixedBones(pair);
   for (size_t j = 0; j < fixed.size(); ++j) {
     glm::vec3 offset = pair.slow.offset(0, int(j));
     float length = glm::length(offset);
     glm::vec4 align = alignYTo(length > 1e-6f ? offset / length : glm::vec3(0.0f, 1.0f, 0.0f));
-    float bone[8] = {offset.x, offset.y, offset.z, length, align.x, align.y, align.z, align.w};
-    for (int c = 0; c < 8; ++c)
-      values[70 + 8 * j + size_t(c)] = fixed[j] ? std::bit_cast<uint32_t>(bone[c]) : 0u;
-    if (fixed[j]) values[68 + j / 32] |= 1u << (j % 32);
+    float bone[gpu_types::kPoseBoneConstants] = {offset.x, offset.y, offset.z, length,
+                                                 align.x,  align.y,  align.z,  align.w};
+    for (uint32_t c = 0; c < gpu_types::kPoseBoneConstants; ++c)
+      values[gpu_types::kPoseConstantBones + gpu_types::kPoseBoneConstants * j + c] =
+          fixed[j] ? std::bit_cast<uint32_t>(bone[c]) : 0u;
+    if (fixed[j]) values[gpu_types::kPoseConstantFixedBones + j / 32] |= 1u << (j % 32);
   }
   return values;
 }
-// Specialization constants of root_motion.comp: [0] joint count (the texel row width), and
-// [582], [583] as for the pose pass (where the texels are read).
+// Specialization constants of root_motion.comp: the joint count (the texel row width), and
+// where the texels are read, as for the pose pass.
 std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair,
                                                uint32_t uniformCapacity) {
   std::vector<uint32_t> values = poseSpecialization(pair, uniformCapacity);
-  values[0] = uint32_t(pair.jointCount());
+  values[gpu_types::kRootMotionConstantJointCount] = uint32_t(pair.jointCount());
   return values;
 }
 }  // namespace
@@ -127,18 +143,23 @@ void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const 
 void CacheJob::recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("CacheJob", validate());
   const CachePush push = cachePush(*this);
-  gpu::Binding lookup[] = {gpu::storageBinding(0, crowd->motion),
-                           gpu::storageBinding(1, cache->counters),
-                           gpu::storageBinding(2, cache->requested)};
+  gpu::Binding lookup[] = {
+      gpu::storageBinding(gpu_types::kCacheLookupBindingMotion, crowd->motion),
+      gpu::storageBinding(gpu_types::kCacheLookupBindingCounters, cache->counters),
+      gpu::storageBinding(gpu_types::kCacheLookupBindingRequested, cache->requested)};
   gpu::dispatch(cmd, programs.cacheLookup, lookup, push, push.characterCount);
 }
 
 void CacheJob::recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("CacheJob", validate());
   const CachePush push = cachePush(*this);
-  gpu::Binding insert[] = {gpu::storageBinding(1, cache->counters),   gpu::storageBinding(2, cache->requested),
-      gpu::storageBinding(3, cache->bucketSlot), gpu::storageBinding(4, cache->slotBucket),
-      gpu::storageBinding(5, cache->freshSlots), gpu::storageBinding(8, cache->fillArgs)};
+  gpu::Binding insert[] = {
+      gpu::storageBinding(gpu_types::kCacheInsertBindingCounters, cache->counters),
+      gpu::storageBinding(gpu_types::kCacheInsertBindingRequested, cache->requested),
+      gpu::storageBinding(gpu_types::kCacheInsertBindingBucketSlot, cache->bucketSlot),
+      gpu::storageBinding(gpu_types::kCacheInsertBindingSlotBucket, cache->slotBucket),
+      gpu::storageBinding(gpu_types::kCacheInsertBindingFreshSlots, cache->freshSlots),
+      gpu::storageBinding(gpu_types::kCacheInsertBindingFillArgs, cache->fillArgs)};
   gpu::dispatch(cmd, programs.cacheInsert, insert, push, 1);
 }
 
@@ -147,15 +168,16 @@ void CacheJob::recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) co
   if (cache->capacity == 0) return;
   const CachePush push = cachePush(*this);
   // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
-  gpu::Binding fill[] = {gpu::storageBinding(0, motion->slowTexels),
-                           gpu::storageBinding(1, motion->fastTexels),
-                           gpu::uniformBinding(12, motion->slowUniformTexels),
-                           gpu::uniformBinding(13, motion->fastUniformTexels),
-                           gpu::storageBinding(2, motion->jointRadius),
-                           gpu::uniformBinding(6, motion->constantOffsets),
-                           gpu::storageBinding(7, cache->slotBucket),
-                           gpu::storageBinding(8, cache->freshSlots),
-                           gpu::storageBinding(10, *data)};
+  gpu::Binding fill[] = {
+      gpu::storageBinding(gpu_types::kTexelsBindingSlow, motion->slowTexels),
+      gpu::storageBinding(gpu_types::kTexelsBindingFast, motion->fastTexels),
+      gpu::uniformBinding(gpu_types::kTexelsBindingSlowUniform, motion->slowUniformTexels),
+      gpu::uniformBinding(gpu_types::kTexelsBindingFastUniform, motion->fastUniformTexels),
+      gpu::storageBinding(gpu_types::kCacheFillBindingRadius, motion->jointRadius),
+      gpu::uniformBinding(gpu_types::kCacheFillBindingConstantOffsets, motion->constantOffsets),
+      gpu::storageBinding(gpu_types::kCacheFillBindingSlotBucket, cache->slotBucket),
+      gpu::storageBinding(gpu_types::kCacheFillBindingFreshSlots, cache->freshSlots),
+      gpu::storageBinding(gpu_types::kCacheFillBindingCacheData, *data)};
   gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
 }
 
@@ -200,12 +222,12 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
   push.slowCycleTravel = glm::vec4(clips->slow.cycleTravel, 0.0f);
   push.fastCycleTravel = glm::vec4(clips->fast.cycleTravel, 0.0f);
   gpu::Binding bindings[] = {
-      gpu::storageBinding(0, motion->slowTexels),
-      gpu::storageBinding(1, motion->fastTexels),
-      gpu::uniformBinding(12, motion->slowUniformTexels),
-      gpu::uniformBinding(13, motion->fastUniformTexels),
-      gpu::storageBinding(2, crowd->placement),
-      gpu::storageBinding(3, crowd->motion),
+      gpu::storageBinding(gpu_types::kTexelsBindingSlow, motion->slowTexels),
+      gpu::storageBinding(gpu_types::kTexelsBindingFast, motion->fastTexels),
+      gpu::uniformBinding(gpu_types::kTexelsBindingSlowUniform, motion->slowUniformTexels),
+      gpu::uniformBinding(gpu_types::kTexelsBindingFastUniform, motion->fastUniformTexels),
+      gpu::storageBinding(gpu_types::kRootMotionBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kRootMotionBindingMotion, crowd->motion),
   };
   gpu::dispatch(cmd, programs.rootMotion, bindings, push, push.characterCount);
 }
@@ -257,20 +279,20 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   const gpu::Buffer& list = listed ? *characterList : programs.noList;
   const gpu::Buffer& counts = listed ? *listCounts : programs.noList;
   gpu::Binding bindings[] = {
-      gpu::storageBinding(0, motion->slowTexels),
-      gpu::storageBinding(1, motion->fastTexels),
-      gpu::uniformBinding(12, motion->slowUniformTexels),
-      gpu::uniformBinding(13, motion->fastUniformTexels),
-      gpu::storageBinding(2, motion->jointRadius),
-      gpu::storageBinding(3, crowd->placement),
-      gpu::storageBinding(4, crowd->motion),
-      gpu::storageBinding(5, *joints, jointsOffset, bytes),
-      gpu::uniformBinding(6, motion->constantOffsets),
-      gpu::storageBinding(7, list),
-      gpu::storageBinding(8, counts),
-      gpu::storageBinding(11, maskBuffer),
+      gpu::storageBinding(gpu_types::kTexelsBindingSlow, motion->slowTexels),
+      gpu::storageBinding(gpu_types::kTexelsBindingFast, motion->fastTexels),
+      gpu::uniformBinding(gpu_types::kTexelsBindingSlowUniform, motion->slowUniformTexels),
+      gpu::uniformBinding(gpu_types::kTexelsBindingFastUniform, motion->fastUniformTexels),
+      gpu::storageBinding(gpu_types::kPoseBindingRadius, motion->jointRadius),
+      gpu::storageBinding(gpu_types::kPoseBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kPoseBindingMotion, crowd->motion),
+      gpu::storageBinding(gpu_types::kPoseBindingJoints, *joints, jointsOffset, bytes),
+      gpu::uniformBinding(gpu_types::kPoseBindingConstantOffsets, motion->constantOffsets),
+      gpu::storageBinding(gpu_types::kPoseBindingCharacterList, list),
+      gpu::storageBinding(gpu_types::kPoseBindingListCounts, counts),
+      gpu::storageBinding(gpu_types::kPoseBindingMasks, maskBuffer),
   };
-  // Both variants declare binding 11 (reflection reads the SPIR-V before specialization);
+  // Both variants declare the masks binding (reflection reads the SPIR-V before specialization);
   // only the masked one reads it.
   const gpu::ComputeProgram& program = masks ? programs.poseMasked : programs.pose;
   std::span<const gpu::Binding> used(bindings);
@@ -308,12 +330,12 @@ void MaterializeCachedJob::record(VkCommandBuffer cmd, const SynthPrograms& prog
   push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
   VkDeviceSize bytes = VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix);
   gpu::Binding bindings[] = {
-      gpu::storageBinding(3, crowd->placement),
-      gpu::storageBinding(4, crowd->motion),
-      gpu::storageBinding(5, *joints, jointsOffset, bytes),
-      gpu::storageBinding(9, *poseSource),
-      gpu::storageBinding(10, *cacheData),
-      gpu::storageBinding(11, masks ? *masks : programs.noList),
+      gpu::storageBinding(gpu_types::kPoseCachedBindingPlacement, crowd->placement),
+      gpu::storageBinding(gpu_types::kPoseCachedBindingMotion, crowd->motion),
+      gpu::storageBinding(gpu_types::kPoseCachedBindingJoints, *joints, jointsOffset, bytes),
+      gpu::storageBinding(gpu_types::kPoseCachedBindingPoseSource, *poseSource),
+      gpu::storageBinding(gpu_types::kPoseCachedBindingCacheData, *cacheData),
+      gpu::storageBinding(gpu_types::kPoseCachedBindingMasks, masks ? *masks : programs.noList),
   };
   gpu::dispatch(cmd, programs.poseCached, bindings, push, characterCount);
 }

@@ -8,6 +8,7 @@
 #include "gpu/program.h"
 #include "gpu/timestamps.h"
 #include "gpu_fixture.h"
+#include "shaders/synth_bindings.h"
 
 using namespace throng;
 
@@ -104,7 +105,8 @@ TEST_CASE("program: reflection and a checked dispatch") {
   gpu::TimestampPool timestamps(ctx, 2);
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     timestamps.write(cmd);
-    gpu::Binding bindings[] = {gpu::storageBinding(0, in), gpu::storageBinding(1, out)};
+    gpu::Binding bindings[] = {gpu::storageBinding(gpu_types::kTestScaleBindingInput, in),
+                               gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
     gpu::dispatch(cmd, program, bindings, push, n);
     timestamps.write(cmd);
   });
@@ -131,7 +133,8 @@ TEST_CASE("program: a uniform texel buffer is reflected, bound and read") {
   gpu::Buffer out(ctx, n * sizeof(float), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   const uint32_t count = n;
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    gpu::Binding bindings[] = {gpu::uniformTexelBinding(0, view), gpu::storageBinding(1, out)};
+    gpu::Binding bindings[] = {gpu::uniformTexelBinding(gpu_types::kTestTexelsBindingTexels, view),
+                               gpu::storageBinding(gpu_types::kTestTexelsBindingOutput, out)};
     gpu::dispatch(cmd, program, bindings, count, n);
   });
   std::vector<float> result = gpu::readback<float>(ctx, out, n);
@@ -141,11 +144,13 @@ TEST_CASE("program: a uniform texel buffer is reflected, bound and read") {
   }
   // A storage binding where the shader declares texels, and a null view, are reported.
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    gpu::Binding wrongType[] = {gpu::storageBinding(0, source), gpu::storageBinding(1, out)};
+    gpu::Binding wrongType[] = {gpu::storageBinding(gpu_types::kTestTexelsBindingTexels, source),
+                                gpu::storageBinding(gpu_types::kTestTexelsBindingOutput, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, wrongType, count, n),
                          doctest::Contains("expects descriptor type"), Error);
-    gpu::Binding nullView[] = {gpu::uniformTexelBinding(0, VK_NULL_HANDLE),
-                               gpu::storageBinding(1, out)};
+    gpu::Binding nullView[] = {
+        gpu::uniformTexelBinding(gpu_types::kTestTexelsBindingTexels, VK_NULL_HANDLE),
+        gpu::storageBinding(gpu_types::kTestTexelsBindingOutput, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, nullView, count, n),
                          doctest::Contains("null buffer view"), Error);
   });
@@ -157,7 +162,7 @@ TEST_CASE("program: missing binding and wrong push size are reported") {
   gpu::ComputeProgram program(ctx, "test_scale.comp");
   gpu::Buffer in(ctx, 64, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   uint32_t wrongPush = 1;
-  gpu::Binding one[] = {gpu::storageBinding(0, in)};
+  gpu::Binding one[] = {gpu::storageBinding(gpu_types::kTestScaleBindingInput, in)};
   struct Push {
     float scale;
     uint32_t count;

@@ -9,6 +9,7 @@
 #include "gpu/limits.h"
 #include "gpu/program.h"
 #include "gpu_fixture.h"
+#include "shaders/synth_bindings.h"
 
 using namespace throng;
 
@@ -40,27 +41,33 @@ TEST_CASE(
   gpu::Buffer out(ctx, 256, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   const uint32_t n = 64;
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    gpu::Binding whole[] = {gpu::storageBinding(0, big), gpu::storageBinding(1, out)};
+    gpu::Binding whole[] = {gpu::storageBinding(gpu_types::kTestScaleBindingInput, big),
+                            gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, whole, ScalePush{1.0f, n}, n),
                          doctest::Contains("maxStorageBufferRange"), gpu::LimitError);
-    gpu::Binding explicitRange[] = {gpu::storageBinding(0, big, 0, limit + 16),
-                                    gpu::storageBinding(1, out)};
+    gpu::Binding explicitRange[] = {
+        gpu::storageBinding(gpu_types::kTestScaleBindingInput, big, 0, limit + 16),
+        gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
     CHECK_THROWS_AS(gpu::dispatch(cmd, program, explicitRange, ScalePush{1.0f, n}, n),
                     gpu::LimitError);
     // A range past the end of its buffer is reported too.
-    gpu::Binding overflow[] = {gpu::storageBinding(0, out, 128, 256), gpu::storageBinding(1, out)};
+    gpu::Binding overflow[] = {
+        gpu::storageBinding(gpu_types::kTestScaleBindingInput, out, 128, 256),
+        gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
     CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, overflow, ScalePush{1.0f, n}, n),
                          doctest::Contains("overflows its buffer"), Error);
     // An offset off the device's alignment is reported before Vulkan sees it.
     const VkDeviceSize alignment = ctx.info().minStorageBufferOffsetAlignment;
     if (alignment > 1) {
-      gpu::Binding misaligned[] = {gpu::storageBinding(0, big, alignment / 2, 256),
-                                   gpu::storageBinding(1, out)};
+      gpu::Binding misaligned[] = {
+          gpu::storageBinding(gpu_types::kTestScaleBindingInput, big, alignment / 2, 256),
+          gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
       CHECK_THROWS_WITH_AS(gpu::dispatch(cmd, program, misaligned, ScalePush{1.0f, n}, n),
                            doctest::Contains("minStorageBufferOffsetAlignment"), Error);
     }
     // The last `limit` bytes of the large buffer are a legal binding.
-    gpu::Binding tail[] = {gpu::storageBinding(0, big, 256, limit), gpu::storageBinding(1, out)};
+    gpu::Binding tail[] = {gpu::storageBinding(gpu_types::kTestScaleBindingInput, big, 256, limit),
+                           gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
     gpu::dispatch(cmd, program, tail, ScalePush{1.0f, n}, n);
   });
   CHECK(ctx.validationMessageCount() == 0);
@@ -72,7 +79,8 @@ TEST_CASE("limits: a dispatch past maxComputeWorkGroupCount is a LimitError") {
   CHECK(program.maxGroupsX() == ctx.info().maxComputeWorkGroupCount[0]);
   gpu::Buffer in(ctx, 256, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   gpu::Buffer out(ctx, 256, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  gpu::Binding bindings[] = {gpu::storageBinding(0, in), gpu::storageBinding(1, out)};
+  gpu::Binding bindings[] = {gpu::storageBinding(gpu_types::kTestScaleBindingInput, in),
+                             gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
   const uint64_t tooMany = uint64_t(program.maxGroupsX()) * program.localSizeX() + 1;
   REQUIRE(tooMany <= UINT32_MAX);
   gpu::CommandPool pool(ctx);

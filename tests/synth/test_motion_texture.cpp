@@ -8,6 +8,7 @@
 #include "gpu/commands.h"
 #include "gpu/program.h"
 #include "gpu_fixture.h"
+#include "shaders/synth_bindings.h"
 #include "synth/motion_gpu.h"
 #include "test_support.h"
 
@@ -29,9 +30,12 @@ void checkRoundTrip(const anim::MotionPair& pair) {
       uint32_t width, height, jointCount;
     } push{image.width(), image.height(), uint32_t(pair.jointCount())};
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      gpu::Binding bindings[] = {gpu::sampledImageBinding(0, image.view(), gpuPair.sampler),
-                                 gpu::storageBinding(1, gpuPair.parents), gpu::storageBinding(2, texels),
-                                 gpu::storageBinding(3, parents)};
+      gpu::Binding bindings[] = {
+          gpu::sampledImageBinding(gpu_types::kTexelReadbackBindingTexture, image.view(),
+                                   gpuPair.sampler),
+          gpu::storageBinding(gpu_types::kTexelReadbackBindingParents, gpuPair.parents),
+          gpu::storageBinding(gpu_types::kTexelReadbackBindingTexels, texels),
+          gpu::storageBinding(gpu_types::kTexelReadbackBindingParentsOut, parents)};
       gpu::dispatch(cmd, program, bindings, push, count);
     });
     auto read = gpu::readback<glm::vec4>(ctx, texels, count);
