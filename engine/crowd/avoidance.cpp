@@ -10,8 +10,8 @@ namespace throng::crowd {
 
 std::optional<SteerPolicy> parseSteerPolicy(std::string_view name) {
   if (name == "none") return SteerPolicy::None;
-  if (name == "rule") return SteerPolicy::Rule;
-  if (name == "ttc") return SteerPolicy::Ttc;
+  if (name == "published" || name == "rule") return SteerPolicy::Rule;
+  if (name == "anticipatory" || name == "ttc") return SteerPolicy::Ttc;
   return std::nullopt;
 }
 
@@ -20,9 +20,9 @@ std::string_view steerPolicyName(SteerPolicy policy) {
     case SteerPolicy::None:
       return "none";
     case SteerPolicy::Rule:
-      return "rule";
+      return "published";
     case SteerPolicy::Ttc:
-      return "ttc";
+      return "anticipatory";
   }
   return "?";
 }

@@ -32,7 +32,9 @@
 namespace throng::crowd {
 
 enum class SteerPolicy : uint32_t { None = 0, Rule = 1, Ttc = 2 };
-std::optional<SteerPolicy> parseSteerPolicy(std::string_view name);  // "none", "rule", "ttc"
+// The one vocabulary of policies: "anticipatory" (time to collision), "published" (the rule)
+// and "none"; "ttc" and "rule" are accepted as aliases. Names are the first three.
+std::optional<SteerPolicy> parseSteerPolicy(std::string_view name);
 std::string_view steerPolicyName(SteerPolicy policy);
 
 struct AvoidanceParams {

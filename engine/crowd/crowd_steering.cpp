@@ -41,8 +41,7 @@ SteerStep CrowdSteering::advance(float dt) {
 
 void CrowdSteering::record(VkCommandBuffer cmd, const CrowdBuffers& crowd,
                            const SteerStep& step) const {
-  if (crowd.count != count_)
-    fail("steering: ", count_, " agents but the crowd has ", crowd.count);
+  if (crowd.count != count_) fail("steering: ", count_, " agents but the crowd has ", crowd.count);
   // The previous frame's synthesis wrote the state the grid reads.
   gpu::computeToComputeBarrier(cmd);
   if (step.goalSecond >= 0) {

@@ -54,8 +54,7 @@ std::vector<std::string> DrawStage::validate() const {
   if (targets.width != params.width || targets.height != params.height)
     problems.push_back(concat("the target is ", targets.width, "x", targets.height,
                               ", the draw's viewport ", params.width, "x", params.height));
-  if (params.characterCount > 0 && !params.joints)
-    problems.push_back("input 'joints' is missing");
+  if (params.characterCount > 0 && !params.joints) problems.push_back("input 'joints' is missing");
   return problems;
 }
 

@@ -23,8 +23,9 @@ void checkSetup(const SceneSetup& s) {
     fail("scene: ", n, " characters but ", s.steering->paths.size(), " paths");
 }
 
-std::vector<crowd::ClipSpeeds> clipSpeeds(const std::vector<std::unique_ptr<anim::MotionPair>>& pairs,
-                                          const std::vector<uint32_t>& groupFirst) {
+std::vector<crowd::ClipSpeeds> clipSpeeds(
+    const std::vector<std::unique_ptr<anim::MotionPair>>& pairs,
+    const std::vector<uint32_t>& groupFirst) {
   std::vector<crowd::ClipSpeeds> speeds;
   for (size_t k = 0; k < pairs.size(); ++k)
     speeds.push_back({crowd::clipRootSpeed(pairs[k]->slow), crowd::clipRootSpeed(pairs[k]->fast),

@@ -38,8 +38,8 @@ struct SceneSetup {
 // This frame's step of the scene's behaviour (Scene::advance).
 struct SceneStep {
   float dt = 0.0f;
-  anim::SpeedRetarget retarget;                // unsteered scenes' speed changes
-  std::optional<crowd::SteerStep> steering;    // steered scenes
+  anim::SpeedRetarget retarget;              // unsteered scenes' speed changes
+  std::optional<crowd::SteerStep> steering;  // steered scenes
 };
 
 class Scene {
@@ -72,7 +72,8 @@ class Scene {
   std::vector<uint8_t> activeAt(double seconds) const;
 
   // New coverage-LOD thresholds for every group (between frames, with no frame in flight).
-  void setLodThresholds(const anim::Skeleton& skeleton, const synth::CoverageThresholds& thresholds);
+  void setLodThresholds(const anim::Skeleton& skeleton,
+                        const synth::CoverageThresholds& thresholds);
 
   // Advances the scene's clock by dt: what this frame's stages do. Call once per frame.
   SceneStep advance(float dt);

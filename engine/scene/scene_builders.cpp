@@ -1,0 +1,147 @@
+#include "scene/scene_builders.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "crowd/circle_paths.h"
+#include "crowd/trajectories.h"
+#include "storyboard/codec.h"
+#include "storyboard/legend.h"
+#include "storyboard/storyboard_placement.h"
+
+namespace throng::scene {
+namespace sb = throng::storyboard;
+
+namespace {
+
+// Path vectors scaled to the speeds the agent's clip pair can produce (root motion moves a
+// character at least as fast as the slow clip): the agent keeps its source's path shape, turns
+// and pauses aside. A pair that does not travel (talk) stands: its path is never active.
+void fitPathsToClips(crowd::AgentPaths& paths, std::span<const crowd::PathSource> sources,
+                     std::span<const uint32_t> assigned, std::span<const uint32_t> pairOf,
+                     std::span<const sb::RootSpeeds> speeds) {
+  for (size_t i = 0; i < paths.size(); ++i) {
+    const sb::RootSpeeds r = speeds[pairOf[i]];
+    if (!(r.fast > 0.0f)) {
+      paths.lastSecond[i] = 0;
+      paths.maxSpeed[i] = 0.0f;
+      continue;
+    }
+    const float mean = sources[assigned[i]].meanSpeed();
+    const float scale = mean > 0.05f ? std::clamp(mean, r.slow, r.fast) / mean : 1.0f;
+    paths.rotation[i] *= scale;
+    paths.maxSpeed[i] = 1.25f * r.fast;
+  }
+}
+
+// One motion pair per action (walk, run, talk, jump), or the user's pair for all of them.
+std::vector<anim::MotionPair> storyboardPairs(const StoryboardSceneDescription& d,
+                                              std::vector<sb::RootSpeeds>& speeds) {
+  std::vector<anim::ClipPair> clips;
+  if (d.clips)
+    clips.push_back(*d.clips);
+  else
+    clips = anim::defaultClipSets();
+  std::vector<anim::MotionPair> motion;
+  for (const anim::ClipPair& c : clips) {
+    motion.push_back(anim::makeMotionPair(c.slow, c.fast));
+    speeds.push_back(
+        {crowd::clipRootSpeed(motion.back().slow), crowd::clipRootSpeed(motion.back().fast)});
+  }
+  return motion;
+}
+
+sb::Placement placeAgents(const StoryboardSceneDescription& d, const sb::Storyboard& board,
+                          std::span<const sb::RootSpeeds> speeds) {
+  sb::PlacementOptions options;
+  options.cellSize = d.cell;
+  options.jitter = d.jitter;
+  options.seed = d.seed;
+  if (d.clips) {
+    options.slowSpeed = speeds[0].slow;
+    options.fastSpeed = speeds[0].fast;
+  } else {
+    options.actionSpeeds.emplace();
+    std::copy_n(speeds.begin(), sb::kActionCount, options.actionSpeeds->begin());
+  }
+  return sb::placeStoryboard(board, options);
+}
+
+}  // namespace
+
+SceneSetup plainScene(crowd::Crowd crowd, anim::MotionPair pair,
+                      const synth::SpeedSchedule& speeds) {
+  SceneSetup setup;
+  setup.groupFirst = {0, uint32_t(crowd.size())};
+  setup.crowd = std::move(crowd);
+  setup.pairs.push_back(std::move(pair));
+  setup.speeds = speeds;
+  return setup;
+}
+
+SceneSetup circleScene(crowd::Crowd crowd, anim::MotionPair pair,
+                       const crowd::AvoidanceParams& avoidance) {
+  SceneSetup setup;
+  setup.crowd = std::move(crowd);
+  setup.crowd.steering = anim::Steering::KeepHeading;  // the avoidance pass sets the heading
+  setup.steering.emplace();
+  setup.steering->paths = crowd::circlePaths(setup.crowd, crowd::clipRootSpeed(pair.slow),
+                                             crowd::clipRootSpeed(pair.fast));
+  setup.steering->avoidance = avoidance;
+  const uint32_t n = uint32_t(setup.crowd.size());
+  setup.tints.resize(n);
+  std::iota(setup.tints.begin(), setup.tints.end(), 0u);  // a hue per runner
+  setup.pairs.push_back(std::move(pair));
+  setup.groupFirst = {0, n};
+  return setup;
+}
+
+sb::Storyboard readSceneStoryboard(const StoryboardSceneDescription& d) {
+  const sb::Legend legend = d.legend.empty() ? sb::Legend{} : sb::loadLegend(d.legend);
+  sb::Storyboard board = sb::readStoryboard(d.storyboard, legend, false);
+  if (board.glyphs.empty()) fail(d.storyboard, ": no valid glyph, so no agent to animate");
+  return board;
+}
+
+SceneSetup storyboardScene(const StoryboardSceneDescription& d) {
+  const sb::Storyboard board = readSceneStoryboard(d);
+  crowd::TrajectoryOptions trajectoryOptions;
+  trajectoryOptions.secondsPerStep = d.stepTime;
+  const crowd::Trajectories tracks = crowd::loadTrajectories(d.trajectories, trajectoryOptions);
+  const std::vector<crowd::PathSource> sources = crowd::resamplePathVectors(tracks);
+  std::vector<sb::RootSpeeds> speeds;
+  std::vector<anim::MotionPair> motion = storyboardPairs(d, speeds);
+  const sb::Placement placed = placeAgents(d, board, speeds);
+  const size_t n = placed.crowd.size();
+  const std::vector<uint32_t> assigned =
+      crowd::assignSources(sources, placed.speedRange, d.seed, d.trajectories);
+  SceneSetup setup;
+  setup.steering.emplace();
+  crowd::AgentPaths& paths = setup.steering->paths;
+  paths = crowd::followSources(placed.crowd, sources, assigned, std::vector<float>(n, 1.0f));
+  std::vector<uint32_t> pairOf(n, 0);
+  if (!d.clips) pairOf = placed.crowd.clipSet;
+  fitPathsToClips(paths, sources, assigned, pairOf, speeds);
+  setup.steering->avoidance = d.avoidance;
+  setup.crowd = placed.crowd;
+  setup.tints = placed.tint;
+  setup.labels = placed.tint;  // the storyboard's groups
+  setup.groupFirst.push_back(0);
+  for (size_t k = 0; k < motion.size(); ++k) {
+    const uint32_t end = d.clips ? uint32_t(n) : placed.setBegin[k + 1];
+    if (end == setup.groupFirst.back()) continue;  // no agent does this action
+    setup.pairs.push_back(std::move(motion[k]));
+    setup.groupFirst.push_back(end);
+  }
+  logInfo(concat("storyboard ", d.storyboard, ": ", n, " agents (walk ", placed.setBegin[1],
+                 ", run ", placed.setBegin[2] - placed.setBegin[1], ", talk ",
+                 placed.setBegin[3] - placed.setBegin[2], ", jump ",
+                 placed.setBegin[4] - placed.setBegin[3], "; ", board.invalid.size(),
+                 " invalid glyphs skipped) following ", sources.size(), " tracked people of ",
+                 d.trajectories, ", avoidance ", crowd::steerPolicyName(d.avoidance.policy)));
+  return setup;
+}
+
+}  // namespace throng::scene

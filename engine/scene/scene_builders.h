@@ -1,0 +1,41 @@
+#pragma once
+// The kinds of scene the engine builds (each as a SceneSetup for scene::Scene):
+//  * plain: a crowd walking with its own heading and speed (speed changes every period);
+//  * circle: runners following waypoints on their lane circles, with avoidance;
+//  * storyboard: a storyboard's glyphs placed as agents (ordered by clip set), each following
+//    the path vectors of a tracked person from real video, with avoidance, animated by the clip
+//    pair of its action (walk, run, idle/talk, hop) and tinted by its group.
+// A new kind of scene is a new builder here; what it needs from files is read here too.
+#include <optional>
+#include <string>
+
+#include "anim/default_clips.h"
+#include "scene/scene.h"
+#include "storyboard/codec.h"
+
+namespace throng::scene {
+
+SceneSetup plainScene(crowd::Crowd crowd, anim::MotionPair pair,
+                      const synth::SpeedSchedule& speeds);
+
+// The circle's runners (crowd from crowd::makeScenario's "circle") on their lanes.
+SceneSetup circleScene(crowd::Crowd crowd, anim::MotionPair pair,
+                       const crowd::AvoidanceParams& avoidance);
+
+struct StoryboardSceneDescription {
+  std::string storyboard, trajectories, legend;  // files (legend optional)
+  float cell = 0.5f;                             // metres per storyboard pixel
+  float jitter = 0.1f;                           // ± metres
+  float stepTime = 0.0f;                         // seconds per annotation step; 0: by dataset
+  uint64_t seed = 1;
+  crowd::AvoidanceParams avoidance;
+  std::optional<anim::ClipPair> clips;  // one pair for every action (absent: one per action)
+};
+
+// The storyboard file read with its legend; throws Error naming the file when it holds no
+// valid glyph.
+storyboard::Storyboard readSceneStoryboard(const StoryboardSceneDescription& description);
+// Reads the storyboard and the trajectories and builds the agents, their paths and groups.
+SceneSetup storyboardScene(const StoryboardSceneDescription& description);
+
+}  // namespace throng::scene
