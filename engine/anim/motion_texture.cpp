@@ -52,4 +52,10 @@ MotionPair makeMotionPair(const Clip& slow, const Clip& fast) {
   return pair;
 }
 
+float clipRootSpeed(const MotionTexture& clip) {
+  float duration = clip.duration();
+  return duration > 0.0f ? glm::length(glm::vec2(clip.cycleTravel.x, clip.cycleTravel.z)) / duration
+                         : 0.0f;
+}
+
 }  // namespace throng::anim

@@ -43,4 +43,8 @@ struct MotionPair {
 // Throws Error when the clips do not share a skeleton topology.
 MotionPair makeMotionPair(const Clip& slow, const Clip& fast);
 
+// A clip's root speed: its cycle's ground travel over the cycle's duration (m/s; 0 for a clip
+// that does not travel). Speed → w maps between the two clips' root speeds.
+float clipRootSpeed(const MotionTexture& clip);
+
 }  // namespace throng::anim

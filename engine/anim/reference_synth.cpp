@@ -86,24 +86,6 @@ ClipSample clipSample(float phase, int frames) {
   return s;
 }
 
-float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo, float hi) {
-  uint32_t h = character * 747796405u + epoch * 2891336453u + seed * 1181783497u + 12345u;
-  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
-  h = (h >> 22u) ^ h;
-  return lo + (hi - lo) * float(h >> 8) * (1.0f / 16777216.0f);
-}
-
-void applyRetarget(uint32_t character, const SpeedRetarget& r, glm::vec4& motion) {
-  if (r.epoch == 0) return;
-  float target = retargetSpeed(character, r.epoch, r.seed, r.lo, r.hi);
-  motion.z = r.bucketWidth > 0.0f ? quantizeSpeed(target, r.bucketWidth) : target;
-}
-
-float circleHeading(glm::vec2 p) {
-  // Counter-clockwise tangent (-z, x) seen from above; heading θ faces (sin θ, cos θ).
-  return std::atan2(-p.y, p.x);
-}
-
 void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
                    Steering steering) {
   stepCharacter(pair, placement, motion, dt, steering, SpeedRetarget{}, 0);

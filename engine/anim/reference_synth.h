@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 
 #include "anim/motion_texture.h"
+#include "anim/root_motion.h"
 
 namespace throng::anim {
 
@@ -17,12 +18,10 @@ struct CharacterRef {
   glm::vec4& motion;
 };
 
-enum class Steering : uint32_t { KeepHeading = 0, Circle = 1 };
 
 // Eq. 10: advances the phase by dt, moves the root by the blended displacement between the two
 // phases (each clip's root interpolated between its rows, so the step is continuous in the
 // phase) rotated by the heading and scaled, and switches w to wTarget only when a cycle ends.
-struct SpeedRetarget;
 void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
                    Steering steering);
 // The same with a speed change: the new target is set before a cycle end in this step applies it.
@@ -58,20 +57,6 @@ struct PoseJoint {
 };
 void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out);
 
-// Speed changes over time: at an epoch > 0 every character draws a new target speed weight in
-// [lo, hi] (deterministic hash of character, epoch and seed), quantized to the motion cache's
-// buckets when bucketWidth > 0; it takes effect at the end of the character's cycle.
-struct SpeedRetarget {
-  uint32_t epoch = 0;  // 0: no change this step
-  uint32_t seed = 0;
-  float lo = 0.0f, hi = 1.0f;
-  float bucketWidth = 0.0f;
-};
-float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo, float hi);
-void applyRetarget(uint32_t character, const SpeedRetarget& retarget, glm::vec4& motion);
-
-// Heading that keeps a character on a circle around the origin (counter-clockwise).
-float circleHeading(glm::vec2 position);
 
 // World position of a point given in a joint draw matrix's unit space.
 glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p);

@@ -38,7 +38,7 @@ AgentPaths circlePaths(const Crowd& crowd, float slowSpeed, float fastSpeed) {
     const float radius = glm::length(p);
     if (!(radius > 0.5f))
       fail("circle paths: runner ", i, " stands ", radius, " m from the centre (expected > 0.5 m)");
-    const float w = std::clamp(crowd.motion[i].y, 0.0f, 1.0f);
+    const float w = std::clamp(gpu_types::speedWeight(crowd.motion[i]), 0.0f, 1.0f);
     const float speed = slowSpeed + w * (fastSpeed - slowSpeed);
     const uint32_t lap =
         uint32_t(std::clamp(std::lround(2.0 * double(kPi) * radius / speed), 3L, 100000L));
@@ -91,7 +91,7 @@ SteeredCrowdCpu::SteeredCrowdCpu(const anim::MotionPair& pair, Crowd crowd, cons
     fail("steered crowd: ", n, " agents but ", paths_->size(), " paths");
   goals_.assign(n, glm::vec4(0.0f));
   steer_.assign(n, glm::vec4(0.0f));
-  frame_.sets = {{clipRootSpeed(pair.slow), clipRootSpeed(pair.fast), uint32_t(n)}};
+  frame_.sets = {{anim::clipRootSpeed(pair.slow), anim::clipRootSpeed(pair.fast), uint32_t(n)}};
 }
 
 void SteeredCrowdCpu::step(float dt, const anim::SpeedRetarget& retarget) {

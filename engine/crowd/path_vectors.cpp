@@ -131,12 +131,6 @@ std::vector<uint32_t> assignSources(std::span<const PathSource> sources,
   return chosen;
 }
 
-float clipRootSpeed(const anim::MotionTexture& clip) {
-  float duration = clip.duration();
-  return duration > 0.0f ? glm::length(glm::vec2(clip.cycleTravel.x, clip.cycleTravel.z)) / duration
-                         : 0.0f;
-}
-
 float speedWeight(float speed, float slowSpeed, float fastSpeed) {
   if (!(fastSpeed > slowSpeed)) return 0.0f;
   return std::clamp((speed - slowSpeed) / (fastSpeed - slowSpeed), 0.0f, 1.0f);

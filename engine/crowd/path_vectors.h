@@ -45,9 +45,8 @@ std::vector<uint32_t> assignSources(std::span<const PathSource> sources,
                                     std::span<const SpeedRange> agentRanges, uint64_t seed,
                                     std::string_view origin = "the trajectories");
 
-// The root speed of a clip (cycle travel / cycle duration) and the speed weight w that makes
-// the blended cycle move at `speed`: slow speed → 0, fast speed → 1, clamped to [0, 1].
-float clipRootSpeed(const anim::MotionTexture& clip);
+// The speed weight w that makes the blended cycle move at `speed` (the clips' root speeds:
+// anim::clipRootSpeed): slow speed → 0, fast speed → 1, clamped to [0, 1].
 float speedWeight(float speed, float slowSpeed, float fastSpeed);
 
 // Every agent's path, as cumulative sums so a waypoint costs O(1).

@@ -28,7 +28,7 @@ std::vector<crowd::ClipSpeeds> clipSpeeds(
     const std::vector<uint32_t>& groupFirst) {
   std::vector<crowd::ClipSpeeds> speeds;
   for (size_t k = 0; k < pairs.size(); ++k)
-    speeds.push_back({crowd::clipRootSpeed(pairs[k]->slow), crowd::clipRootSpeed(pairs[k]->fast),
+    speeds.push_back({anim::clipRootSpeed(pairs[k]->slow), anim::clipRootSpeed(pairs[k]->fast),
                       groupFirst[k + 1]});
   return speeds;
 }

@@ -48,7 +48,7 @@ std::vector<anim::MotionPair> storyboardPairs(const StoryboardSceneDescription& 
   for (const anim::ClipPair& c : clips) {
     motion.push_back(anim::makeMotionPair(c.slow, c.fast));
     speeds.push_back(
-        {crowd::clipRootSpeed(motion.back().slow), crowd::clipRootSpeed(motion.back().fast)});
+        {anim::clipRootSpeed(motion.back().slow), anim::clipRootSpeed(motion.back().fast)});
   }
   return motion;
 }
@@ -87,8 +87,8 @@ SceneSetup circleScene(crowd::Crowd crowd, anim::MotionPair pair,
   setup.crowd = std::move(crowd);
   setup.crowd.steering = anim::Steering::KeepHeading;  // the avoidance pass sets the heading
   setup.steering.emplace();
-  setup.steering->paths = crowd::circlePaths(setup.crowd, crowd::clipRootSpeed(pair.slow),
-                                             crowd::clipRootSpeed(pair.fast));
+  setup.steering->paths = crowd::circlePaths(setup.crowd, anim::clipRootSpeed(pair.slow),
+                                             anim::clipRootSpeed(pair.fast));
   setup.steering->avoidance = avoidance;
   const uint32_t n = uint32_t(setup.crowd.size());
   setup.tints.resize(n);

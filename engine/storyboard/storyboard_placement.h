@@ -31,7 +31,7 @@ struct PlacementOptions {
   uint64_t seed = 1;
   // Speed ranges per State (m/s): strolling people in the ETH/UCY sets walk 0.4–1.2 m/s.
   std::array<crowd::SpeedRange, kStateCount> speeds = {{{0.4f, 1.2f}, {1.2f, 2.2f}}};
-  float slowSpeed = 0.0f;  // root speeds of the clip pair (crowd::clipRootSpeed); w = 0 when equal
+  float slowSpeed = 0.0f;  // root speeds of the clip pair (anim::clipRootSpeed); w = 0 when equal
   float fastSpeed = 0.0f;
   // Per action, when its clip pair differs (walk, run, talk, jump): root speeds of that pair.
   // A pair that does not travel (slow = fast = 0, e.g. talk) gets a random w: how animated.

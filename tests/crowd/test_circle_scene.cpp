@@ -30,7 +30,7 @@ TEST_CASE("circle scene: lane waypoints keep the radius and avoidance keeps runn
   const anim::ClipPair clips = anim::defaultRunPair();
   const anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
   const crowd::AgentPaths paths =
-      crowd::circlePaths(crowd, crowd::clipRootSpeed(pair.slow), crowd::clipRootSpeed(pair.fast));
+      crowd::circlePaths(crowd, anim::clipRootSpeed(pair.slow), anim::clipRootSpeed(pair.fast));
   CHECK(paths.cumulative.size() < crowd.size());  // runners of one lane and speed share a lap
   const float dt = 1.0f / 30.0f;
   crowd::AvoidanceParams params;

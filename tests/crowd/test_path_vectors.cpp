@@ -111,7 +111,7 @@ TEST_CASE("path vectors: sources are assigned by speed range, deterministic per 
 TEST_CASE("path vectors: speed weight from the clip pair's root speeds") {
   anim::ClipPair clips = anim::defaultRunPair();
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  float slow = crowd::clipRootSpeed(pair.slow), fast = crowd::clipRootSpeed(pair.fast);
+  float slow = anim::clipRootSpeed(pair.slow), fast = anim::clipRootSpeed(pair.fast);
   CHECK(slow == doctest::Approx(2.5f).epsilon(0.05));
   CHECK(fast == doctest::Approx(4.5f).epsilon(0.05));
   CHECK(crowd::speedWeight(slow, slow, fast) == 0.0f);

@@ -36,7 +36,7 @@ crowd::Trajectories runAndRecord(crowd::TrajectoryWriter& writer, int frames) {
   const anim::ClipPair clips = anim::defaultRunPair();
   const anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
   const crowd::AgentPaths paths =
-      crowd::circlePaths(start, crowd::clipRootSpeed(pair.slow), crowd::clipRootSpeed(pair.fast));
+      crowd::circlePaths(start, anim::clipRootSpeed(pair.slow), anim::clipRootSpeed(pair.fast));
   crowd::SteeredCrowdCpu sim(pair, start, &paths, crowd::AvoidanceParams{});
   crowd::Trajectories memory;
   memory.source = "memory";
