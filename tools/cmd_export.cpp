@@ -95,7 +95,7 @@ void runExport(ExportOptions& o, const CLI::App& command) {
   const bool steered = steersCircle(o.scene);
   if (steered) {
     paths =
-        crowd::circlePaths(crowd, crowd::clipRootSpeed(pair.slow), crowd::clipRootSpeed(pair.fast));
+        crowd::circlePaths(crowd, anim::clipRootSpeed(pair.slow), anim::clipRootSpeed(pair.fast));
     crowd.steering = anim::Steering::KeepHeading;
     avoidance.policy = scenePolicy(o.scene.story.policy);
     avoidance.radius = o.scene.story.radius;
