@@ -25,6 +25,7 @@
 // unrolled gather, where a storage-buffer load is a loop over the lanes with a branch per lane
 // and component. Stores stay storage-buffer writes, as few and as wide as possible.
 #include "crowd_types.h"
+#include "shared_types.h"  // the motion vector's accessors
 #include "crowd_bindings.h"
 #include "avoidance_common.glsl"
 #include "words64.glsl"
@@ -324,5 +325,5 @@ void main() {
   // The clip pair of the agent's range maps its speed to the speed weight.
   float slow = i < gPush.setEnd.x ? gPush.setSlow.x : i < gPush.setEnd.y ? gPush.setSlow.y : i < gPush.setEnd.z ? gPush.setSlow.z : gPush.setSlow.w;
   float fast = i < gPush.setEnd.x ? gPush.setFast.x : i < gPush.setEnd.y ? gPush.setFast.y : i < gPush.setEnd.z ? gPush.setFast.z : gPush.setFast.w;
-  if (fast > slow) motion[i].z = clamp((speed - slow) / (fast - slow), 0.0, 1.0);
+  if (fast > slow) motion[i] = withTargetSpeedWeight(motion[i], clamp((speed - slow) / (fast - slow), 0.0, 1.0));
 }

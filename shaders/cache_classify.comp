@@ -25,10 +25,10 @@ void main() {
   if (local >= push.characterCount) return;
   uint i = push.firstCharacter + local;
   vec4 m = motion[i];
-  int slot = bucketSlot[speedBucket(m.y, push.bucketWidth, uint(bucketSlot.length()))];
+  int slot = bucketSlot[speedBucket(speedWeight(m), push.bucketWidth, uint(bucketSlot.length()))];
   if (slot >= 0) {
     // The nearest row; phase · R rounding up to R is row 0 again. Mirrors synth::cacheRow.
-    uint row = uint(m.x * float(push.rowCount) + 0.5);
+    uint row = uint(cyclePhase(m) * float(push.rowCount) + 0.5);
     if (row >= push.rowCount) row = 0u;
     poseSource[i] = push.dataBase + (uint(slot) * push.rowCount + row) * push.jointCount;
     return;

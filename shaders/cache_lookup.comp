@@ -14,5 +14,5 @@ layout(push_constant) uniform Push { CachePush push; };
 void main() {
   if (gl_GlobalInvocationID.x >= push.characterCount) return;
   uint i = push.firstCharacter + gl_GlobalInvocationID.x;
-  requested[speedBucket(motion[i].y, push.bucketWidth, counters.bucketCount)] = 1u;
+  requested[speedBucket(speedWeight(motion[i]), push.bucketWidth, counters.bucketCount)] = 1u;
 }

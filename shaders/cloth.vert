@@ -41,7 +41,7 @@ void main() {
   if (clothShowsBlend(c, level))
     p = mix(p, fetchVertex(c.blendSource, k, level), float(c.countdown) / float(push.blendFrames + 1u));
   vec4 place = placement[character];
-  worldPosition = place.xyz + clothRotateY(place.w, motion[character].w * p);
+  worldPosition = place.xyz + clothRotateY(place.w, characterScale(motion[character]) * p);
   gl_Position = view.viewProjection * vec4(worldPosition, 1.0);
   tint = (push.flags & kClothDrawTint) != 0u ? clothLevelTint(level) : clothTint(character);
 }

@@ -14,11 +14,11 @@ layout(push_constant) uniform Push { ClothAdvancePush push; };
 uint table(uint which, uint index) { return graph[graph[which] + index]; }
 
 uint characterNode(vec4 m) {
-  uint bucket = speedBucket(m.y, push.bucketWidth, push.bucketCount);
+  uint bucket = speedBucket(speedWeight(m), push.bucketWidth, push.bucketCount);
   uint first = table(kTableRunFirst, bucket);
   uint frames = table(kTableRunFirst, bucket + 1u) - first;
   if (frames == 0u) return kClothNone;
-  uint frame = min(uint(max(m.x, 0.0) * float(frames)), frames - 1u);
+  uint frame = min(uint(max(cyclePhase(m), 0.0) * float(frames)), frames - 1u);
   return table(kTableRunNodes, first + frame);
 }
 

@@ -1,5 +1,6 @@
 // Cloth playback helpers shared by the cloth passes; mirrors engine/secondary/cloth_playback.cpp.
 #include "cloth_types.h"
+#include "shared_types.h"  // the motion vector's accessors
 #include "speed_buckets.glsl"
 
 // The graph tables live in one uint buffer; its first words are the offsets of each table

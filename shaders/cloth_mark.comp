@@ -46,7 +46,7 @@ void main() {
   if (i >= push.characterCount) return;
   ClothCharacter c = characters[i];
   if (c.state == kClothNone) return;
-  uint level = clothLevel(placement[i], motion[i].w);
+  uint level = clothLevel(placement[i], characterScale(motion[i]));
   if (level == kClothNone) return;
   markState(clothShownState(c, level), level);
   if (clothShowsBlend(c, level)) markState(c.blendSource, level);

@@ -140,7 +140,7 @@ void main() {
   uint word = 3u * slots[clothShownState(c, kClothSplatLevel)].x / 2u;  // any decode holds the splat level
   vec4 place = vec4(uintBitsToFloat(unpackUint2x32(placementWords[2u * character])),
                     uintBitsToFloat(unpackUint2x32(placementWords[2u * character + 1u])));
-  float scale = motion[character].w;
+  float scale = characterScale(motion[character]);
   // The level's vertices as floats: 3 per vertex, rounded up to whole words (the slot holds them).
   float v[2u * kMaxWords];
   [[unroll]] for (uint w = 0u; w < kMaxWords; ++w) {

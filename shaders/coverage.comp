@@ -26,7 +26,7 @@ void main() {
   uint i = push.firstCharacter + local;
   vec4 place = placement[i];
   vec4 m = motion[i];
-  float scale = m.w;
+  float scale = characterScale(m);
   CoverageMask previous = masks[i];
   bool readJoints = (push.flags & kCoverageReadJoints) != 0u;
   float c = cos(place.w);

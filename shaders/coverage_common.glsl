@@ -69,10 +69,10 @@ uvec2 nextLevel(CoverageParts parts, CoverageMask previous, vec4 motion, float h
   uint state = previous.state;
   bool initialized = (state & kStateInitialized) != 0u;
   float previousPhase = float(state >> kStatePhaseShift) / 65535.0;
-  float advance = motion.x - previousPhase;
+  float advance = cyclePhase(motion) - previousPhase;
   bool wrapped = advance < 0.0;
   if (wrapped) advance = advance + 1.0;
-  float cycleSeconds = parts.body.z * (1.0 - motion.y) + parts.body.w * motion.y;
+  float cycleSeconds = parts.body.z * (1.0 - speedWeight(motion)) + parts.body.w * speedWeight(motion);
   uint timer = min(((state >> kStateTimerShift) & kStateTimerMax) + uint(advance * cycleSeconds * kStateTimerUnits),
                    kStateTimerMax);
   uint level = initialized ? min(previous.level, kLevelCount - 1u) : kLevelFar;
@@ -84,7 +84,7 @@ uvec2 nextLevel(CoverageParts parts, CoverageMask previous, vec4 motion, float h
     level = target;
     timer = 0u;
   }
-  uint phaseBits = min(uint(motion.x * 65535.0), 65535u);
+  uint phaseBits = min(uint(cyclePhase(motion) * 65535.0), 65535u);
   return uvec2(level, kStateInitialized | (timer << kStateTimerShift) | (phaseBits << kStatePhaseShift));
 }
 

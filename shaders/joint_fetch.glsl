@@ -17,7 +17,7 @@ JointMatrix fetchJoint(uint chunkJoint, uint character, uint joint, uint flags) 
   if ((flags & kDrawCachedPoses) != 0u) {
     uint source = poseSource[character];
     if (source != kPoseInJoints)
-      return placeCachedJoint(cacheData[source + joint], placement[character], motion[character].w);
+      return placeCachedJoint(cacheData[source + joint], placement[character], characterScale(motion[character]));
   }
   return joints[chunkJoint];
 }

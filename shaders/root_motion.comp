@@ -42,9 +42,9 @@ void main() {
   uint i = push.firstCharacter + gl_GlobalInvocationID.x;
   vec4 place = placement[i];
   vec4 m = motion[i];
-  float w = m.y;
+  float w = speedWeight(m);
   float duration = push.slowDuration * (1.0 - w) + push.fastDuration * w;
-  float phase0 = m.x;
+  float phase0 = cyclePhase(m);
   float phase1 = phase0 + push.dt / duration;
   vec3 dSlow = rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, phase1 * float(push.slowFrames)) -
                rootAt(false, push.slowFrames, push.slowCycleTravel.xyz, phase0 * float(push.slowFrames));
@@ -53,16 +53,16 @@ void main() {
   vec3 d = dSlow * (1.0 - w) + dFast * w;
   if (push.steering == 1u) place.w = atan(-place.z, place.x);
   float c = cos(place.w), s = sin(place.w);
-  float scale = m.w;
+  float scale = characterScale(m);
   place.x += scale * (d.x * c + d.z * s);
   place.z += scale * (-d.x * s + d.z * c);
   if (push.retargetEpoch > 0u) {
     float target = retargetSpeed(i, push.retargetEpoch, push.seed, push.minSpeedWeight, push.maxSpeedWeight);
-    m.z = push.bucketWidth > 0.0 ? quantizeSpeed(target, push.bucketWidth) : target;
+    m = withTargetSpeedWeight(m, push.bucketWidth > 0.0 ? quantizeSpeed(target, push.bucketWidth) : target);
   }
   float wraps = floor(phase1);
-  m.x = phase1 - wraps;
-  if (wraps > 0.0) m.y = m.z;
+  m = withCyclePhase(m, phase1 - wraps);
+  if (wraps > 0.0) m = withSpeedWeight(m, targetSpeedWeight(m));
   placement[i] = place;
   motion[i] = m;
 }

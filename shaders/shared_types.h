@@ -12,13 +12,38 @@ using vec4 = glm::vec4;
 using uint = uint32_t;
 using mat4 = glm::mat4;
 #define THRONG_STRUCT(name) struct name
+#define THRONG_INLINE inline
 #else
 #define THRONG_STRUCT(name) struct name
+#define THRONG_INLINE
 #endif
 
 // Per-character state lives in two vec4 arrays (structure of arrays):
 //   placement[i] = (x, y, z, heading)   heading in radians about +y, 0 faces +z
 //   motion[i]    = (phase, w, wTarget, scale)
+// The motion vector's components are read and written through the functions below, in GLSL and
+// C++ alike, never as .x/.y/.z/.w. Functions rather than #defined component names, because a
+// macro such as `speedWeight` would rewrite every identifier of that name in both languages;
+// the setters return the changed vector since GLSL has no references (m = withSpeedWeight(m, w)).
+THRONG_INLINE float cyclePhase(vec4 m) { return m.x; }         // in [0, 1): where in the clip cycle
+THRONG_INLINE float speedWeight(vec4 m) { return m.y; }        // w: 0 the slow clip, 1 the fast
+THRONG_INLINE float targetSpeedWeight(vec4 m) { return m.z; }  // wTarget: w at the next cycle end
+THRONG_INLINE float characterScale(vec4 m) { return m.w; }     // body size, 1: the clips' own
+THRONG_INLINE vec4 makeMotion(float phase, float w, float wTarget, float scale) {
+  return vec4(phase, w, wTarget, scale);
+}
+THRONG_INLINE vec4 withCyclePhase(vec4 m, float phase) {
+  m.x = phase;
+  return m;
+}
+THRONG_INLINE vec4 withSpeedWeight(vec4 m, float w) {
+  m.y = w;
+  return m;
+}
+THRONG_INLINE vec4 withTargetSpeedWeight(vec4 m, float wTarget) {
+  m.z = wTarget;
+  return m;
+}
 
 // One joint's draw matrix A = M·O·F as three rows of a 3x4 affine matrix (row r = (R[r], t[r])).
 THRONG_STRUCT(JointMatrix) {
@@ -144,6 +169,8 @@ THRONG_STRUCT(SplatPush) {
   uint boneLo;            // as DrawPush
   uint boneHi;
 };
+
+#undef THRONG_INLINE
 
 #ifdef __cplusplus
 }  // namespace throng::gpu_types

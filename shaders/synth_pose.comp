@@ -49,7 +49,7 @@ void main() {
   uint i = push.firstCharacter + local;
   vec4 place = fromWords(placement[i]);
   vec4 m = fromWords(motion[i]);
-  float phase = m.x, w = m.y, scale = m.w;
+  float phase = cyclePhase(m), w = speedWeight(m), scale = characterScale(m);
   uint base = local * uint(kJointCount);
   uvec2 activeJoints = kUseMasks ? unpackUint2x32(masks[i].x) : uvec2(0xFFFFFFFFu);
   composePose(base, clipSample(phase, push.slowFrames), clipSample(phase, push.fastFrames), w, yawQuat(place.w),

@@ -27,7 +27,7 @@ void main() {
   uint source = poseSource[i];
   if (source == kPoseInJoints) return;
   vec4 place = placement[i];
-  float scale = motion[i].w;
+  float scale = characterScale(motion[i]);
   uint base = local * uint(kJointCount);
   uvec2 activeJoints = (push.flags & kPoseUseMasks) != 0u ? masks[i].xy : uvec2(0xFFFFFFFFu);
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "crowd/avoidance_types.h"
+#include "shaders/shared_types.h"
 
 namespace throng::crowd {
 
@@ -304,7 +305,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     steer[i] = glm::vec4(v, speed, state);
     const ClipSpeeds& set = speedSet(speeds, uint32_t(i));
     if (set.fast > set.slow)
-      motion[i].z = std::clamp((speed - set.slow) / (set.fast - set.slow), 0.0f, 1.0f);
+      motion[i] = gpu_types::withTargetSpeedWeight(
+          motion[i], std::clamp((speed - set.slow) / (set.fast - set.slow), 0.0f, 1.0f));
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/math.h"
+#include "shaders/shared_types.h"
 
 namespace throng::crowd {
 namespace {

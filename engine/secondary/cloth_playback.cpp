@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "shaders/shared_types.h"
 #include "synth/motion_cache.h"
 
 namespace throng::secondary {
@@ -43,11 +44,12 @@ PlaybackTables makePlaybackTables(const ClothDatabase& db) {
 
 uint32_t characterNode(const ClothDatabase& db, const PlaybackTables& t, glm::vec4 motion) {
   const RunGraphParams& run = db.primary.run;
-  const uint32_t bucket = synth::speedBucket(motion.y, run.bucketWidth, t.bucketCount);
+  const uint32_t bucket =
+      synth::speedBucket(gpu_types::speedWeight(motion), run.bucketWidth, t.bucketCount);
   const uint32_t frames = run.framesPerBucket[bucket];
   if (frames == 0) return kNoNode;
   // Same arithmetic as shaders/cloth_common.glsl (float product, truncation, clamp).
-  float phase = std::max(motion.x, 0.0f);
+  float phase = std::max(gpu_types::cyclePhase(motion), 0.0f);
   uint32_t frame = std::min(uint32_t(phase * float(frames)), frames - 1u);
   return t.runNodes[t.runFirst[bucket] + frame];
 }

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "shaders/shared_types.h"
 
 namespace throng::secondary {
 
@@ -56,7 +57,7 @@ void splatCapesCpu(const SplatInputs& in, std::span<const uint32_t> splatted,
     const uint32_t decodedAt = in.stateLevel[state];
     decodeStateSubset(*in.decoded, state, lod.order, lod.levelBases[decodedAt], local);
     const glm::vec4 place = in.placement[character];
-    const float scale = in.motion[character].w;
+    const float scale = gpu_types::characterScale(in.motion[character]);
     const glm::vec2 heading = scale * glm::vec2(std::cos(place.w), std::sin(place.w));
     for (uint32_t k = 0; k < n; ++k) {
       const glm::vec3 p = local[k];

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "shaders/shared_types.h"
 
 namespace throng::secondary {
 
@@ -70,7 +71,7 @@ ClothMarks markCharacters(const gpu_types::ClothView& view, const PlaybackTables
   for (uint32_t i = 0; i < characters.size(); ++i) {
     const ClothCharacter& c = characters[i];
     if (c.state == kNoClothState) continue;
-    const uint32_t level = clothLevel(view, placement[i], motion[i].w);
+    const uint32_t level = clothLevel(view, placement[i], gpu_types::characterScale(motion[i]));
     if (level == gpu_types::kClothNone) continue;
     mark(shownState(tables, c, level), level);
     if (showsBlend(c, level)) mark(c.blendSource, level);

@@ -138,10 +138,11 @@ std::pair<uint32_t, uint32_t> nextLevel(const CoverageParts& parts, const Covera
   const uint32_t state = previous.state;
   const bool initialized = (state & kStateInitialized) != 0u;
   const float previousPhase = float(state >> kStatePhaseShift) / 65535.0f;
-  float advance = motion.x - previousPhase;
+  float advance = gpu_types::cyclePhase(motion) - previousPhase;
   const bool wrapped = advance < 0.0f;
   if (wrapped) advance = advance + 1.0f;
-  const float cycleSeconds = parts.body.z * (1.0f - motion.y) + parts.body.w * motion.y;
+  const float cycleSeconds = parts.body.z * (1.0f - gpu_types::speedWeight(motion)) +
+                             parts.body.w * gpu_types::speedWeight(motion);
   uint32_t timer = std::min(((state >> kStateTimerShift) & kStateTimerMax) +
                                 uint32_t(advance * cycleSeconds * kStateTimerUnits),
                             kStateTimerMax);
@@ -155,7 +156,7 @@ std::pair<uint32_t, uint32_t> nextLevel(const CoverageParts& parts, const Covera
     level = target;
     timer = 0u;
   }
-  const uint32_t phaseBits = std::min(uint32_t(motion.x * 65535.0f), 65535u);
+  const uint32_t phaseBits = std::min(uint32_t(gpu_types::cyclePhase(motion) * 65535.0f), 65535u);
   return {level, kStateInitialized | (timer << kStateTimerShift) | (phaseBits << kStatePhaseShift)};
 }
 
@@ -167,7 +168,7 @@ CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& pa
   const uint64_t previousMask = maskBits(previous);
   const bool readJoints = (push.flags & kCoverageReadJoints) != 0u && joints != nullptr;
   const float c = std::cos(placement.w), s = std::sin(placement.w);
-  const float scale = motion.w;
+  const float scale = gpu_types::characterScale(motion);
   uint32_t onScreen = 0;
   for (uint32_t k = 0; k < kCoveragePartCount; ++k) {
     const CoveragePart& part = parts.parts[k];

@@ -26,7 +26,7 @@ void MotionCacheCpu::update(const crowd::Crowd& crowd) {
   // the same frame). Mirrors cache_insert.comp.
   std::vector<uint8_t> requested(bucketCount_, 0);
   for (const glm::vec4& m : crowd.motion)
-    requested[speedBucket(m.y, options_.bucketWidth, bucketCount_)] = 1;
+    requested[speedBucket(gpu_types::speedWeight(m), options_.bucketWidth, bucketCount_)] = 1;
   for (uint32_t b = 0; b < bucketCount_; ++b)
     if (requested[b] && bucketSlot_[b] >= 0) {
       ++stats_.hits;
@@ -70,11 +70,14 @@ void MotionCacheCpu::update(const crowd::Crowd& crowd) {
 bool MotionCacheCpu::pose(const glm::vec4& placement, const glm::vec4& motion,
                           std::span<JointMatrix> out) const {
   if (capacity_ == 0) return false;
-  int32_t slot = bucketSlot_[speedBucket(motion.y, options_.bucketWidth, bucketCount_)];
+  int32_t slot =
+      bucketSlot_[speedBucket(gpu_types::speedWeight(motion), options_.bucketWidth, bucketCount_)];
   if (slot < 0) return false;
   const size_t joints = static_cast<size_t>(pair_->jointCount());
-  const JointMatrix* cached = &entries_[slot][size_t(cacheRow(motion.x, rows_)) * joints];
-  float c = std::cos(placement.w), s = std::sin(placement.w), scale = motion.w;
+  const JointMatrix* cached =
+      &entries_[slot][size_t(cacheRow(gpu_types::cyclePhase(motion), rows_)) * joints];
+  float c = std::cos(placement.w), s = std::sin(placement.w),
+        scale = gpu_types::characterScale(motion);
   for (size_t j = 0; j < joints; ++j) {
     const JointMatrix& p = cached[j];
     out[j].row0 = scale * (c * p.row0 + s * p.row2) + glm::vec4(0.0f, 0.0f, 0.0f, placement.x);
