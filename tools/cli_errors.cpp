@@ -1,6 +1,7 @@
 #include "cli_errors.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -59,6 +60,13 @@ std::string suggestionFor(const CLI::App& command, const std::string& word) {
   return best.empty() ? "" : didYouMean(name, best);
 }
 
+// Numbers as people write them: 0.05, 4000000, 1e+09 (no trailing zeros).
+std::string numberText(double x) {
+  std::ostringstream out;
+  out << std::setprecision(10) << x;
+  return out.str();
+}
+
 }  // namespace
 
 CLI::Validator oneOf(const std::string& what, std::vector<std::string> names) {
@@ -73,13 +81,8 @@ CLI::Validator oneOf(const std::string& what, std::vector<std::string> names) {
 }
 
 CLI::Validator inRange(double lo, double hi, const std::string& unit) {
-  // Numbers as people write them: 0.05, 4000000, 1e+09 (no trailing zeros).
-  auto text = [](double x) {
-    std::ostringstream out;
-    out << std::setprecision(10) << x;
-    return out.str();
-  };
-  const std::string range = text(lo) + ".." + text(hi) + (unit.empty() ? "" : " " + unit);
+  const std::string range =
+      numberText(lo) + ".." + numberText(hi) + (unit.empty() ? "" : " " + unit);
   auto check = [lo, hi, range](std::string& value) -> std::string {
     double x = 0.0;
     // NaN fails both comparisons: "nan" is reported like any other value out of range.
@@ -88,6 +91,25 @@ CLI::Validator inRange(double lo, double hi, const std::string& unit) {
     return {};
   };
   return CLI::Validator(check, "[" + range + "]", "range");
+}
+
+CLI::Validator inInterval(End loEnd, double lo, double hi, End hiEnd, const std::string& unit) {
+  const bool loOpen = loEnd == End::kOpen, hiOpen = hiEnd == End::kOpen;
+  const bool bounded = !std::isinf(hi);
+  const std::string interval =
+      bounded ? (loOpen ? "(" : "[") + numberText(lo) + ", " + numberText(hi) + (hiOpen ? ")" : "]")
+              : (loOpen ? "> " : ">= ") + numberText(lo);
+  // "metres > 0", "seconds in (0, 1]": the unit first, so the message reads as words.
+  const std::string range = unit.empty() ? interval : unit + (bounded ? " in " : " ") + interval;
+  auto check = [=](std::string& value) -> std::string {
+    double x = 0.0;
+    // NaN fails every comparison, so it is reported like any other value outside.
+    if (!CLI::detail::lexical_cast(value, x) || !(loOpen ? x > lo : x >= lo) ||
+        !(hiOpen ? x < hi : x <= hi))
+      return "expected " + range + ", got " + value;
+    return {};
+  };
+  return CLI::Validator(check, interval + (unit.empty() ? "" : " " + unit), "interval");
 }
 
 std::string closestName(const std::string& word, const std::vector<std::string>& candidates) {

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_errors.h"
 #include "command.h"
 #include "core/binary_io.h"
 #include "core/error.h"
@@ -108,15 +109,7 @@ json reportJson(const sec::ClothDatabase& db, const CompressArgs& a, double seco
 }
 
 void runCompress(const CompressArgs& a) {
-  if (!(a.quantum > 0.0f && a.quantum < 1.0f))
-    fail("--quantum ", a.quantum, ": expected metres in (0, 1)");
-  if (a.bases == 0 && !(a.targetError > 0.0f))
-    fail("--target-error ", a.targetError, ": expected metres > 0");
-  if (!(a.coefficientQuantum >= 0.0f && a.coefficientQuantum < 1.0f))
-    fail("--coefficient-quantum ", a.coefficientQuantum, ": expected metres in [0, 1)");
   if (!(a.minRatio >= 0.0)) fail("--min-ratio ", a.minRatio, ": expected ≥ 0 (0: no size cap)");
-  if (a.bucketWidth && !(*a.bucketWidth > 0.0f && *a.bucketWidth <= 1.0f))
-    fail("--bucket-width ", *a.bucketWidth, ": expected (0, 1]");
   const std::filesystem::path outPath = a.out;
   // Refuse an output that cannot be written (a directory, an unwritable folder) before the long
   // part, and clear what a killed earlier run left behind.
@@ -222,7 +215,8 @@ void addClothCompressCommand(CLI::App& app) {
   cmd->add_option("--target-error", a->targetError,
                   "Largest vertex error (m): picks the basis count, and the reweighting and the "
                   "coefficient refinement aim at it")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inInterval(End::kOpen, 0, kNoEnd, End::kOpen, "metres"));
   cmd->add_option("--reweight-passes", a->reweightPasses,
                   "SVD passes reweighted towards the worst states when the bases miss the target")
       ->capture_default_str()
@@ -236,10 +230,12 @@ void addClothCompressCommand(CLI::App& app) {
   cmd->add_option(
          "--quantum", a->quantum,
          "Length quantum (m): a basis takes 8 bits when its range × m_i / 255 fits it, else 16")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inInterval(End::kOpen, 0, 1, End::kOpen, "metres"));
   cmd->add_option("--coefficient-quantum", a->coefficientQuantum,
                   "Largest vertex move (m) of one coefficient step (0: full 16-bit coefficients)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inInterval(End::kClosed, 0, 1, End::kOpen, "metres"));
   cmd->add_option("--min-ratio", a->minRatio,
                   "Keep raw/stored bytes at least this: fewer bases when needed (0: no cap)")
       ->capture_default_str();
@@ -249,7 +245,8 @@ void addClothCompressCommand(CLI::App& app) {
   cmd->add_option("--threads", a->threads, "Threads (0: all cores)");
   cmd->add_option("--bucket-width", a->bucketWidth,
                   "Speed-bucket width of the run graph (default: the garment's, else from the "
-                  "graph's bucket count)");
+                  "graph's bucket count)")
+      ->check(inInterval(End::kOpen, 0, 1, End::kClosed));
   cmd->add_flag("--json", a->json, "Print the report as JSON");
   cmd->add_flag("--quiet", a->quiet, "No progress bar or lines");
   cmd->add_flag("--strict", a->strict,

@@ -47,12 +47,15 @@ struct RunOptions {
 
   void add(CLI::App* cmd, const char* policyHelp) {
     cmd->add_option("--policy", policies, policyHelp)->check(kPolicyNames);
-    cmd->add_option("--dt", dt, "Simulation step in seconds, 1/n of a second (default 0.05)");
+    cmd->add_option("--dt", dt, "Simulation step in seconds, 1/n of a second (default 0.05)")
+        ->check(inInterval(End::kOpen, 0, 1, End::kClosed, "seconds"));
     cmd->add_option("--radius", radius,
                     "Safe radius of each agent in metres, kept by avoidance; overlaps of it are "
-                    "reported as intrusions (default 0.3)");
+                    "reported as intrusions (default 0.3)")
+        ->check(inInterval(End::kOpen, 0, 10, End::kClosed, "metres"));
     cmd->add_option("--body-radius", bodyRadius,
-                    "Body radius in metres; overlaps of it are the collisions (default 0.2)");
+                    "Body radius in metres; overlaps of it are the collisions (default 0.2)")
+        ->check(inInterval(End::kOpen, 0, 10, End::kClosed, "metres"));
     cmd->add_option(
         "--step-time", stepTime,
         "Seconds per annotation step of the trajectories (default: 0.667 for biwi_eth, else 0.4)");
@@ -76,15 +79,7 @@ struct RunOptions {
     return out;
   }
 
-  void checkRadii() const {
-    if (!(radius > 0.0f && radius <= 10.0f))
-      fail("--radius ", radius, ": expected 0 < metres <= 10");
-    if (!(bodyRadius > 0.0f && bodyRadius <= 10.0f))
-      fail("--body-radius ", bodyRadius, ": expected 0 < metres <= 10");
-  }
-
   crowd::SimulationOptions simulation(crowd::SteerPolicy policy) const {
-    checkRadii();
     if (!(seconds >= 1.0f && seconds <= 100000.0f))
       fail("--seconds ", seconds, ": expected 1..100000");
     crowd::SimulationOptions o;
@@ -186,8 +181,8 @@ void runSimulate(const SimulateArgs& a) {
   placeOptions.cellSize = a.cell;
   placeOptions.jitter = a.jitter;
   placeOptions.seed = a.run.seed;
-  placeOptions.slowSpeed = crowd::clipRootSpeed(pair.slow);
-  placeOptions.fastSpeed = crowd::clipRootSpeed(pair.fast);
+  placeOptions.slowSpeed = anim::clipRootSpeed(pair.slow);
+  placeOptions.fastSpeed = anim::clipRootSpeed(pair.fast);
   const sb::Placement placed = sb::placeStoryboard(board, placeOptions);
 
   crowd::SimulationSetup setup;
@@ -276,7 +271,6 @@ void runMetrics(MetricsArgs a) {
     crowd::SimulationSetup setup = crowd::replaySetup(sources, file);
     uint32_t span = 0;
     for (uint32_t last : setup.paths.lastSecond) span = std::max(span, last);
-    a.run.checkRadii();
     const crowd::CrowdMetrics real =
         crowd::trajectoryMetrics(tracks, a.run.radius, a.run.bodyRadius);
     nlohmann::json entry;

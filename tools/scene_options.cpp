@@ -100,7 +100,9 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       ->check(inRange(1, 170, "degrees"));
   command.add_option("--size", o.size, "Image size WxH")->capture_default_str();
   command.add_option("--device", o.device, "Vulkan device by index or name (also $THRONG_DEVICE)");
-  command.add_option("--dt", o.dt, "Simulated seconds per frame")->capture_default_str();
+  command.add_option("--dt", o.dt, "Simulated seconds per frame")
+      ->capture_default_str()
+      ->check(inInterval(End::kOpen, 0, 1, End::kClosed, "seconds"));
   command
       .add_flag("--cache,!--no-cache", o.cache,
                 "Motion cache: characters share synthesized clips per speed bucket")
@@ -111,7 +113,8 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
   command
       .add_option("--bucket-width", o.bucketWidth,
                   "Motion cache speed-weight bucket width, 1/4095..1 (at most 4096 buckets)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(inInterval(End::kOpen, 0, 1, End::kClosed));
   command
       .add_option("--speed-period", o.speedPeriod,
                   "Seconds between speed changes (0: never; paper: 5)")

@@ -92,6 +92,28 @@ TEST_CASE("cli: bad choices and numbers out of range are usage errors that say w
       {"render --radius 0", "error: --radius: expected 0.01..10 metres, got 0"},
       {"cloth compress /etc/passwd --out y.tsc --max-bases 0",
        "error: --max-bases: Value 0 not in range 1 to 4096"},
+      // Ranges with an open end: the end itself is refused.
+      {"render --dt 0", "error: --dt: expected seconds in (0, 1], got 0"},
+      {"view --dt 1.5", "error: --dt: expected seconds in (0, 1], got 1.5"},
+      {"render --bucket-width -0.5", "error: --bucket-width: expected (0, 1], got -0.5"},
+      {"crowd simulate --storyboard a.png --trajectories t.txt --dt 0",
+       "error: --dt: expected seconds in (0, 1], got 0"},
+      {"crowd simulate --storyboard a.png --trajectories t.txt --radius 0",
+       "error: --radius: expected metres in (0, 10], got 0"},
+      {"crowd metrics --trajectories t.txt --body-radius 10.5",
+       "error: --body-radius: expected metres in (0, 10], got 10.5"},
+      {"cloth compress /etc/passwd --out y.tsc --quantum 1",
+       "error: --quantum: expected metres in (0, 1), got 1"},
+      {"cloth compress /etc/passwd --out y.tsc --coefficient-quantum -0.001",
+       "error: --coefficient-quantum: expected metres in [0, 1), got -0.001"},
+      {"cloth compress /etc/passwd --out y.tsc --bucket-width 0",
+       "error: --bucket-width: expected (0, 1], got 0"},
+      {"cloth compress /etc/passwd --out y.tsc --target-error 0",
+       "error: --target-error: expected metres > 0, got 0"},
+      {"cloth compress /etc/passwd --out y.tsc --target-error nan",
+       "error: --target-error: expected metres > 0, got nan"},
+      {"cloth explore --out x.tsg --target-error -1",
+       "error: --target-error: expected 0..1000 metres, got -1"},
   };
   for (const Case& c : cases) {
     auto r = runThrong(c.arguments);
@@ -101,8 +123,12 @@ TEST_CASE("cli: bad choices and numbers out of range are usage errors that say w
     CHECK(contains(r.output, c.message));
   }
   // In range and among the choices: no usage error (help stops before any work).
-  for (const char* arguments : {"render --scene circle --camera top --fov 170 -n 1 --help",
-                                "view --speed-max 1 --cache-budget 0 --help"}) {
+  for (const char* arguments :
+       {"render --scene circle --camera top --fov 170 -n 1 --help",
+        "view --speed-max 1 --cache-budget 0 --help", "render --dt 1 --bucket-width 1 --help",
+        "crowd metrics --trajectories t.txt --dt 0.001 --radius 10 --body-radius 1e-6 --help",
+        "cloth compress /etc/passwd --out y.tsc --quantum 0.999 --coefficient-quantum 0 "
+        "--bucket-width 1 --target-error 1e9 --help"}) {
     auto r = runThrong(arguments);
     CAPTURE(arguments);
     CAPTURE(r.output);
