@@ -205,22 +205,22 @@ nlohmann::json clothJson(const ClothBenchResult& r, double targetMs) {
   return {{"variant", r.variant},
           {"characters", r.characters},
           {"frames", r.frames},
-          {"frameMsMedian", r.frameMs},
-          {"frameMsMin", r.frameMsMin},
-          {"frameMsMax", r.frameMsMax},
-          {"targetMs", targetMs},
-          {"targetMet", r.frameMs < targetMs},
-          {"synthesisMsMedian", r.synthesisMs},
-          {"renderMsMedian", r.renderMs},
-          {"clothMsMedian",
+          {"frame_ms_median", r.frameMs},
+          {"frame_ms_min", r.frameMsMin},
+          {"frame_ms_max", r.frameMsMax},
+          {"target_ms", targetMs},
+          {"target_met", r.frameMs < targetMs},
+          {"synthesis_ms_median", r.synthesisMs},
+          {"render_ms_median", r.renderMs},
+          {"cloth_ms_median",
            {{"total", r.clothMs},
             {"advance", r.advanceMs},
             {"mark", r.markMs},
             {"decode", r.decodeMs},
             {"splat", r.splatMs},
             {"draw", r.drawMs}}},
-          {"capesPerLevel", {s.capes[0], s.capes[1], s.capes[2], s.capes[3]}},
-          {"statesDecoded", s.usedStates},
+          {"capes_per_level", {s.capes[0], s.capes[1], s.capes[2], s.capes[3]}},
+          {"states_decoded", s.usedStates},
           {"demoted", s.demoted}};
 }
 
@@ -309,16 +309,18 @@ void runBench(BenchOptions& o) {
   }
 
   nlohmann::json doc;
+  doc["schema"] = "throng.bench";
+  doc["version"] = 1;
   doc["device"] = context.info().name;
   doc["driver"] = context.info().driver;
-  doc["jointsPerCharacter"] = pair.jointCount();
-  doc["cpuThreads"] = threads;
-  doc["framesMeasured"] = o.frames;
+  doc["joints_per_character"] = pair.jointCount();
+  doc["cpu_threads"] = threads;
+  doc["frames_measured"] = o.frames;
   for (const Row& r : rows) {
     doc["results"].push_back({{"variant", r.variant},
                               {"characters", r.characters},
-                              {"synthesisMsMedian", r.synthesisMs},
-                              {"renderMsMedian", r.renderMs},
+                              {"synthesis_ms_median", r.synthesisMs},
+                              {"render_ms_median", r.renderMs},
                               {"frames", r.frames}});
   }
   if (cloth)

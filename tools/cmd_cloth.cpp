@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_errors.h"
 #include "command.h"
 #include "core/binary_io.h"
 #include "core/error.h"
@@ -288,7 +289,10 @@ void runExplore(const ExploreArgs& a) {
   r["mode"] = a.mpi ? "mpi" : "threads";
   r["workers"] = runner->workers();
   r["bytes"] = std::filesystem::file_size(out);
+  sec::writeFloatsShort(r);
   if (a.json) {
+    r["schema"] = "throng.cloth_explore";
+    r["version"] = 1;
     std::cout << r.dump(2) << '\n';
     return;
   }
@@ -346,7 +350,10 @@ void runInfo(const InfoArgs& a) {
     const json blend = blendMotionJson(a.file);
     for (auto it = blend.begin(); it != blend.end(); ++it) info["blend_" + it.key()] = *it;
   }
+  sec::writeFloatsShort(info);
   if (a.json) {
+    info["schema"] = "throng.cloth_info";
+    info["version"] = 1;
     std::cout << info.dump(2) << '\n';
     return;
   }
@@ -384,7 +391,7 @@ void addClothExploreCommands(CLI::App& app) {
   explore
       ->add_option("--target-error", a->targetError,
                    "Stop once the largest merge error is at most this (metres)")
-      ->check(CLI::Range(0.0, 1e3));
+      ->check(inRange(0, 1000, "metres"));
   explore->add_option("--threads", a->threads,
                       "Simulation threads (0: all cores; ignored with --mpi)");
   explore->add_option("--slow", a->slow,

@@ -370,42 +370,42 @@ void ViewSession::report() {
     j["width"] = extent.width;
     j["height"] = extent.height;
     j["device"] = context_.info().name;
-    j["presentMode"] = render::presentModeName(presenter_.swapchain().presentMode());
+    j["present_mode"] = render::presentModeName(presenter_.swapchain().presentMode());
     j["clock"] = fixedClock_ ? "fixed" : "real";
     j["characters"] = characterCount(*scene_);
-    j["jointsPerCharacter"] = frameSynth(*scene_).jointCount();
+    j["joints_per_character"] = frameSynth(*scene_).jointCount();
     LodStats lod = lodStats();
-    j["activeJoints"] = lod.activeJoints;
+    j["active_joints"] = lod.activeJoints;
     j["lod"] = {{"enabled", frameSynth(*scene_).lod},
-                {"activeJoints", lod.activeJoints},
+                {"active_joints", lod.activeJoints},
                 {"levels", lod.levels},
-                {"midPixels", scene_->options.lodMidPixels},
-                {"nearPixels", scene_->options.lodNearPixels},
+                {"mid_pixels", scene_->options.lodMidPixels},
+                {"near_pixels", scene_->options.lodNearPixels},
                 {"tint", panel_.lodTint && frameSynth(*scene_).lod}};
     if (frameSynth(*scene_).cached()) {
       synth::MotionCacheStats c = synth::readCacheStats(frameSynth(*scene_));
-      j["cache"] = {{"hits", c.hits},           {"misses", c.misses},
-                    {"evictions", c.evictions}, {"entries", c.entries},
-                    {"bytesUsed", c.bytesUsed}, {"budgetBytes", c.budgetBytes}};
+      j["cache"] = {
+          {"hits", c.hits},       {"misses", c.misses},        {"evictions", c.evictions},
+          {"entries", c.entries}, {"bytes_used", c.bytesUsed}, {"budget_bytes", c.budgetBytes}};
     } else {
       j["cache"] = "off";
     }
     j["camera"] = {{"eye", {camera_.eye.x, camera_.eye.y, camera_.eye.z}},
                    {"target", {camera_.target.x, camera_.target.y, camera_.target.z}},
-                   {"fovY", camera_.fovYDegrees}};
+                   {"fov_y", camera_.fovYDegrees}};
     j["fps"] = stats_.fps();
-    j["averageFps"] = stats_.averageFps();
-    j["gpuMs"] = {
+    j["average_fps"] = stats_.averageFps();
+    j["gpu_ms"] = {
         {"synthesis", median.synthesisMs}, {"render", median.renderMs}, {"panel", median.panelMs}};
     j["panel"] = {{"visible", panelVisible_},
                   {"x", panelRect_.x},
                   {"y", panelRect_.y},
                   {"width", panelRect_.width},
                   {"height", panelRect_.height}};
-    j["swapchainRebuilds"] = presenter_.rebuildCount();
-    j["simulatedSeconds"] = scene_->simulatedSeconds;
+    j["swapchain_rebuilds"] = presenter_.rebuildCount();
+    j["simulated_seconds"] = scene_->simulatedSeconds;
     j["paused"] = panel_.paused;
-    j["speedChanges"] = speedChanges_;
+    j["speed_changes"] = speedChanges_;
     j["respawns"] = respawns_;
     if (scene_->cloth) {
       // What the panel shows (panelInfo): the newest completed frame's counters and times.
@@ -414,14 +414,14 @@ void ViewSession::report() {
       const CapeCounts n = capeCounts(c.capes, info.clothSplat);
       j["cloth"] = {
           {"file", info.clothFile},
-          {"gpuMs", stats_.clothMedianMs()},
+          {"gpu_ms", stats_.clothMedianMs()},
           {"frame", c.frame},
-          {"usedStates", c.capes.usedStates},
+          {"used_states", c.capes.usedStates},
           {"demoted", c.capes.demoted},
           {"levels", {c.capes.capes[0], c.capes.capes[1], c.capes.capes[2], c.capes.capes[3]}},
           {"capes", {{"triangles", n.triangles}, {"coarse", n.coarse}, {"splatted", n.splatted}}},
           {"splat", info.clothSplat},
-          {"lastFrameMs",
+          {"last_frame_ms",
            {{"total", c.gpu.totalMs()},
             {"advance", c.gpu.advanceMs},
             {"mark", c.gpu.markMs},
@@ -429,7 +429,7 @@ void ViewSession::report() {
             {"splat", c.gpu.splatMs},
             {"draw", c.gpu.drawMs}}}};
     }
-    j["validationMessages"] = messages;
+    j["validation_messages"] = messages;
     j["screenshot"] = screenshotWritten_;
     std::printf("%s\n", j.dump().c_str());
   }

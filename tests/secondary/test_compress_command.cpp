@@ -1,8 +1,10 @@
 // `throng cloth compress` end to end on a small explored cape, and its error paths.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +30,28 @@ std::filesystem::path exploredCape(const std::filesystem::path& dir) {
 nlohmann::json reportOf(const std::string& output) {
   return nlohmann::json::parse(output.substr(output.find('{')));
 }
+// The first key anywhere in `j` that is not snake_case ("" when every key is).
+std::string firstNonSnakeKey(const nlohmann::json& j) {
+  auto snake = [](const std::string& key) {
+    return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
+  };
+  if (!j.is_structured()) return {};
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (j.is_object() && !snake(it.key())) return it.key();
+    if (std::string inner = firstNonSnakeKey(*it); !inner.empty()) return inner;
+  }
+  return {};
+}
+// The number printed after `"key": ` in pretty-printed JSON text.
+std::string numberTextOf(const std::string& text, const std::string& key) {
+  const std::string field = "\"" + key + "\": ";
+  const size_t at = text.find(field);
+  if (at == std::string::npos) return {};
+  const size_t begin = at + field.size();
+  return text.substr(begin, text.find_first_of(",\n}", begin) - begin);
+}
 }  // namespace
 
 TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the result") {
@@ -51,7 +75,13 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
   INFO(info.output);
   REQUIRE(info.exitCode == 0);
   nlohmann::json j = nlohmann::json::parse(info.output);
+  CHECK(j["schema"] == "throng.cloth_info");
+  CHECK(j["version"] == 1);
+  CHECK(firstNonSnakeKey(j) == "");
   CHECK(j["format"] == "tsc");
+  // Metres stored as floats read as typed: 0.0003, not 0.000300000014249235.
+  CHECK(numberTextOf(info.output, "coefficient_quantum_m") == "0.0003");
+  CHECK(numberTextOf(r.output, "coefficient_quantum_m") == "0.0003");
   CHECK(j["bases"] == report["bases"]);
   // Capes played along the decoded database: how far a merge frame moves them.
   test::CommandResult blend =
@@ -75,6 +105,21 @@ TEST_CASE("cloth compress: .tsg → .tsc, the report, and cloth info on the resu
   REQUIRE(r.exitCode == 0);
   CHECK(reportOf(r.output)["bases"].get<int>() > report["bases"].get<int>());
   CHECK(report["coefficient_quantum_m"].get<double>() == doctest::Approx(0.0003));
+}
+
+TEST_CASE("cloth reports: numbers that are floats are written as the float's shortest decimal") {
+  nlohmann::json j = {{"float", 0.05f},
+                      {"double", 0.1},
+                      {"third", 1.0 / 3.0},
+                      {"count", 7},
+                      {"nested", {{"list", {0.3f, 2.5f, 1e-7f}}}}};
+  secondary::writeFloatsShort(j);
+  CHECK(j["float"].dump() == "0.05");
+  CHECK(j["nested"]["list"].dump() == "[0.3,2.5,1e-07]");
+  // Doubles no float equals keep every digit; integers stay integers.
+  CHECK(j["double"].get<double>() == 0.1);
+  CHECK(j["third"].get<double>() == 1.0 / 3.0);
+  CHECK(j["count"].is_number_integer());
 }
 
 TEST_CASE("cloth compress: a missed --target-error warns, and with --strict fails unwritten") {

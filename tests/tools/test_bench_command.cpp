@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -14,26 +15,51 @@
 
 using namespace throng;
 
+namespace {
+// The first key anywhere in `j` that is not snake_case ("" when every key is).
+std::string firstNonSnakeKey(const nlohmann::json& j) {
+  auto snake = [](const std::string& key) {
+    return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
+  };
+  if (!j.is_structured()) return {};
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (j.is_object() && !snake(it.key())) return it.key();
+    if (std::string inner = firstNonSnakeKey(*it); !inner.empty()) return inner;
+  }
+  return {};
+}
+}  // namespace
+
 TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
   auto dir = test::freshDirectory("bench_quick");
-  test::CommandResult run = test::runThrong("bench --quick --json " + (dir / "bench.json").string() +
-                                            " --experiments " + (dir / "experiments").string());
+  test::CommandResult run =
+      test::runThrong("bench --quick --json " + (dir / "bench.json").string() + " --experiments " +
+                      (dir / "experiments").string());
   INFO(run.output);
   REQUIRE(run.exitCode == 0);
   auto doc = nlohmann::json::parse(readTextFile(dir / "bench.json"));
+  CHECK(doc["schema"] == "throng.bench");
+  CHECK(doc["version"] == 1);
+  CHECK(firstNonSnakeKey(doc) == "");
+  CHECK(doc["cpu_threads"].get<int>() >= 1);
+  CHECK(doc["frames_measured"] == 5);
   std::set<std::string> variants;
   for (const auto& row : doc["results"]) {
     variants.insert(row["variant"].get<std::string>());
-    CHECK(row["synthesisMsMedian"].get<double>() > 0.0);
+    CHECK(row["synthesis_ms_median"].get<double>() > 0.0);
     CHECK(row["characters"].get<int>() == 1000);
   }
-  for (const char* v : {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache", "cpu-1-thread"})
+  for (const char* v :
+       {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache", "cpu-1-thread"})
     CHECK(variants.count(v) == 1);
-  CHECK(doc["jointsPerCharacter"].get<int>() == 25);
+  CHECK(doc["joints_per_character"].get<int>() == 25);
   CHECK(run.output.find("cloth row skipped: no --cloth") != std::string::npos);
   CHECK(doc["cloth"]["skipped"].get<std::string>().find("--cloth") != std::string::npos);
   CHECK(std::filesystem::exists(dir / "experiments" / "cache_vs_n.csv"));
-  CHECK(readTextFile(dir / "experiments" / "time_vs_n.csv").rfind("characters,cpu_ms,gpu_full_ms,gpu_lod_ms", 0) == 0);
+  CHECK(readTextFile(dir / "experiments" / "time_vs_n.csv")
+            .rfind("characters,cpu_ms,gpu_full_ms,gpu_lod_ms", 0) == 0);
   std::string csv = readTextFile(dir / "experiments" / "hit_rate_vs_bucket.csv");
   CHECK(csv.rfind("bucket_width,hit_rate", 0) == 0);
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 7);  // header + 6 widths
@@ -43,7 +69,8 @@ TEST_CASE("bench --quick --cloth: a caped frame with its cloth passes and target
   auto dir = test::freshDirectory("bench_cloth");
   test::CommandResult r = test::runThrong(
       "cloth explore --garment-config '{\"cape\": {\"columns\": 8, \"rows\": 12}}' "
-      "--budget-expansions 2 --quiet --out " + (dir / "cape.tsg").string());
+      "--budget-expansions 2 --quiet --out " +
+      (dir / "cape.tsg").string());
   REQUIRE(r.exitCode == 0);
   r = test::runThrong("cloth compress " + (dir / "cape.tsg").string() + " --out " +
                       (dir / "cape.tsc").string() + " --quiet");
@@ -57,28 +84,30 @@ TEST_CASE("bench --quick --cloth: a caped frame with its cloth passes and target
   auto doc = nlohmann::json::parse(readTextFile(dir / "bench.json"));
   const auto& cloth = doc["cloth"];
   REQUIRE(cloth.is_object());
+  CHECK(firstNonSnakeKey(doc) == "");
   CHECK(cloth["variant"] == "gpu-lod+cache+cloth-320x180");
   CHECK(cloth["characters"] == 1000);
-  CHECK(cloth["targetMs"] == 50.0);
-  CHECK(cloth["targetMet"] == (cloth["frameMsMedian"].get<double>() < 50.0));
+  CHECK(cloth["target_ms"] == 50.0);
+  CHECK(cloth["target_met"] == (cloth["frame_ms_median"].get<double>() < 50.0));
   // The frame holds the synthesis and the render, and the render holds the cloth passes.
-  CHECK(cloth["frameMsMedian"].get<double>() > 0.0);
-  CHECK(cloth["frameMsMin"].get<double>() <= cloth["frameMsMedian"].get<double>());
-  CHECK(cloth["frameMsMedian"].get<double>() <= cloth["frameMsMax"].get<double>());
-  const auto& ms = cloth["clothMsMedian"];
+  CHECK(cloth["frame_ms_median"].get<double>() > 0.0);
+  CHECK(cloth["frame_ms_min"].get<double>() <= cloth["frame_ms_median"].get<double>());
+  CHECK(cloth["frame_ms_median"].get<double>() <= cloth["frame_ms_max"].get<double>());
+  const auto& ms = cloth["cloth_ms_median"];
   CHECK(ms["total"].get<double>() > 0.0);
   CHECK(ms["decode"].get<double>() > 0.0);
-  CHECK(ms["total"].get<double>() < cloth["renderMsMedian"].get<double>());
+  CHECK(ms["total"].get<double>() < cloth["render_ms_median"].get<double>());
   long capes = 0;
-  for (const auto& n : cloth["capesPerLevel"]) capes += n.get<long>();
+  for (const auto& n : cloth["capes_per_level"]) capes += n.get<long>();
   CHECK(capes > 0);
   CHECK(capes <= 1000);
-  CHECK(cloth["statesDecoded"].get<long>() > 0);
+  CHECK(cloth["states_decoded"].get<long>() > 0);
   bool row = false;
   for (const auto& r2 : doc["results"]) row = row || r2["variant"] == "gpu-lod+cache+cloth-320x180";
   CHECK(row);
 
-  test::CommandResult bad = test::runThrong("bench --quick --cloth " + (dir / "missing.tsc").string());
+  test::CommandResult bad =
+      test::runThrong("bench --quick --cloth " + (dir / "missing.tsc").string());
   CHECK(bad.exitCode != 0);
   CHECK(bad.output.find("missing.tsc") != std::string::npos);
 }

@@ -32,7 +32,8 @@ fs::path smallCape() {
 // Checks what every cloth report must satisfy and returns it.
 const nlohmann::json& checkClothReport(const nlohmann::json& stats, long characters) {
   REQUIRE(stats.is_object());
-  CHECK(stats["validationMessages"] == 0);
+  CHECK(stats["validation_messages"] == 0);
+  CHECK(test::firstNonSnakeKey(stats) == "");
   const nlohmann::json& cloth = stats["cloth"];
   REQUIRE(cloth.is_object());
   CHECK(cloth["frame"].get<long>() > 0);
@@ -45,14 +46,14 @@ const nlohmann::json& checkClothReport(const nlohmann::json& stats, long charact
   CHECK(capes["triangles"] == cloth["levels"][0].get<long>() + cloth["levels"][1].get<long>());
   if (cloth["splat"] == true) CHECK(capes["splatted"] == cloth["levels"][3]);
   // Every visible cape shows a decoded state; characters share them.
-  CHECK(cloth["usedStates"].get<long>() >= (levels > 0 ? 1 : 0));
-  CHECK(cloth["usedStates"].get<long>() <= 2 * levels);
-  const nlohmann::json& ms = cloth["lastFrameMs"];
+  CHECK(cloth["used_states"].get<long>() >= (levels > 0 ? 1 : 0));
+  CHECK(cloth["used_states"].get<long>() <= 2 * levels);
+  const nlohmann::json& ms = cloth["last_frame_ms"];
   CHECK(ms["total"].get<double>() > 0.0);
   CHECK(ms["decode"].get<double>() > 0.0);
   CHECK(ms["total"].get<double>() >= ms["decode"].get<double>() + ms["draw"].get<double>() +
                                          ms["splat"].get<double>() - 1e-9);
-  CHECK(cloth["gpuMs"].get<double>() > 0.0);
+  CHECK(cloth["gpu_ms"].get<double>() > 0.0);
   return cloth;
 }
 
@@ -77,8 +78,8 @@ TEST_CASE("view --cloth: the panel's cape statistics follow the camera") {
   INFO(close.result.output);
   REQUIRE(close.result.exitCode == 0);
   const nlohmann::json& c = checkClothReport(close.stats, 400);
-  MESSAGE("wide: levels ", w["levels"].dump(), ", ", w["usedStates"], " states; close: levels ",
-          c["levels"].dump(), ", ", c["usedStates"], " states");
+  MESSAGE("wide: levels ", w["levels"].dump(), ", ", w["used_states"], " states; close: levels ",
+          c["levels"].dump(), ", ", c["used_states"], " states");
   // Close up, fewer capes are in view and the nearest are drawn at full detail.
   long closeCapes = 0;
   for (const auto& l : c["levels"]) closeCapes += l.get<long>();

@@ -24,6 +24,7 @@ namespace {
 constexpr const char* kScene = "-n 200 --size 800x450 --seed 7 --camera wide";
 constexpr int kFrames = 30;
 
+using test::firstNonSnakeKey;
 using test::runView;
 using test::ViewRun;
 using test::writeText;
@@ -75,17 +76,18 @@ TEST_CASE("view: the last frame without the panel is the headless render of the 
   REQUIRE(run.result.exitCode == 0);
   CHECK(run.result.output.find("vulkan validation") == std::string::npos);
   REQUIRE(run.stats.is_object());
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   CHECK(run.stats["frames"] == kFrames);
   CHECK(run.stats["width"] == 800);
   CHECK(run.stats["height"] == 450);
   CHECK(run.stats["clock"] == "fixed");
   CHECK(run.stats["characters"] == 200);
-  CHECK(run.stats["gpuMs"]["render"].get<double>() > 0.0);
+  CHECK(run.stats["gpu_ms"]["render"].get<double>() > 0.0);
   // The method's defaults: the coverage LOD and the motion cache, as in `throng render`.
   CHECK(run.stats["lod"]["enabled"] == true);
   CHECK(run.stats["schema"] == "throng.view_stats");
   CHECK(run.stats["version"] == 1);
+  CHECK(firstNonSnakeKey(run.stats) == "");
   CHECK(run.stats["cache"].is_object());
 
   ImageRgba8 actual = readPng(out / "view.png");
@@ -108,7 +110,7 @@ TEST_CASE(
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   const nlohmann::json& panel = run.stats["panel"];
   REQUIRE(panel["visible"] == true);
   int x0 = int(std::floor(panel["x"].get<double>())) - 2,
@@ -160,7 +162,7 @@ TEST_CASE("view: a scripted drag orbits the camera about its target") {
   yawChange = std::remainder(yawChange, 360.0f);
   CHECK(yawChange == doctest::Approx(-100.0f * render::kOrbitDegreesPerPixel).epsilon(1e-3));
   // Without the coverage LOD every joint stays active whatever the camera.
-  CHECK(run.stats["activeJoints"] == 200 * run.stats["jointsPerCharacter"].get<int>());
+  CHECK(run.stats["active_joints"] == 200 * run.stats["joints_per_character"].get<int>());
   CHECK(run.stats["lod"]["enabled"] == false);
   CHECK(run.stats["lod"]["levels"] == nlohmann::json::array({0, 0, 200}));
 }
@@ -192,7 +194,7 @@ TEST_CASE("view: Space pauses and N steps one frame") {
   REQUIRE(run.stats.is_object());
   CHECK(run.stats["frames"] == 10);
   CHECK(run.stats["paused"] == true);
-  CHECK(run.stats["simulatedSeconds"].get<double>() == doctest::Approx(1.0 / 30.0).epsilon(1e-4));
+  CHECK(run.stats["simulated_seconds"].get<double>() == doctest::Approx(1.0 / 30.0).epsilon(1e-4));
 }
 
 TEST_CASE(
@@ -205,11 +207,11 @@ TEST_CASE(
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   CHECK(run.stats["respawns"] == 1);
   CHECK(run.stats["characters"] == 300);
-  CHECK(run.stats["activeJoints"] == 300 * run.stats["jointsPerCharacter"].get<int>());
-  CHECK(run.stats["speedChanges"].get<int>() >= 2);
+  CHECK(run.stats["active_joints"] == 300 * run.stats["joints_per_character"].get<int>());
+  CHECK(run.stats["speed_changes"].get<int>() >= 2);
 }
 
 TEST_CASE("view: the motion cache counts what `throng render --cache` counts for the same frames") {
@@ -219,13 +221,13 @@ TEST_CASE("view: the motion cache counts what `throng render --cache` counts for
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   const nlohmann::json& cache = run.stats["cache"];
   REQUIRE(cache.is_object());
   CHECK(cache["misses"].get<int>() > 0);
   CHECK(cache["hits"].get<int>() > 0);
   CHECK(cache["entries"].get<int>() > 0);
-  CHECK(cache["bytesUsed"].get<uint64_t>() <= cache["budgetBytes"].get<uint64_t>());
+  CHECK(cache["bytes_used"].get<uint64_t>() <= cache["budget_bytes"].get<uint64_t>());
 
   test::CommandResult render = test::runThrong("render " + scene + " --out " + out.string());
   INFO(render.output);
@@ -253,11 +255,11 @@ TEST_CASE("view: resize, F12 and close are handled") {
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   CHECK(run.stats["frames"].get<int>() < 500);  // closed by the script
   CHECK(run.stats["width"] == 400);
   CHECK(run.stats["height"] == 300);
-  CHECK(run.stats["swapchainRebuilds"].get<int>() >= 1);
+  CHECK(run.stats["swapchain_rebuilds"].get<int>() >= 1);
   REQUIRE(fs::exists(out / "throng_view_0001.png"));
   ImageRgba8 shot = readPng(out / "throng_view_0001.png");
   CHECK(shot.width == 400);

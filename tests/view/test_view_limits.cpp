@@ -48,7 +48,7 @@ TEST_CASE("view: a respawn past the device's limits is refused by name and the c
   CHECK(run.stats["frames"] == 8);
   CHECK(run.stats["characters"] == 200);
   CHECK(run.stats["respawns"] == 0);
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
 }
 
 // A crowd that is made but outgrows a binding when its first frame is recorded: the viewer
@@ -64,7 +64,7 @@ TEST_CASE(
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
   CHECK(run.stats["frames"] == 5);
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   if (contains(run.result.output, "respawn failed")) {
     MESSAGE("1350000 characters are past a limit of ", test::gpuContext().info().name);
     CHECK(contains(run.result.output, "big.txt:2: respawn 1350000: "));

@@ -28,13 +28,13 @@ struct Levels {
 // Checks what every LOD report must satisfy and returns its levels.
 Levels checkLodReport(const nlohmann::json& stats, long characters) {
   REQUIRE(stats.is_object());
-  CHECK(stats["validationMessages"] == 0);
+  CHECK(stats["validation_messages"] == 0);
   const nlohmann::json& lod = stats["lod"];
   REQUIRE(lod.is_object());
   CHECK(lod["enabled"] == true);
-  CHECK(stats["activeJoints"] == lod["activeJoints"]);
-  const long joints = stats["jointsPerCharacter"].get<long>();
-  const long active = lod["activeJoints"].get<long>();
+  CHECK(stats["active_joints"] == lod["active_joints"]);
+  const long joints = stats["joints_per_character"].get<long>();
+  const long active = lod["active_joints"].get<long>();
   Levels l{lod["levels"][0].get<long>(), lod["levels"][1].get<long>(),
            lod["levels"][2].get<long>()};
   CHECK(l.far + l.mid + l.near == characters);
@@ -59,16 +59,16 @@ TEST_CASE("view --lod: moving the camera close changes the active joints and the
   REQUIRE(close.result.exitCode == 0);
 
   Levels w = checkLodReport(wide.stats, 2000), c = checkLodReport(close.stats, 2000);
-  const long activeWide = wide.stats["activeJoints"].get<long>();
-  const long activeClose = close.stats["activeJoints"].get<long>();
+  const long activeWide = wide.stats["active_joints"].get<long>();
+  const long activeClose = close.stats["active_joints"].get<long>();
   MESSAGE("wide: ", activeWide, " active joints, far/mid/near ", w.far, "/", w.mid, "/", w.near);
   MESSAGE("close: ", activeClose, " active joints, far/mid/near ", c.far, "/", c.mid, "/", c.near);
   // Close up, the characters near the camera get every joint; most of the crowd leaves the
   // view and synthesizes only the base joints.
   CHECK(c.near > w.near);
   CHECK(activeClose < activeWide);
-  CHECK(wide.stats["lod"]["midPixels"] == 56.0);
-  CHECK(wide.stats["lod"]["nearPixels"] == 140.0);
+  CHECK(wide.stats["lod"]["mid_pixels"] == 56.0);
+  CHECK(wide.stats["lod"]["near_pixels"] == 140.0);
   CHECK(wide.stats["lod"]["tint"] == false);
 }
 
@@ -79,8 +79,8 @@ TEST_CASE("view --lod: the thresholds reach the crowd, also after a respawn") {
   REQUIRE(none.result.exitCode == 0);
   checkLodReport(none.stats, 200);
   CHECK(none.stats["lod"]["levels"] == nlohmann::json::array({200, 0, 0}));
-  CHECK(none.stats["activeJoints"] <= 200 * kFarJoints);
-  CHECK(none.stats["activeJoints"] > 200 * kBaseJoints);
+  CHECK(none.stats["active_joints"] <= 200 * kFarJoints);
+  CHECK(none.stats["active_joints"] > 200 * kBaseJoints);
 
   fs::path out = test::freshDirectory("view_lod_respawn");
   test::writeText(out / "respawn.txt", "wait 3\nrespawn 300 circle\nwait 2\n");
@@ -92,8 +92,8 @@ TEST_CASE("view --lod: the thresholds reach the crowd, also after a respawn") {
   checkLodReport(all.stats, 300);
   CHECK(all.stats["respawns"] == 1);
   CHECK(all.stats["lod"]["levels"] == nlohmann::json::array({0, 0, 300}));
-  CHECK(all.stats["activeJoints"] == 300 * all.stats["jointsPerCharacter"].get<int>());
-  CHECK(all.stats["lod"]["midPixels"] == 0.0);
+  CHECK(all.stats["active_joints"] == 300 * all.stats["joints_per_character"].get<int>());
+  CHECK(all.stats["lod"]["mid_pixels"] == 0.0);
 }
 
 TEST_CASE("view --lod --lod-tint: the window shows the frame `throng render` tints") {

@@ -24,7 +24,7 @@ test::ViewRun runScript(const std::string& options, const std::string& name,
   INFO(run.result.output);
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   CHECK(run.stats["frames"] == 12);
   return run;
 }

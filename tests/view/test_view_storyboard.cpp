@@ -22,10 +22,10 @@ TEST_CASE(
   REQUIRE(run.result.exitCode == 0);
   REQUIRE(run.stats.is_object());
   CHECK(run.stats["characters"] == 81);
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
   const nlohmann::json& levels = run.stats["lod"]["levels"];
   CHECK(levels[0].get<long>() + levels[1].get<long>() + levels[2].get<long>() == 81);
-  CHECK(run.stats["simulatedSeconds"].get<double>() > 0.2);
+  CHECK(run.stats["simulated_seconds"].get<double>() > 0.2);
 }
 
 TEST_CASE("view: a respawn keeps the storyboard scene until another scenario is picked") {
@@ -45,7 +45,7 @@ TEST_CASE("view: a respawn keeps the storyboard scene until another scenario is 
   REQUIRE(run.stats.is_object());
   CHECK(run.stats["respawns"] == 3);
   CHECK(run.stats["characters"] == 81);
-  CHECK(run.stats["validationMessages"] == 0);
+  CHECK(run.stats["validation_messages"] == 0);
 
   // A viewer started without --storyboard has no storyboard to go back to.
   std::ofstream(out / "bad.txt") << "respawn 10 storyboard\n";

@@ -1,5 +1,6 @@
 #pragma once
 // Running `throng view` under the suite's private Xvfb and reading its --print-stats line.
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -25,6 +26,21 @@ inline ViewRun runView(const std::string& args) {
   for (std::string line; std::getline(lines, line);)
     if (!line.empty() && line[0] == '{') run.stats = nlohmann::json::parse(line, nullptr, false);
   return run;
+}
+
+// The first key anywhere in `j` that is not snake_case ("" when every key is).
+inline std::string firstNonSnakeKey(const nlohmann::json& j) {
+  auto snake = [](const std::string& key) {
+    return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
+      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+    });
+  };
+  if (!j.is_structured()) return {};
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (j.is_object() && !snake(it.key())) return it.key();
+    if (std::string inner = firstNonSnakeKey(*it); !inner.empty()) return inner;
+  }
+  return {};
 }
 
 inline void writeText(const std::filesystem::path& path, const std::string& text) {

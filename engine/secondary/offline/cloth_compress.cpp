@@ -1,8 +1,11 @@
 #include "secondary/offline/cloth_compress.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <mutex>
+#include <string>
 
 #include "core/error.h"
 #include "secondary/cloth_decoder.h"
@@ -374,7 +377,23 @@ nlohmann::json compressionReportJson(const ClothDatabase& db) {
   const ClipPairIdentity& clips = db.clips.recorded() ? db.clips : builtInRunIdentity();
   j["clips"] = clips.name;
   j["clips_identity"] = clips.describe();
+  writeFloatsShort(j);
   return j;
+}
+
+void writeFloatsShort(nlohmann::json& j) {
+  if (j.is_structured()) {
+    for (nlohmann::json& value : j) writeFloatsShort(value);
+    return;
+  }
+  if (!j.is_number_float()) return;
+  const double x = j.get<double>();
+  const float f = float(x);
+  // A double that no float equals was computed in double: its digits are meaningful.
+  if (!std::isfinite(f) || double(f) != x) return;
+  char text[32];
+  const std::to_chars_result r = std::to_chars(text, text + sizeof(text), f);
+  j = std::strtod(std::string(text, r.ptr).c_str(), nullptr);
 }
 
 nlohmann::json clothCompressedInfo(const std::filesystem::path& path) {

@@ -80,4 +80,8 @@ ReconstructionError reconstructionError(const ClothFrames& frames, const ClothDa
 nlohmann::json clothCompressedInfo(const std::filesystem::path& path);
 nlohmann::json compressionReportJson(const ClothDatabase& db);
 
+// Every number in `j` that is exactly a float (the reports' metres are floats) rewritten as that
+// float's shortest decimal, 0.05 rather than 0.05000000074505806; other numbers are kept.
+void writeFloatsShort(nlohmann::json& j);
+
 }  // namespace throng::secondary
