@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <unordered_map>
 
@@ -116,17 +117,31 @@ CrowdMetrics trajectoryMetrics(const Trajectories& trajectories, float safeRadiu
   return m;
 }
 
+namespace {
+// A measurement with a fixed number of decimals: as many as the figure can tell apart.
+std::string withDecimals(double x, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, x);
+  return text;
+}
+}  // namespace
+
+// Rates per agent-second take 4 decimals (they are around 0.01), percentages, speeds, distances
+// and densities 2, the KS distance 3. Radii are settings and print as given.
 std::string formatMetrics(const std::string& label, const CrowdMetrics& m) {
-  return concat(label, ": ", m.agents, " agents, ", m.seconds, " s, ", m.agentSeconds, " agent-s\n",
-                "  collisions per agent-second ", m.collisionsPerAgentSecond, " at body radius ",
-                m.bodyRadius, " m (", m.collisions, " agent events), overlapping ",
-                100.0 * m.overlapShare, "% of agent-steps\n", "  safe-radius (", m.safeRadius,
-                " m) intrusions per agent-second ", m.safeIntrusionsPerAgentSecond, " (",
-                m.safeIntrusions, " agent events)\n", "  speed: mean ", m.meanSpeed,
-                " m/s (sources ", m.sourceMeanSpeed, " m/s), KS distance ", m.speedKs, " over ",
-                m.speedSamples, " samples\n", "  path error: mean ", m.meanPathError, " m, p95 ",
-                m.p95PathError, " m, max ", m.maxPathError, " m\n", "  peak density ",
-                m.peakDensity, " agents/m^2\n");
+  return concat(label, ": ", m.agents, " agents, ", m.seconds, " s, ",
+                withDecimals(m.agentSeconds, 0), " agent-s\n", "  collisions per agent-second ",
+                withDecimals(m.collisionsPerAgentSecond, 4), " at body radius ", m.bodyRadius,
+                " m (", m.collisions, " agent events), overlapping ",
+                withDecimals(100.0 * m.overlapShare, 2), " % of agent-steps\n", "  safe-radius (",
+                m.safeRadius, " m) intrusions per agent-second ",
+                withDecimals(m.safeIntrusionsPerAgentSecond, 4), " (", m.safeIntrusions,
+                " agent events)\n", "  speed: mean ", withDecimals(m.meanSpeed, 2),
+                " m/s (sources ", withDecimals(m.sourceMeanSpeed, 2), " m/s), KS distance ",
+                withDecimals(m.speedKs, 3), " over ", m.speedSamples, " samples\n",
+                "  path error: mean ", withDecimals(m.meanPathError, 2), " m, p95 ",
+                withDecimals(m.p95PathError, 2), " m, max ", withDecimals(m.maxPathError, 2),
+                " m\n", "  peak density ", withDecimals(m.peakDensity, 2), " agents/m^2\n");
 }
 
 std::string metricsJson(const CrowdMetrics& m) {

@@ -101,3 +101,32 @@ TEST_CASE("metrics: collisions at the body radius, safe-radius intrusions apart"
   CHECK(crowd::formatMetrics("real", m).find("safe-radius (0.3 m) intrusions") !=
         std::string::npos);
 }
+
+TEST_CASE("metrics: the text report gives each figure a fixed precision with its unit") {
+  crowd::CrowdMetrics m;
+  m.agents = 12;
+  m.seconds = 20.0;
+  m.agentSeconds = 243.0;
+  m.collisions = 2;
+  m.collisionsPerAgentSecond = 2.0 / 243.0;  // 0.00823045…
+  m.overlapShare = 0.00329218;
+  m.safeRadius = 0.3f;
+  m.safeIntrusionsPerAgentSecond = 0.0123457;
+  m.meanSpeed = 1.033333;
+  m.sourceMeanSpeed = 1.2;
+  m.speedKs = 0.123456;
+  m.meanPathError = 0.104;
+  m.p95PathError = 0.2;
+  m.maxPathError = 1.0 / 3.0;
+  m.peakDensity = 1.25;
+  const std::string text = crowd::formatMetrics("policy x", m);
+  INFO(text);
+  for (const char* part :
+       {"policy x: 12 agents, 20 s, 243 agent-s\n",
+        "collisions per agent-second 0.0082 at body radius 0.2 m (2 agent events)",
+        "overlapping 0.33 % of agent-steps",
+        "safe-radius (0.3 m) intrusions per agent-second 0.0123",
+        "speed: mean 1.03 m/s (sources 1.20 m/s), KS distance 0.123 over",
+        "path error: mean 0.10 m, p95 0.20 m, max 0.33 m", "peak density 1.25 agents/m^2"})
+    CHECK(text.find(part) != std::string::npos);
+}
