@@ -97,4 +97,80 @@ reset tsc
 "$throng" cloth compress corpus/tsg/toy.tsg -o corpus/tsc/toy.tsc --min-ratio 0 --quiet > /dev/null
 "$throng" cloth compress corpus/tsg/toy_small.tsg -o corpus/tsc/toy_small_2bases.tsc --bases 2 --min-ratio 0 --quiet > /dev/null
 
+# Menge (the example scenes are third-party data and stay out of the repository): tiny scenes,
+# behaviours, nav meshes and road maps written here. The first byte picks the reader: for
+# `menge` '0' scene, '1' behaviour; for `menge_nav` '0' nav mesh, '1' road map.
+reset menge
+cat > corpus/menge/scene_grid.xml <<'XML'
+0<?xml version="1.0"?>
+<Experiment version="2.0">
+  <Common time_step="0.1"/>
+  <AgentProfile name="a"><Common r="0.2" pref_speed="1.3" max_neighbors="8" class="1">
+    <Property name="r" dist="u" min="0.15" max="0.25" seed="2"/></Common></AgentProfile>
+  <AgentProfile name="b" inherits="a"><Common class="2"/></AgentProfile>
+  <AgentGroup><ProfileSelector type="const" name="a"/><StateSelector type="const" name="Walk"/>
+    <Generator type="rect_grid" anchor_x="-2" anchor_y="1" offset_x="0.5" offset_y="-0.5"
+               count_x="3" count_y="2" rotation="30" displace_dist="u" displace_min="0"
+               displace_max="0.1"/></AgentGroup>
+  <AgentGroup><ProfileSelector type="const" name="b"/><StateSelector type="const" name="Walk"/>
+    <Generator type="explicit"><Agent p_x="1" p_y="2"/><Agent p_x="-1" p_y="0.5"/></Generator>
+    <Generator type="hex_lattice" anchor_x="0" anchor_y="4" alignment="center" row_direction="y"
+               density="2" width="3" population="7"/></AgentGroup>
+  <ObstacleSet type="explicit" class="1">
+    <Obstacle closed="1"><Vertex p_x="0" p_y="0"/><Vertex p_x="1" p_y="0"/>
+      <Vertex p_x="1" p_y="1"/></Obstacle></ObstacleSet>
+  <ObstacleSet type="nav_mesh" file_name="m.nav" class="2"/>
+</Experiment>
+XML
+cat > corpus/menge/behavior.xml <<'XML'
+1<?xml version="1.0"?>
+<BFSM>
+  <GoalSet id="0">
+    <Goal type="point" id="0" x="1" y="2"/>
+    <Goal type="AABB" id="1" min_x="-1" min_y="-1" max_x="1" max_y="1" capacity="5"/>
+    <Goal type="circle" id="2" x="0" y="3" radius="0.5" weight="2"/>
+    <Goal type="OBB" id="3" x="0" y="0" width="2" height="1" angle="45"/>
+  </GoalSet>
+  <State name="Walk" final="0"><GoalSelector type="random" goal_set="0" per_agent="1"/>
+    <VelComponent type="nav_mesh" file_name="m.nav" heading_threshold="5"/></State>
+  <State name="Wait"><GoalSelector type="explicit" goal_set="0" goal="1"/>
+    <VelComponent type="zero"/></State>
+  <State name="Stop" final="1"><GoalSelector type="mirror" mirror_x="1"/>
+    <VelComponent type="road_map" file_name="map.txt"/></State>
+  <Transition from="Walk" to="Wait"><Condition type="goal_reached" distance="0.2"/></Transition>
+  <Transition from="Wait"><Condition type="timer" dist="u" min="1" max="2" per_agent="1"/>
+    <Target type="prob"><State name="Walk" weight="1"/><State name="Stop" weight="2"/></Target>
+  </Transition>
+  <Transition from="Walk,Stop" to="Stop"><Condition type="auto"/></Transition>
+</BFSM>
+XML
+reset menge_nav
+cat > corpus/menge_nav/two_triangles.nav <<'NAV'
+04
+0 0
+1 0
+1 1
+0 1
+1
+0 2 0 1
+4
+0 1 0 1
+1 2 0 2
+2 3 1 3
+3 0 1 0
+tris
+2
+0.66 0.33
+3 0 1 2
+0 0 0
+1 0
+2 0 1
+0.33 0.66
+3 0 2 3
+0 0 0.5
+1 0
+2 2 3
+NAV
+printf '13\n2 0 0\n1 1 0\n1 0 1\n2\n0 1\n0 2\n' > corpus/menge_nav/road_map.txt
+
 du -sh corpus/* | sed 's/^/corpus: /'
