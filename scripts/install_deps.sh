@@ -12,6 +12,7 @@ packages=(
   clang libclang-rt-14-dev
   ffmpeg
   libtinygltf-dev
+  libpugixml-dev
 )
 # The Khronos glTF-Validator runs on Node.js: Debian's nodejs/npm only where no node is installed.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then packages+=(nodejs npm); fi
