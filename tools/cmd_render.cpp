@@ -17,6 +17,7 @@
 #include "progress.h"
 #include "render/offscreen_target.h"
 #include "scene/frame.h"
+#include "scene_file_options.h"
 #include "scene_options.h"
 #include "scene_storyboard.h"
 #include "scene_trajectories.h"
@@ -36,6 +37,7 @@ struct RenderOptions {
   float fps = 0.0f;  // 0: 1 / dt
   bool overwrite = false;
   bool validation = false;
+  std::string saveScene;  // also write the scene as a scene file
 };
 
 // An output folder with frames of an earlier run is refused unless --overwrite: mixing two
@@ -97,6 +99,9 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in);
 
 void runRender(RenderOptions& o) {
   validateSceneOptions(o.scene);
+  const bool framesGiven = o.scene.command && (o.scene.command->count("--frames") > 0 ||
+                                               o.scene.command->count("--seconds") > 0);
+  if (o.scene.sceneSeconds > 0.0f && !framesGiven) o.seconds = o.scene.sceneSeconds;
   if (o.seconds > 0.0f) o.frames = int(std::lround(o.seconds / o.scene.dt));
   if (o.frames < 1 || o.frames > 100000) fail("--frames: expected 1..100000, got ", o.frames);
   RenderInputs in;
@@ -118,6 +123,11 @@ void runRender(RenderOptions& o) {
   if (in.clothDb) secondary::checkClothClips(*in.clothDb, o.scene.cloth, in.clips);
   in.camera = sceneCamera(o.scene);
   logInfo(concat("clips: ", in.clips.description));
+  if (!o.saveScene.empty()) {
+    writeTextFileAtomic(o.saveScene,
+                        scene::writeSceneFile(sceneFileOf(o.scene, float(o.frames) * o.scene.dt)));
+    logInfo(concat("scene written to ", o.saveScene));
+  }
 
   gpu::ContextOptions contextOptions;
   contextOptions.device = o.scene.device;
@@ -167,6 +177,7 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   for (int frame = 0; frame < o.frames; ++frame) {
     timestamps.reset();
     const scene::SceneStep step = scene.advance(o.scene.dt);
+    settings.camera = render::cameraAt(o.scene.cameraPath, float(frame) * o.scene.dt, in.camera);
     gpu::beginCommands(cmd);
     scene::FrameTimestamps marks = scene::recordFrame(cmd, context, scene, step, renderer,
                                                       cloth.get(), settings, timestamps);
@@ -243,6 +254,9 @@ void addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(1.0f, 240.0f));
   cmd->add_flag("--overwrite", options->overwrite, "Replace frames or a video of an earlier run");
   cmd->add_flag("--validation", options->validation, "Enable the Khronos validation layer");
+  cmd->add_option("--save-scene", options->saveScene,
+                  "Also write the scene as a scene file (JSON) that `throng render FILE` renders "
+                  "the same");
   cmd->callback([options, cmd] {
     options->pngs = options->video.empty() || cmd->count("--out") > 0;
     runRender(*options);

@@ -1,5 +1,6 @@
 #include "scene_options.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "cli_errors.h"
@@ -7,6 +8,7 @@
 #include "crowd/trajectory_writer.h"
 #include "limit_option.h"
 #include "render/offscreen_target.h"
+#include "scene_file_options.h"
 #include "scene_storyboard.h"
 
 namespace throng::tools {
@@ -69,6 +71,9 @@ void checkUsedOptions(const SceneOptions& o) {
 
 void addSceneOptions(CLI::App& command, SceneOptions& o) {
   o.command = &command;
+  command.add_option("scene", o.sceneFile,
+                     "Scene file (JSON, docs/formats.md): the whole scene in one file, instead of "
+                     "the scene flags");
   command
       .add_option("--scene", o.scenario.name,
                   "Scenario: random, circle or storyboard (with --storyboard)")
@@ -163,6 +168,7 @@ Size parseSize(const std::string& text) {
 }
 
 void validateSceneOptions(SceneOptions& o) {
+  applySceneFile(o);
   if (o.characters < 1 || o.characters > 4000000)
     fail("--characters: expected 1..4000000, got ", o.characters);
   o.scenario.characters = static_cast<uint32_t>(o.characters);
@@ -229,6 +235,7 @@ std::string charactersOption(const SceneOptions& o) {
 }
 
 anim::ClipPair loadSceneClips(const SceneOptions& o) {
+  if (!o.groups.empty()) return scene::groupClips(o.groups.front());
   if (o.slowClip.empty()) return anim::defaultRunPair();
   return anim::loadClipPair(o.slowClip, o.fastClip);
 }
@@ -260,7 +267,16 @@ synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& s
 }
 
 float sceneExtent(const SceneOptions& o) {
-  return o.storyboard() ? o.story.extent : crowd::scenarioExtent(o.scenario);
+  if (o.storyboard()) return o.story.extent;
+  float extent = crowd::scenarioExtent(o.scenario);
+  for (const scene::GroupDescription& g : o.groups) {
+    crowd::ScenarioOptions s = o.scenario;
+    s.name = g.placement;
+    s.characters = g.count;
+    s.density = g.density;
+    extent = std::max(extent, glm::length(g.centre) + crowd::scenarioExtent(s));
+  }
+  return extent;
 }
 
 float sceneGroundExtent(const SceneOptions& o) {

@@ -3,6 +3,7 @@
 // the camera. Everything is validated before any output is written.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -10,6 +11,8 @@
 #include "crowd/scenario.h"
 #include "gpu/context.h"
 #include "render/camera.h"
+#include "render/camera_path.h"
+#include "scene/scene_builders.h"
 #include "secondary/cloth_gpu_layer.h"
 #include "synth/crowd_synth.h"
 
@@ -49,6 +52,12 @@ struct SceneOptions {
   bool clothTint = false;  // colour capes by garment level
   bool clothFull = false;  // every visible cape at full detail (no garment LOD)
   StoryboardSceneOptions story;
+  // From a scene file (SCENE.json, tools/scene_file_options.h): its groups (empty: the one
+  // group the flags describe), its keyframed camera (empty: fixed) and its seconds of output.
+  std::string sceneFile;
+  std::vector<scene::GroupDescription> groups;
+  std::vector<render::CameraKey> cameraPath;
+  float sceneSeconds = 0.0f;
   std::string trajectoriesOut;  // every agent's position per frame (.txt PedPy or .csv)
   // The command the options were parsed by (null when built in code): which options were given,
   // so that one that does nothing in the chosen scene is an error.

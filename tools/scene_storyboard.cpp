@@ -78,6 +78,13 @@ scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& cl
   if (o.storyboard())
     return scene::storyboardScene(storyboardDescription(o, o.slowClip.empty() ? nullptr : &clips));
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  const float bucketWidth = o.cache ? o.bucketWidth : 0.0f;
+  // A scene file's groups (the circle: its one group on the lanes).
+  if (!o.groups.empty() && steersCircle(o))
+    return scene::circleScene(scene::groupCrowd(o.groups.front(), o.scenario.seed, 0, bucketWidth),
+                              std::move(pair), sceneAvoidance(o));
+  if (!o.groups.empty())
+    return scene::groupsScene(o.groups, o.scenario.seed, bucketWidth, sceneSpeedSchedule(o));
   if (steersCircle(o))
     return scene::circleScene(makeSceneCrowd(o), std::move(pair), sceneAvoidance(o));
   return scene::plainScene(makeSceneCrowd(o), std::move(pair), sceneSpeedSchedule(o));

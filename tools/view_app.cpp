@@ -60,10 +60,12 @@ void ViewSession::run() {
     const bool withPanel = panelVisible_;
     if (withPanel) imgui_->newFrame();
     float flySeconds = fixedClock_ ? o_.scene.dt : static_cast<float>(std::min(wall, 0.1));
+    const render::Camera before = camera_;
     for (render::ViewAction action :
          controls_.update(camera_, flySeconds, float(presenter_.swapchain().extent().height)))
       handle(action);
     applyPanel();
+    followCameraPath(before);
     float dt = simulationStep(wall);
 
     std::optional<render::PresentFrame> frame = presenter_.beginFrame([this](uint32_t slot) {

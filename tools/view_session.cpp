@@ -244,6 +244,18 @@ void ViewSession::respawn(const SceneOptions& next, const std::string& label) {
   }
 }
 
+void ViewSession::followCameraPath(const render::Camera& before) {
+  if (o_.scene.cameraPath.empty() || !followPath_) return;
+  const bool moved = camera_.eye != before.eye || camera_.target != before.target ||
+                     camera_.fovYDegrees != before.fovYDegrees;
+  if (moved) {
+    followPath_ = false;
+    logInfo("the camera path stops: the camera was moved");
+    return;
+  }
+  camera_ = render::cameraAt(o_.scene.cameraPath, float(scene_->simulatedSeconds), camera_);
+}
+
 scene::FrameTimestamps ViewSession::recordCrowdOnce(const render::PresentFrame& frame, float dt) {
   const scene::SceneStep step = scene_->crowd->advance(dt);
   if (step.retarget.epoch != 0) ++speedChanges_;

@@ -70,6 +70,9 @@ class ViewSession {
   std::unique_ptr<render::ImGuiLayer> imgui_;
   render::ViewControls controls_;
   render::Camera camera_, initialCamera_;
+  // A scene file's keyframed camera plays until the user moves the camera.
+  bool followPath_ = true;
+  void followCameraPath(const render::Camera& before);
   PanelControls panel_;
   PanelRect panelRect_;
   bool panelVisible_ = true;

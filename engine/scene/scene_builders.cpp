@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <numeric>
 
+#include "anim/speed_buckets.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "crowd/avoidance_types.h"
 #include "crowd/circle_paths.h"
+#include "crowd/scenario.h"
 #include "crowd/trajectories.h"
 #include "storyboard/codec.h"
 #include "storyboard/legend.h"
@@ -77,6 +80,59 @@ SceneSetup plainScene(crowd::Crowd crowd, anim::MotionPair pair,
   setup.groupFirst = {0, uint32_t(crowd.size())};
   setup.crowd = std::move(crowd);
   setup.pairs.push_back(std::move(pair));
+  setup.speeds = speeds;
+  return setup;
+}
+
+anim::ClipPair groupClips(const GroupDescription& group) {
+  if (!group.slow.empty()) return anim::loadClipPair(group.slow, group.fast);
+  if (group.clips == "walk") return anim::defaultWalkPair();
+  if (group.clips == "talk") return anim::defaultTalkPair();
+  if (group.clips == "hop") return anim::defaultJumpPair();
+  if (group.clips == "run") return anim::defaultRunPair();
+  fail("unknown built-in clip set '", group.clips, "': expected run, walk, talk or hop");
+}
+
+crowd::Crowd groupCrowd(const GroupDescription& group, uint64_t seed, size_t index,
+                        float bucketWidth) {
+  crowd::ScenarioOptions options;
+  options.name = group.placement;
+  options.characters = group.count;
+  options.seed = seed + 7919u * index;  // each group its own draw
+  options.density = group.density;
+  options.minSpeedWeight = group.speedMin;
+  options.maxSpeedWeight = group.speedMax;
+  options.minScale = group.scaleMin;
+  options.maxScale = group.scaleMax;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  for (glm::vec4& p : crowd.placement) {
+    p.x += group.centre.x;
+    p.z += group.centre.y;
+  }
+  if (bucketWidth > 0.0f)
+    for (glm::vec4& m : crowd.motion) m.y = m.z = anim::quantizeSpeed(m.y, bucketWidth);
+  return crowd;
+}
+
+SceneSetup groupsScene(std::span<const GroupDescription> groups, uint64_t seed, float bucketWidth,
+                       const synth::SpeedSchedule& speeds) {
+  if (groups.empty() || groups.size() > gpu_types::kMaxClipSets)
+    fail("a scene has 1 to ", gpu_types::kMaxClipSets, " groups, got ", groups.size());
+  SceneSetup setup;
+  setup.groupFirst = {0};
+  for (size_t k = 0; k < groups.size(); ++k) {
+    const crowd::Crowd part = groupCrowd(groups[k], seed, k, bucketWidth);
+    if (k == 0) setup.crowd.steering = part.steering;
+    setup.crowd.placement.insert(setup.crowd.placement.end(), part.placement.begin(),
+                                 part.placement.end());
+    setup.crowd.motion.insert(setup.crowd.motion.end(), part.motion.begin(), part.motion.end());
+    setup.crowd.clipSet.insert(setup.crowd.clipSet.end(), part.size(), uint32_t(k));
+    const anim::ClipPair clips = groupClips(groups[k]);
+    setup.pairs.push_back(anim::makeMotionPair(clips.slow, clips.fast));
+    setup.groupFirst.push_back(uint32_t(setup.crowd.size()));
+    setup.labels.insert(setup.labels.end(), part.size(), uint32_t(k));
+  }
+  if (groups.size() > 1) setup.tints = setup.labels;  // one colour per group
   setup.speeds = speeds;
   return setup;
 }

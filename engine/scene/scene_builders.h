@@ -7,6 +7,7 @@
 //    pair of its action (walk, run, idle/talk, hop) and tinted by its group.
 // A new kind of scene is a new builder here; what it needs from files is read here too.
 #include <optional>
+#include <span>
 #include <string>
 
 #include "anim/default_clips.h"
@@ -17,6 +18,28 @@ namespace throng::scene {
 
 SceneSetup plainScene(crowd::Crowd crowd, anim::MotionPair pair,
                       const synth::SpeedSchedule& speeds);
+
+// A group of characters animated by one clip set.
+struct GroupDescription {
+  uint32_t count = 1000;
+  std::string clips = "run";               // built-in set: run, walk, talk or hop (slow/fast empty)
+  std::string slow, fast;                  // or a BVH pair
+  std::string placement = "random";        // random (a square at `density`) or circle (lanes)
+  glm::vec2 centre{0.0f};                  // (x, z) metres
+  float density = 0.5f;                    // characters per square metre (random)
+  float speedMin = 0.0f, speedMax = 1.0f;  // speed weight range
+  float scaleMin = 0.92f, scaleMax = 1.08f;
+};
+
+// The group's clip set: its BVH pair, or the built-in set it names.
+anim::ClipPair groupClips(const GroupDescription& group);
+// The group's characters: its placement around its centre, speeds (on bucket speeds when
+// bucketWidth > 0) and sizes, deterministic from the seed and the group's index.
+crowd::Crowd groupCrowd(const GroupDescription& group, uint64_t seed, size_t index,
+                        float bucketWidth);
+// A plain scene of several groups (at most kMaxClipSets), each animated by its clip set.
+SceneSetup groupsScene(std::span<const GroupDescription> groups, uint64_t seed, float bucketWidth,
+                       const synth::SpeedSchedule& speeds);
 
 // The circle's runners (crowd from crowd::makeScenario's "circle") on their lanes.
 SceneSetup circleScene(crowd::Crowd crowd, anim::MotionPair pair,
