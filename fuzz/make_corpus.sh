@@ -173,4 +173,25 @@ tris
 NAV
 printf '13\n2 0 0\n1 1 0\n1 0 1\n2\n0 1\n0 2\n' > corpus/menge_nav/road_map.txt
 
+# Scene files (docs/formats.md): one of each behaviour, written by hand to stay small.
+reset scene_file
+cat > corpus/scene_file/groups.json <<'JSON'
+{"schema": "throng.scene", "version": 1, "seed": 7,
+ "groups": [{"count": 50, "clips": "walk", "centre": [-5, 0], "speed": [0.2, 0.6]},
+            {"count": 20, "slow": "a.bvh", "fast": "b.bvh", "density": 0.8}],
+ "speed_period": 5, "motion": {"lod": false, "cache": true, "bucket_width": 0.1},
+ "camera": {"preset": "top", "path": [{"time": 0, "eye": [0, 30, -40], "target": [0, 0, 0]},
+                                      {"time": 4, "eye": [40, 30, 0], "target": [0, 0, 0], "fov": 60}]},
+ "output": {"size": "640x360", "fps": 25, "seconds": 4}}
+JSON
+cat > corpus/scene_file/circle.json <<'JSON'
+{"schema": "throng.scene", "version": 1, "behaviour": "circle",
+ "groups": [{"count": 30, "placement": "circle"}], "avoidance": {"policy": "published", "radius": 0.4}}
+JSON
+cat > corpus/scene_file/storyboard.json <<'JSON'
+{"schema": "throng.scene", "version": 1, "behaviour": "storyboard",
+ "storyboard": {"file": "board.png", "trajectories": "t.txt", "cell": 0.5, "step_time": 0.4},
+ "capes": "cape.tsc", "camera": {"preset": "street", "eye": [1, 2, 3], "fov": 50}}
+JSON
+
 du -sh corpus/* | sed 's/^/corpus: /'
