@@ -14,7 +14,7 @@ namespace {
 constexpr const char* kSceneFlags[] = {
     "--scene",        "--characters",   "--seed",         "--speed-min", "--speed-max",
     "--density",      "--slow",         "--fast",         "--camera",    "--eye",
-    "--target",       "--fov",          "--size",         "--dt",        "--cache",
+    "--target",       "--fov",          "--dt",        "--cache",
     "--cache-budget", "--bucket-width", "--speed-period", "--lod",       "--storyboard",
     "--trajectories", "--legend",       "--cell",         "--jitter",    "--policy",
     "--radius",       "--step-time",    "--cloth"};
@@ -73,7 +73,7 @@ void applySceneFile(SceneOptions& o) {
   o.target = f.target ? vec3Text(*f.target) : "";
   o.fovY = f.fovYDegrees;
   o.cameraPath = f.cameraPath;
-  o.size = f.size;
+  if (!(o.command && o.command->count("--size") > 0)) o.size = f.size;  // an output option
   o.dt = 1.0f / f.fps;
   o.sceneSeconds = f.seconds;
 }

@@ -8,7 +8,8 @@
 namespace throng::tools {
 
 // Reads options.sceneFile (when set) into the options. A flag that describes the scene too is
-// an error naming it; output flags (--out, --video, --frames, --device, ...) stay. Throws Error.
+// an error naming it; output flags (--out, --video, --frames, --seconds, --size, --device, ...)
+// stay and override the file's output. Throws Error.
 void applySceneFile(SceneOptions& options);
 // The scene of these (validated) options as a scene file; `seconds` of output at 1 / dt fps.
 scene::SceneFile sceneFileOf(const SceneOptions& options, float seconds);

@@ -4,6 +4,10 @@
 
 #include "core/error.h"
 #include "render/camera_path.h"
+#include <filesystem>
+#include <fstream>
+
+#include "scene/example_scenes.h"
 #include "scene/json_lines.h"
 #include "scene/scene_file.h"
 
@@ -145,4 +149,17 @@ TEST_CASE("camera path: linear between keyframes, held outside them") {
   CHECK(render::cameraAt(path, -1.0f, base).eye.x == 0.0f);
   CHECK(render::cameraAt(path, 9.0f, base).eye.x == 20.0f);
   CHECK(render::cameraAt({}, 1.0f, base).eye == base.eye);
+}
+
+TEST_CASE("the committed example scenes are what `throng assets generate` writes, and read back") {
+  for (const auto& [name, scene] : scene::exampleScenes()) {
+    CAPTURE(name);
+    const std::filesystem::path path = std::filesystem::path(THRONG_SOURCE_DIR) / "assets/scenes" / name;
+    REQUIRE_MESSAGE(std::filesystem::exists(path), "run `throng assets generate --out assets`");
+    std::ifstream in(path);
+    const std::string committed((std::istreambuf_iterator<char>(in)), {});
+    CHECK_MESSAGE(committed == scene::writeSceneFile(scene),
+                  "out of date: run `throng assets generate --out assets`");
+    CHECK_NOTHROW(scene::readSceneFile(path));
+  }
 }
