@@ -35,7 +35,7 @@ CacheRun runWithSpeedChanges(const gpu::Context& context, const synth::SynthProg
   scenario.seed = 7;
   crowd::Crowd crowd = crowd::makeScenario(scenario);
   if (cache.enabled)
-    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
+    anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache);
   synth::SpeedSchedule schedule{o.speedPeriod, 7, 0.0f, 1.0f,
                                 cache.enabled ? cache.bucketWidth : 0.0f};
@@ -145,7 +145,7 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
     }
     // The cache poses every character at its bucket's speed.
     crowd::Crowd bucketed = crowd;
-    for (glm::vec4& m : bucketed.motion) m.y = m.z = synth::quantizeSpeed(m.y, 0.05f);
+    anim::quantizeSpeeds(bucketed.motion, 0.05f);
     cachedMs = timeVariant(synth::makeCrowdSynth(context, pair, bucketed,
                                                  {true, 0.05f, 20ull << 20}, {true, {}, &skeleton}),
                            true);

@@ -27,7 +27,7 @@ std::unique_ptr<scene::Scene> makeBenchScene(const gpu::Context& context, uint32
   options.seed = 42;
   scene::SceneSetup setup;
   setup.crowd = crowd::makeScenario(options);
-  for (glm::vec4& m : setup.crowd.motion) m.y = m.z = anim::quantizeSpeed(m.y, kBucketWidth);
+  anim::quantizeSpeeds(setup.crowd.motion, kBucketWidth);
   const anim::ClipPair sets[4] = {anim::defaultWalkPair(), anim::defaultRunPair(),
                                   anim::defaultTalkPair(), anim::defaultJumpPair()};
   setup.groupFirst = {0};

@@ -68,7 +68,7 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   crowd::Crowd crowd = benchCrowd(n);
   synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
   if (cache.enabled)
-    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
+    anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
   // The default wide camera of `throng render` for this crowd, at 1280x720.
@@ -117,7 +117,7 @@ Row benchRender(const gpu::Context& context, const anim::MotionPair& pair, const
   crowd::Crowd crowd = crowd::makeScenario(scenario);
   synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
   if (cache.enabled)
-    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, cache.bucketWidth);
+    anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
   scene::SceneSetup setup;
   setup.pairs.push_back(pair);

@@ -247,7 +247,7 @@ synth::MotionCacheOptions sceneCacheOptions(const SceneOptions& o) {
 crowd::Crowd makeSceneCrowd(const SceneOptions& o) {
   crowd::Crowd crowd = crowd::makeScenario(o.scenario);
   if (o.cache) {
-    for (glm::vec4& m : crowd.motion) m.y = m.z = synth::quantizeSpeed(m.y, o.bucketWidth);
+    anim::quantizeSpeeds(crowd.motion, o.bucketWidth);
   }
   return crowd;
 }

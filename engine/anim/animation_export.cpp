@@ -5,6 +5,7 @@
 #include <glm/gtx/euler_angles.hpp>
 
 #include "core/error.h"
+#include "shaders/shared_types.h"
 
 namespace throng::anim {
 namespace {
@@ -40,8 +41,8 @@ void appendPose(const MotionPair& pair, const glm::vec4& placement, const glm::v
                 JointAnimation& out) {
   thread_local std::vector<PoseJoint> pose;
   pose.resize(size_t(pair.jointCount()));
-  poseCharacterSpace(pair, motion.x, motion.y, pose);
-  const float scale = motion.w;
+  poseCharacterSpace(pair, gpu_types::cyclePhase(motion), gpu_types::speedWeight(motion), pose);
+  const float scale = gpu_types::characterScale(motion);
   for (int j = 0; j < pair.jointCount(); ++j) {
     const int p = pair.parents[size_t(j)];
     const glm::quat rotation = toQuat(pose[size_t(j)].rotation);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "anim/speed_buckets.h"
+#include "shaders/shared_types.h"
 #include "core/error.h"
 #include "core/math.h"
 
@@ -95,9 +96,10 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
                    Steering steering, const SpeedRetarget& retarget, uint32_t character) {
   const MotionTexture& slow = pair.slow;
   const MotionTexture& fast = pair.fast;
-  float w = motion.y;
+  namespace m = gpu_types;
+  float w = m::speedWeight(motion);
   float duration = slow.duration() * (1.0f - w) + fast.duration() * w;
-  float phase0 = motion.x;
+  float phase0 = m::cyclePhase(motion);
   float phase1 = phase0 + dt / duration;
   glm::vec3 dSlow =
       rootAt(slow, phase1 * float(slow.frameCount)) - rootAt(slow, phase0 * float(slow.frameCount));
@@ -107,13 +109,13 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
   if (steering == Steering::Circle)
     placement.w = circleHeading(glm::vec2(placement.x, placement.z));
   float c = std::cos(placement.w), s = std::sin(placement.w);
-  float scale = motion.w;
+  float scale = m::characterScale(motion);
   placement.x += scale * (d.x * c + d.z * s);
   placement.z += scale * (-d.x * s + d.z * c);
   applyRetarget(character, retarget, motion);
   float wraps = std::floor(phase1);
-  motion.x = phase1 - wraps;
-  if (wraps > 0.0f) motion.y = motion.z;
+  motion = m::withCyclePhase(motion, phase1 - wraps);
+  if (wraps > 0.0f) motion = m::withSpeedWeight(motion, m::targetSpeedWeight(motion));
 }
 
 void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out) {
@@ -174,7 +176,8 @@ void poseCharacterAt(const MotionPair& pair, float phase, float w, float heading
 
 void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
                    std::span<glm::vec4> out) {
-  poseCharacterAt(pair, motion.x, motion.y, placement.w, glm::vec3(placement), motion.w, out);
+  poseCharacterAt(pair, gpu_types::cyclePhase(motion), gpu_types::speedWeight(motion), placement.w,
+                  glm::vec3(placement), gpu_types::characterScale(motion), out);
 }
 
 glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p) {

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "anim/speed_buckets.h"
+#include "shaders/shared_types.h"
 
 namespace throng::anim {
 
@@ -16,7 +17,8 @@ float retargetSpeed(uint32_t character, uint32_t epoch, uint32_t seed, float lo,
 void applyRetarget(uint32_t character, const SpeedRetarget& r, glm::vec4& motion) {
   if (r.epoch == 0) return;
   float target = retargetSpeed(character, r.epoch, r.seed, r.lo, r.hi);
-  motion.z = r.bucketWidth > 0.0f ? quantizeSpeed(target, r.bucketWidth) : target;
+  motion = gpu_types::withTargetSpeedWeight(
+      motion, r.bucketWidth > 0.0f ? quantizeSpeed(target, r.bucketWidth) : target);
 }
 
 float circleHeading(glm::vec2 p) {

@@ -1,5 +1,7 @@
 #include "anim/speed_buckets.h"
 
+#include "shaders/shared_types.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,6 +21,13 @@ float bucketSpeed(uint32_t bucket, float bucketWidth) {
 
 float quantizeSpeed(float w, float bucketWidth) {
   return bucketSpeed(speedBucket(w, bucketWidth, speedBucketCount(bucketWidth)), bucketWidth);
+}
+
+void quantizeSpeeds(std::span<glm::vec4> motion, float bucketWidth) {
+  for (glm::vec4& m : motion) {
+    const float w = quantizeSpeed(gpu_types::speedWeight(m), bucketWidth);
+    m = gpu_types::withTargetSpeedWeight(gpu_types::withSpeedWeight(m, w), w);
+  }
 }
 
 }  // namespace throng::anim

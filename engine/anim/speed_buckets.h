@@ -3,6 +3,9 @@
 // rounding used by the motion cache, speed retargeting (CPU twin and shaders/speed_buckets.glsl)
 // and the cloth database's per-bucket tables.
 #include <cstdint>
+#include <span>
+
+#include <glm/glm.hpp>
 
 namespace throng::anim {
 
@@ -14,5 +17,8 @@ uint32_t speedBucket(float w, float bucketWidth, uint32_t bucketCount);
 float bucketSpeed(uint32_t bucket, float bucketWidth);
 // w rounded to its bucket's speed (what a cached pose is synthesized at).
 float quantizeSpeed(float w, float bucketWidth);
+// Every character's speed weight and target on its bucket's speed (motion vectors as in
+// shaders/shared_types.h), so that a crowd starts on cached speeds.
+void quantizeSpeeds(std::span<glm::vec4> motion, float bucketWidth);
 
 }  // namespace throng::anim

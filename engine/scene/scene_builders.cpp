@@ -110,7 +110,7 @@ crowd::Crowd groupCrowd(const GroupDescription& group, uint64_t seed, size_t ind
     p.z += group.centre.y;
   }
   if (bucketWidth > 0.0f)
-    for (glm::vec4& m : crowd.motion) m.y = m.z = anim::quantizeSpeed(m.y, bucketWidth);
+    anim::quantizeSpeeds(crowd.motion, bucketWidth);
   return crowd;
 }
 

@@ -244,11 +244,17 @@ uint32_t chunkCount(const CrowdSynth& synth, uint32_t chunk) {
 
 }  // namespace
 
-void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
-                     const CrowdSynth& synth, float dt, VkDeviceSize maxBindingBytes,
-                     const anim::SpeedRetarget& retarget, const CoverageCamera* lodCamera) {
+void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                            const CrowdSynth& synth, float dt,
+                            const anim::SpeedRetarget& retarget) {
   checkPrograms(programs, synth);
   recordRootMotion(cmd, programs, synth, dt, retarget);
+}
+
+void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                      const CrowdSynth& synth, VkDeviceSize maxBindingBytes,
+                      const CoverageCamera* lodCamera) {
+  checkPrograms(programs, synth);
   const bool lod = synth.lod && lodCamera;
   if (lod) recordCoverage(cmd, programs, synth, *lodCamera);
   const uint32_t chunk = poseChunk(synth, maxBindingBytes);
@@ -257,6 +263,13 @@ void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> 
   // The cache counters are read on the host after the frame.
   if (synth.cached())
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+}
+
+void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                     const CrowdSynth& synth, float dt, VkDeviceSize maxBindingBytes,
+                     const anim::SpeedRetarget& retarget, const CoverageCamera* lodCamera) {
+  recordRootMotionPasses(cmd, programs, synth, dt, retarget);
+  recordPosePasses(cmd, programs, synth, maxBindingBytes, lodCamera);
 }
 
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,

@@ -83,6 +83,15 @@ void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> 
                      const CrowdSynth& synth, float dt, VkDeviceSize maxBindingBytes,
                      const anim::SpeedRetarget& retarget = {},
                      const CoverageCamera* lodCamera = nullptr);
+// The two halves of recordSynthesis, for a frame that puts work between them (constraints on
+// where root motion moved the characters, e.g. walls): root motion of every group, then a
+// barrier; then coverage, motion cache and pose.
+void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                            const CrowdSynth& synth, float dt,
+                            const anim::SpeedRetarget& retarget = {});
+void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                      const CrowdSynth& synth, VkDeviceSize maxBindingBytes,
+                      const CoverageCamera* lodCamera = nullptr);
 // The same for a crowd of one group.
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
                      float dt, VkDeviceSize maxBindingBytes,

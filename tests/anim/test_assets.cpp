@@ -441,8 +441,13 @@ TEST_CASE("throng assets generate writes every clip, and a bad --out is an error
     REQUIRE(fs::exists(written));
     CHECK(throng::readTextFile(written) == formatBvh(generateGait(v.params)));
   }
-  // Only the clips: no temporary file left behind by the atomic writes.
-  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == long(variants().size()));
+  // Only the clips and the scenes folder (its files: tests/scene): no temporary file left
+  // behind by the atomic writes.
+  CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) ==
+        long(variants().size()) + 1);
+  CHECK(fs::is_directory(dir / "scenes"));
+  for (const auto& entry : fs::directory_iterator(dir / "scenes"))
+    CHECK(entry.path().extension() == ".json");
 
   const fs::path notADir = dir / "run_slow.bvh";
   throng::test::CommandResult bad = throng::test::runThrong("assets generate --out '" + notADir.string() + "'");
