@@ -20,6 +20,7 @@
 #include "gpu/commands.h"
 #include "scene/frame.h"
 #include "render/offscreen_target.h"
+#include "progress.h"
 #include "scene_options.h"
 #include "stats.h"
 #include "synth/cpu_synth.h"
@@ -259,22 +260,38 @@ void runBench(BenchOptions& o) {
   };
   std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
   std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
-  for (uint32_t n : o.clothOnly ? std::vector<uint32_t>{} : o.counts) {
+  // A bar with the ETA over the rows on a terminal (stderr; the table stays on stdout).
+  const std::vector<uint32_t> counts = o.clothOnly ? std::vector<uint32_t>{} : o.counts;
+  Progress progress("bench", static_cast<long long>(counts.size()) * (threads > 1 ? 5 : 4) +
+                                 (o.clothOnly ? 0 : 3) + (o.cloth.empty() ? 0 : 1));
+  long long stagesDone = 0;
+  auto next = [&](const std::string& name) { progress.stage(stagesDone++, name); };
+  for (uint32_t n : counts) {
+    next(concat("GPU synthesis, ", n, " characters"));
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Full));
+    next(concat("GPU synthesis with LOD, ", n, " characters"));
     report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Lod));
+    next(concat("GPU synthesis with LOD and cache, ", n, " characters"));
     report(
         benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::LodCache));
+    next(concat("CPU twin, 1 thread, ", n, " characters"));
     report(benchCpuSynthesis(pair, n, 1, o));
-    if (threads > 1) report(benchCpuSynthesis(pair, n, threads, o));
+    if (threads > 1) {
+      next(concat("CPU twin, ", threads, " threads, ", n, " characters"));
+      report(benchCpuSynthesis(pair, n, threads, o));
+    }
   }
   if (!o.clothOnly) {
+    next("four clip sets against one");
     const ClipSetBenchResult sets = benchClipSets(context, o.clipSetCharacters, o.frames, o.warmup);
     report({"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames});
     report({"gpu-synthesis-lod+cache-4-clip-sets", sets.characters, sets.fourSetsMs, 0.0,
             sets.frames});
     std::printf("  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
                 sets.ratioMedian, sets.ratioMin, sets.ratioMax);
+    next("synthesis and render");
     report(benchRender(context, pair, clips.slow.skeleton, o, Variant::Full));
+    next("synthesis and render with LOD and cache");
     report(benchRender(context, pair, clips.slow.skeleton, o, Variant::LodCache));
   }
   std::optional<ClothBenchResult> cloth;
@@ -285,12 +302,14 @@ void runBench(BenchOptions& o) {
     c.size = o.size;
     c.frames = o.frames;
     c.warmup = o.warmup;
+    next("caped crowd");
     cloth = benchCloth(context, c);
     report({cloth->variant, cloth->characters, cloth->synthesisMs, cloth->renderMs, cloth->frames});
     printClothRow(*cloth, c.targetMs);
   } else {
     std::printf("%s\n", kClothSkipped);
   }
+  progress.finish();
   printTargetRatios(rows, threads);
   if (!o.experiments.empty()) {
     ExperimentOptions experiment;
