@@ -193,8 +193,10 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     if (cloth) clothTimes.push_back(cloth->timings(0));
     output.push(std::make_shared<ImageRgba8>(render::readbackImage(target)), frame);
     trajectories.record(context, scene, double(frame) * o.scene.dt);
-    progress.update(frame + 1, concat("synthesis ", timings.synthesisMs, " ms, render ",
-                                      timings.renderMs, " ms"));
+    char detail[96];
+    std::snprintf(detail, sizeof(detail), "synthesis %.2f ms, render %.2f ms",
+                  timings.steerMs + timings.synthesisMs, timings.renderMs);
+    progress.update(frame + 1, detail);
   }
   output.finish();
   trajectories.finish();
