@@ -28,6 +28,7 @@
 #include "shared_types.h"  // the motion vector's accessors
 #include "crowd_bindings.h"
 #include "avoidance_common.glsl"
+#include "avoidance_walls.glsl"
 #include "words64.glsl"
 
 layout(local_size_x = 64) in;
@@ -35,6 +36,7 @@ layout(constant_id = kSteerConstantPolicy) const uint kPolicy = kSteerPolicyTtc;
 layout(constant_id = kSteerConstantRange) const int kRange = 1;  // columns scanned each side: ceil(sensing / width)
 layout(constant_id = kSteerConstantChunk) const uint kChunk = 8u;  // candidates per round: min(subgroup size, 32)
 layout(constant_id = kSteerConstantRangeZ) const int kRangeZ = 1;  // rows scanned each side: ceil(sensing / depth)
+layout(constant_id = kSteerConstantWalls) const uint kWalls = 0u;  // 1: static walls are read
 const int kRows = 2 * kRangeZ + 1;
 const int kRuns = 2 * kRows;                      // a row's columns may wrap around the table
 const uint kStartValues = 4u * uint(kRows);       // grid table entries a round reads
@@ -51,6 +53,11 @@ layout(binding = kSteerBindingSorted) uniform samplerBuffer sortedTexels;
 // of placement and steer; no other invocation writes agent i).
 layout(binding = kSteerBindingPlacementTexels) uniform samplerBuffer placementTexels;
 layout(binding = kSteerBindingSteerTexels) uniform samplerBuffer steerTexels;
+// Static walls (bound but never read when kWalls is 0).
+layout(std140, binding = kSteerBindingWallInfo) uniform WallInfo { WallGridInfo wallInfo; };
+layout(binding = kSteerBindingWallSegments) uniform samplerBuffer wallSegments;
+layout(binding = kSteerBindingWallStarts) uniform usamplerBuffer wallStarts;
+layout(binding = kSteerBindingWallIndices) uniform usamplerBuffer wallIndices;
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it evaluates.
@@ -61,7 +68,7 @@ float gSensing2, gDiameter2, gInvDiameter;
 // The push constants, read once before any branch or loop: inside one, lavapipe reads a push
 // constant as a gather from the constant buffer, lane by lane.
 SteerPush gPush;
-bool gBlocked, gKeepBlocked;
+bool gBlocked, gKeepBlocked, gAgentBlocked;  // the course blocked (by anything, by an agent)
 uint gDrawBlocked;
 ivec2 gForce;
 
@@ -85,6 +92,22 @@ vec2 ttcForce(vec2 x, vec2 v, float dist2) {
   float magnitude = gPush.ttcK * exp(-t * gPush.ttcInvTau0) * (2.0 + t * gPush.ttcInvTau0) / (t * t * t * max(s, 0.05 * a));
   bool approaching = b < 0.0 && a >= 1e-6 && disc > 0.0;  // else: not approaching or passing clear
   return c < 0.0 ? apart : approaching ? (x + tau * v) * magnitude : vec2(0.0);
+}
+
+// The TTC term of the static walls (Karamouzas et al. 2014 treat static obstacles by the same
+// energy over the time to collision with the obstacle): τ is when this agent's disc, moving at
+// its current velocity, first touches any wall within sensing (a capsule of its radius around
+// each segment: sides and end discs), and the force lies along that contact's normal n. Only
+// the first contact counts: the walls are one static obstacle, and a corner's second segment,
+// touched later, lies behind the first (counting it pushes agents back from convex corners).
+// With vn = −v·n the approach speed along n, |∂τ/∂x| = 1/vn, which gives
+// −∇E = k e^(-τ/τ0) (2 + τ/τ0) / (τ³ vn) n: the agents' formula, where √D is the approach speed
+// times the diameter. Floors as for agents (vn ≥ 0.05 |v|² / 2r).
+vec2 wallTtcForce(float tau, vec2 n) {
+  if (tau >= kNoWallHit) return vec2(0.0);
+  float t = max(tau, 0.1);
+  float vn = max(-dot(gVCur, n), 0.025 * dot(gVCur, gVCur) / gPush.radius);
+  return n * (gPush.ttcK * exp(-t * gPush.ttcInvTau0) * (2.0 + t * gPush.ttcInvTau0) / (t * t * t * vn));
 }
 
 ivec2 toFixed(vec2 f) { return ivec2(floor(clamp(f, -kForceTermCap, kForceTermCap) * kForceScale + 0.5)); }
@@ -122,7 +145,8 @@ void evaluate(vec4 other) {
   vec2 x = gPos - other.xy;
   if (kPolicy == kSteerPolicyRule) {
     vec2 theirs = other.zw;
-    gBlocked = gBlocked || collides(x, gVPref - theirs, gPush.lookahead, gDiameter2);
+    gAgentBlocked = gAgentBlocked || collides(x, gVPref - theirs, gPush.lookahead, gDiameter2);
+    gBlocked = gBlocked || gAgentBlocked;
     gKeepBlocked = gKeepBlocked || collides(x, gKeep - theirs, gPush.lookahead, gDiameter2);
     for (uint d = 0u; d < kRuleDraws; ++d)
       if (collides(x, gDraws[d] - theirs, gPush.lookahead, gDiameter2)) gDrawBlocked |= 1u << d;
@@ -241,6 +265,49 @@ void scanNeighbours(bool pending, ivec2 cell) {
   gMine = false;
 }
 
+// The segments of this agent's wall cell, each a neighbour that never moves: under TTC the
+// first contact with any of them (wallTtcForce); under the rule its closest point, of no size, blocks the courses that come
+// within the radius of it (the rule's own test, with the wall's zero velocity). Per lane, no
+// subgroup sharing: a cell lists a handful of segments.
+void scanWalls() {
+  WallGridInfo info = wallInfo;
+  uint cell = wallCell(gPos, info);
+  bool inGrid = cell != 0xFFFFFFFFu;
+  uint begin = inGrid ? texelFetch(wallStarts, int(cell)).x : 0u;
+  uint end = inGrid ? texelFetch(wallStarts, int(cell + 1u)).x : 0u;
+  float r2 = gPush.radius * gPush.radius;
+  float firstTau = kNoWallHit;
+  vec2 firstNormal = vec2(0.0);
+  for (uint k = begin; k < end; ++k) {
+    vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(k)).x));
+    if (kPolicy == kSteerPolicyRule) {
+      vec2 x = gPos - closestOnSegment(gPos, s.xy, s.zw);
+      if (dot(x, x) >= gSensing2) continue;
+      gBlocked = gBlocked || collides(x, gVPref, gPush.lookahead, r2);
+      gKeepBlocked = gKeepBlocked || collides(x, gKeep, gPush.lookahead, r2);
+      for (uint d = 0u; d < kRuleDraws; ++d)
+        if (collides(x, gDraws[d], gPush.lookahead, r2)) gDrawBlocked |= 1u << d;
+    } else {
+      // Closer than the radius (only before the wall constraint first ran): pushed straight
+      // out, like overlapping agents; else a candidate for the first contact.
+      vec2 off = gPos - closestOnSegment(gPos, s.xy, s.zw);
+      float d2 = dot(off, off);
+      if (d2 >= gSensing2) continue;
+      if (d2 < r2) {
+        if (d2 > 1e-8) gForce += toFixed(off * (gPush.ttcMaxForce * (inversesqrt(d2) - 1.0 / gPush.radius)));
+        continue;
+      }
+      vec2 n;
+      float tau = segmentHit(gPos, gVCur, s.xy, s.zw, gPush.radius, n);
+      if (tau < firstTau) {
+        firstTau = tau;
+        firstNormal = n;
+      }
+    }
+  }
+  if (kPolicy == kSteerPolicyTtc) gForce += toFixed(wallTtcForce(firstTau, firstNormal));
+}
+
 void main() {
   gPush = push;
   uint slot = gl_GlobalInvocationID.x;
@@ -266,6 +333,7 @@ void main() {
   gInvDiameter = 0.5 / gPush.radius;
   gBlocked = false;
   gKeepBlocked = false;
+  gAgentBlocked = false;
   gDrawBlocked = 0u;
   gForce = ivec2(0);
 
@@ -281,6 +349,7 @@ void main() {
     }
   }
   if (kPolicy != kSteerPolicyNone) scanNeighbours(isActive, cellCoord(gPos, vec2(gPush.invCellX, gPush.invCellZ)));
+  if (kPolicy != kSteerPolicyNone && kWalls != 0u && isActive) scanWalls();
   if (!isActive) {
     if (valid) steerWords[i] = u64vec2(0ul);
     return;
@@ -306,6 +375,11 @@ void main() {
           v = gDraws[d - 1u];
           flags = kSteerFlagTurned;
         }
+      }
+      // Blocked by walls alone: the course, which the wall constraint slides along them.
+      if (flags != kSteerFlagTurned && !gAgentBlocked) {
+        v = gVPref;
+        flags = 0u;
       }
     }
   } else if (kPolicy == kSteerPolicyTtc) {

@@ -38,17 +38,30 @@ const uint kSteerBindingSortedIndex = 5u;  // texels
 const uint kSteerBindingSorted = 6u;       // texels
 const uint kSteerBindingPlacementTexels = 7u;
 const uint kSteerBindingSteerTexels = 8u;
+const uint kSteerBindingWallInfo = 9u;       // uniform WallGridInfo
+const uint kSteerBindingWallSegments = 10u;  // texels (a.x, a.z, b.x, b.z)
+const uint kSteerBindingWallStarts = 11u;    // texels
+const uint kSteerBindingWallIndices = 12u;   // texels
 // Its specialization constants (one 32-bit value each, in this order).
 const uint kSteerConstantPolicy = 0u;  // kSteerPolicy*
 const uint kSteerConstantRange = 1u;   // grid columns scanned each side
 const uint kSteerConstantChunk = 2u;   // candidates per round
 const uint kSteerConstantRangeZ = 3u;  // grid rows scanned each side
-const uint kSteerConstantCount = 4u;
+const uint kSteerConstantWalls = 4u;   // 1: static walls are read (the bindings above), 0: not
+const uint kSteerConstantCount = 5u;
 
 // avoidance_advance.comp: position += velocity · dt.
 const uint kAdvanceBindingPlacement = 0u;
 const uint kAdvanceBindingSteer = 1u;
 const uint kAdvanceBindingGoals = 2u;
+
+// wall_constraint.comp: no agent crosses a wall or ends within its radius of one.
+const uint kWallBindingPlacement = 0u;
+const uint kWallBindingPrevious = 1u;  // texels: each agent's placement before the step
+const uint kWallBindingInfo = 2u;      // uniform WallGridInfo
+const uint kWallBindingSegments = 3u;  // texels
+const uint kWallBindingStarts = 4u;    // texels
+const uint kWallBindingIndices = 5u;   // texels
 
 // path_goals.comp: the path-vector waypoints.
 const uint kGoalsBindingAgentStart = 0u;

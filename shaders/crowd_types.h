@@ -98,6 +98,25 @@ THRONG_CROWD_STRUCT(AdvancePush) {
   float pad1;
 };
 
+// Static walls (crowd/obstacles.h): segments binned once into a grid of their own. Cell (c, r)
+// covers origin + [c, c+1) × [r, r+1) / invCell and lists every segment within `reach` of it,
+// so an agent reads one cell's list: segments[k] = (a.x, a.z, b.x, b.z) for the k in
+// indices[starts[cell] .. starts[cell + 1]). A uniform block, read once per invocation.
+THRONG_CROWD_STRUCT(WallGridInfo) {
+  vec4 frame;  // (origin x, origin z, 1 / cell size, reach)
+  uvec4 size;  // (columns, rows, segments, 0); columns = 0: no walls
+};
+const float kWallSkin = 1.0e-4;  // metres the constraint keeps beyond the radius (obstacles.h)
+const uint kWallContacts = 3u;   // contacts a move slides along before it stops at the last
+
+// Push constants of the wall constraint (agents [first, first + count)).
+THRONG_CROWD_STRUCT(WallPush) {
+  uint first;
+  uint count;
+  float radius;   // safe radius kept from every segment (plus kWallSkin)
+  float maxMove;  // reach − radius: longer moves are shortened (the cell lists end at reach)
+};
+
 // Push constants of the goal pass (path-vector waypoints for one simulated second).
 THRONG_CROWD_STRUCT(GoalPush) {
   uint agentCount;

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "crowd/avoidance_types.h"
+#include "crowd/obstacles.h"
 #include "shaders/shared_types.h"
 
 namespace throng::crowd {
@@ -172,6 +173,15 @@ glm::vec2 ttcForce(const AvoidanceParams& p, glm::vec2 x, glm::vec2 v, float dis
   return (x + tau * v) * magnitude;
 }
 
+// Mirrors wallTtcForce in shaders/avoidance_steer.comp: the TTC term of the first wall contact.
+glm::vec2 wallTtcForce(const AvoidanceParams& p, glm::vec2 v, float tau, glm::vec2 n) {
+  if (tau >= kNoWallHit) return glm::vec2(0.0f);
+  const float t = std::max(tau, 0.1f);
+  const float vn = std::max(-glm::dot(v, n), 0.025f * glm::dot(v, v) / p.radius);
+  const float invTau0 = 1.0f / p.ttcTau0;
+  return n * (p.ttcK * std::exp(-t * invTau0) * (2.0f + t * invTau0) / (t * t * t * vn));
+}
+
 // Mirrors toFixed in shaders/avoidance_steer.comp.
 glm::ivec2 toFixed(glm::vec2 f) {
   auto one = [](float v) {
@@ -205,8 +215,11 @@ const ClipSpeeds& speedSet(const std::array<ClipSpeeds, 4>& table, uint32_t agen
 
 void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& frame,
               std::span<glm::vec4> placement, std::span<glm::vec4> motion,
-              std::span<const glm::vec4> goals, std::span<glm::vec4> steer) {
+              std::span<const glm::vec4> goals, std::span<glm::vec4> steer,
+              const WallGrid* walls) {
   const size_t n = placement.size();
+  THRONG_CHECK(!walls || walls->reach >= p.sensing, "steerCpu: walls binned to ",
+               walls ? walls->reach : 0.0f, " m, the sensing distance is ", p.sensing, " m");
   THRONG_CHECK(
       motion.size() >= n && goals.size() >= n && steer.size() >= n && grid.cellOf.size() == n,
       "steerCpu: arrays of ", n, " agents expected");
@@ -241,7 +254,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
       float heading = goalHeading + (u - 0.5f) * p.gazeAngle;
       draws[d] = prefSpeed * glm::vec2(std::sin(heading), std::cos(heading));
     }
-    bool blocked = false, keepBlocked = false;
+    bool blocked = false, keepBlocked = false, agentBlocked = false;
     uint32_t drawBlocked = 0;
     glm::ivec2 force(0);
     if (p.policy != SteerPolicy::None) {
@@ -257,7 +270,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
             if (dist2 >= sensing2) continue;
             if (rule) {
               glm::vec2 theirs(other.z, other.w);
-              if (collides(x, vPref - theirs, p.lookahead, diameter2)) blocked = true;
+              if (collides(x, vPref - theirs, p.lookahead, diameter2)) blocked = agentBlocked = true;
               if (collides(x, keep - theirs, p.lookahead, diameter2)) keepBlocked = true;
               for (uint32_t d = 0; d < gpu_types::kRuleDraws; ++d)
                 if (collides(x, draws[d] - theirs, p.lookahead, diameter2)) drawBlocked |= 1u << d;
@@ -267,6 +280,37 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
           }
         }
       }
+      const uint32_t wallCell = walls ? walls->cellOf(pos) : UINT32_MAX;
+      float firstTau = kNoWallHit;
+      glm::vec2 firstNormal(0.0f);
+      for (uint32_t k = wallCell == UINT32_MAX ? 0 : walls->starts[wallCell],
+                    end = wallCell == UINT32_MAX ? 0 : walls->starts[wallCell + 1];
+           k < end; ++k) {
+        const Segment& s = walls->segments[walls->indices[k]];
+        if (!rule) {  // as scanWalls in the shader: overlaps pushed out, else the first contact
+          const glm::vec2 off = pos - closestOnSegment(pos, s.a, s.b);
+          const float d2 = glm::dot(off, off);
+          if (d2 >= sensing2) continue;
+          if (d2 < p.radius * p.radius) {
+            if (d2 > 1e-8f)
+              force += toFixed(off * (p.ttcMaxForce * (1.0f / std::sqrt(d2) - 1.0f / p.radius)));
+            continue;
+          }
+          glm::vec2 normal;
+          const float tau = segmentHit(pos, vCur, s.a, s.b, p.radius, normal);
+          if (tau < firstTau) firstTau = tau, firstNormal = normal;
+          continue;
+        }
+        // The rule: the closest point is a neighbour that never moves, of no size.
+        const glm::vec2 x = pos - closestOnSegment(pos, s.a, s.b);
+        if (glm::dot(x, x) >= sensing2) continue;
+        const float r2 = p.radius * p.radius;
+        if (collides(x, vPref, p.lookahead, r2)) blocked = true;
+        if (collides(x, keep, p.lookahead, r2)) keepBlocked = true;
+        for (uint32_t d = 0; d < gpu_types::kRuleDraws; ++d)
+          if (collides(x, draws[d], p.lookahead, r2)) drawBlocked |= 1u << d;
+      }
+      if (p.policy == SteerPolicy::Ttc) force += toFixed(wallTtcForce(p, vCur, firstTau, firstNormal));
     }
     glm::vec2 v = vPref;
     uint32_t flags = 0;
@@ -288,6 +332,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
             break;
           }
         }
+        // Blocked by walls alone: the course, which the wall constraint slides along them.
+        if (flags != gpu_types::kSteerFlagTurned && !agentBlocked) v = vPref, flags = 0;
       }
     } else if (p.policy == SteerPolicy::Ttc) {
       glm::vec2 avoid = glm::vec2(force) * (1.0f / gpu_types::kForceScale);

@@ -31,6 +31,8 @@
 
 namespace throng::crowd {
 
+struct WallGrid;  // crowd/obstacles.h
+
 enum class SteerPolicy : uint32_t { None = 0, Rule = 1, Ttc = 2 };
 // The one vocabulary of policies: "anticipatory" (time to collision), "published" (the rule)
 // and "none"; "ttc" and "rule" are accepted as aliases. Names are the first three.
@@ -115,9 +117,12 @@ std::vector<uint32_t> gridOrder(std::span<const glm::vec4> placement, glm::vec2 
 // speed, active). Agents with goal.w == 0 are inactive: steer zero, nothing else changes.
 Grid buildGridCpu(std::span<const glm::vec4> placement, std::span<const glm::vec4> steer,
                   glm::vec2 cellSize, GridTable table);
+// `walls` (optional): static segments every policy but None treats as neighbours that never
+// move (their lists must reach at least the sensing distance).
 void steerCpu(const Grid& grid, const AvoidanceParams& params, const SteerFrame& frame,
               std::span<glm::vec4> placement, std::span<glm::vec4> motion,
-              std::span<const glm::vec4> goals, std::span<glm::vec4> steer);
+              std::span<const glm::vec4> goals, std::span<glm::vec4> steer,
+              const WallGrid* walls = nullptr);
 // position += velocity · dt for active agents (the kinematic integration of `throng crowd`).
 void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer,
                 std::span<const glm::vec4> goals, float dt);

@@ -103,17 +103,28 @@ AvoidancePrograms::AvoidancePrograms(const gpu::Context& context)
       scatter(context, "avoidance_scatter.comp"),
       advance(context, "avoidance_advance.comp"),
       goals(context, "path_goals.comp"),
+      wallConstraint(context, "wall_constraint.comp"),
       context_(&context),
       chunk_(subgroupChunk(context)) {}
 
-const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, glm::ivec2 range) const {
-  std::unique_ptr<gpu::ComputeProgram>& program = steer_[{uint32_t(policy), range.x, range.y}];
+AvoidancePrograms::~AvoidancePrograms() = default;
+
+const WallBuffers& AvoidancePrograms::noWalls() const {
+  if (!noWalls_) noWalls_ = std::make_unique<WallBuffers>(uploadWalls(*context_, WallGrid{}));
+  return *noWalls_;
+}
+
+const gpu::ComputeProgram& AvoidancePrograms::steer(SteerPolicy policy, glm::ivec2 range,
+                                                    bool walls) const {
+  std::unique_ptr<gpu::ComputeProgram>& program =
+      steer_[{uint32_t(policy), range.x, range.y, walls}];
   if (!program) {
     uint32_t specialization[gpu_types::kSteerConstantCount] = {};
     specialization[gpu_types::kSteerConstantPolicy] = uint32_t(policy);
     specialization[gpu_types::kSteerConstantRange] = uint32_t(range.x);
     specialization[gpu_types::kSteerConstantChunk] = chunk_;
     specialization[gpu_types::kSteerConstantRangeZ] = uint32_t(range.y);
+    specialization[gpu_types::kSteerConstantWalls] = walls ? 1u : 0u;
     program =
         std::make_unique<gpu::ComputeProgram>(*context_, "avoidance_steer.comp", specialization);
   }
@@ -159,6 +170,60 @@ SteerBuffers uploadSteer(const gpu::Context& context, std::span<const glm::vec4>
                                               VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
   b.steerTexels = gpu::makeBufferView(context, b.steer, VK_FORMAT_R32G32B32A32_SFLOAT);
   return b;
+}
+
+WallBuffers uploadWalls(const gpu::Context& context, const WallGrid& walls) {
+  if (walls.starts.size() != size_t(walls.columns) * walls.rows + 1 && !walls.starts.empty())
+    fail("uploadWalls: ", walls.starts.size(), " cell starts for ", walls.columns, " x ",
+         walls.rows, " cells");
+  WallBuffers b;
+  b.reach = walls.reach;
+  b.segmentCount = uint32_t(walls.segments.size());
+  WallGridInfo info{};
+  info.frame = glm::vec4(walls.origin, 1.0f / walls.cellSize, walls.reach);
+  // An empty grid (no cells) keeps columns 0: every point lies outside it.
+  const bool any = !walls.starts.empty();
+  info.size = glm::uvec4(any ? walls.columns : 0u, any ? walls.rows : 0u, b.segmentCount, 0u);
+  b.info = gpu::Buffer(context, sizeof(WallGridInfo),
+                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                       gpu::MemoryUse::DeviceLocal);
+  gpu::uploadBytes(context, b.info, {reinterpret_cast<const uint8_t*>(&info), sizeof(info)});
+  static_assert(sizeof(Segment) == sizeof(glm::vec4));
+  const std::vector<uint32_t> noStarts = {0u, 0u};
+  const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+  b.segments = gpu::makeStorageBuffer<Segment>(context, walls.segments,
+                                               gpu::MemoryUse::DeviceLocal, texels);
+  b.starts = gpu::makeStorageBuffer<uint32_t>(context, any ? walls.starts : noStarts,
+                                              gpu::MemoryUse::DeviceLocal, texels);
+  b.indices = gpu::makeStorageBuffer<uint32_t>(context, walls.indices,
+                                               gpu::MemoryUse::DeviceLocal, texels);
+  b.segmentTexels = gpu::makeBufferView(context, b.segments, VK_FORMAT_R32G32B32A32_SFLOAT);
+  b.startTexels = gpu::makeBufferView(context, b.starts, VK_FORMAT_R32_UINT);
+  b.indexTexels = gpu::makeBufferView(context, b.indices, VK_FORMAT_R32_UINT);
+  return b;
+}
+
+SavedPositions makeSavedPositions(const gpu::Context& context, uint32_t capacity) {
+  SavedPositions s;
+  s.capacity = capacity;
+  s.placement = gpu::Buffer(context, std::max<VkDeviceSize>(VkDeviceSize(capacity) * 16, 16),
+                            gpu::kStorageUsage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                            gpu::MemoryUse::DeviceLocal);
+  s.texels = gpu::makeBufferView(context, s.placement, VK_FORMAT_R32G32B32A32_SFLOAT);
+  return s;
+}
+
+void recordSavePositions(VkCommandBuffer cmd, const CrowdBuffers& crowd, const SavedPositions& saved,
+                         uint32_t first, uint32_t count) {
+  if (size_t(first) + count > crowd.count || size_t(first) + count > saved.capacity)
+    fail("recordSavePositions: agents ", first, " + ", count, " of a crowd of ", crowd.count,
+         " and ", saved.capacity, " saved places");
+  if (count == 0) return;
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  const VkBufferCopy region{VkDeviceSize(first) * 16, VkDeviceSize(first) * 16,
+                            VkDeviceSize(count) * 16};
+  vkCmdCopyBuffer(cmd, crowd.placement.get(), saved.placement.get(), 1, &region);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
 }
 
 std::vector<std::string> GridJob::validate() const {
@@ -216,6 +281,12 @@ std::vector<std::string> AvoidanceJob::validate() const {
   if (!(frame.dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", frame.dt));
   if (!(frame.secondsLeft > 0.0f))
     problems.push_back(concat("secondsLeft must be > 0, got ", frame.secondsLeft));
+  if (walls && !(walls->reach >= params.sensing))
+    problems.push_back(concat("the walls were binned to reach ", walls->reach,
+                              " m, less than the sensing distance ", params.sensing, " m"));
+  if (walls && (!walls->info || !walls->segmentTexels || !walls->startTexels ||
+                !walls->indexTexels))
+    problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   return problems;
 }
 
@@ -247,6 +318,7 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
     push.setSlow[k] = sets[size_t(k)].slow;
     push.setFast[k] = sets[size_t(k)].fast;
   }
+  const WallBuffers& w = walls ? *walls : programs.noWalls();
   const gpu::Binding bindings[] = {
       gpu::storageBinding(gpu_types::kSteerBindingPlacement, crowd->placement),
       gpu::storageBinding(gpu_types::kSteerBindingMotion, crowd->motion),
@@ -256,9 +328,13 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
       gpu::uniformTexelBinding(gpu_types::kSteerBindingSortedIndex, grid->sortedIndexTexels),
       gpu::uniformTexelBinding(gpu_types::kSteerBindingSorted, grid->sortedTexels),
       gpu::uniformTexelBinding(gpu_types::kSteerBindingPlacementTexels, crowd->placementTexels),
-      gpu::uniformTexelBinding(gpu_types::kSteerBindingSteerTexels, agents->steerTexels)};
-  gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params)), bindings, push,
-                crowd->count);
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingSteerTexels, agents->steerTexels),
+      gpu::uniformBinding(gpu_types::kSteerBindingWallInfo, w.info),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingWallSegments, w.segmentTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingWallStarts, w.startTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingWallIndices, w.indexTexels)};
+  gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params), walls != nullptr), bindings,
+                push, crowd->count);
 }
 
 std::vector<std::string> AdvanceJob::validate() const {
@@ -278,6 +354,53 @@ void AdvanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) 
       gpu::storageBinding(gpu_types::kAdvanceBindingSteer, agents->steer),
       gpu::storageBinding(gpu_types::kAdvanceBindingGoals, agents->goals)};
   gpu::dispatch(cmd, programs.advance, bindings, push, crowd->count);
+}
+
+uint32_t WallConstraintJob::agents() const {
+  if (count != UINT32_MAX || !crowd) return count;
+  return crowd->count > firstCharacter ? crowd->count - firstCharacter : 0u;
+}
+
+std::vector<std::string> WallConstraintJob::validate() const {
+  std::vector<std::string> problems;
+  if (!crowd) problems.push_back("input 'crowd' buffers are missing");
+  if (!previous) problems.push_back("input 'previous' (saved positions) is missing");
+  if (!walls) problems.push_back("input 'walls' is missing");
+  if (!crowd || !previous || !walls) return problems;
+  const uint64_t end = uint64_t(firstCharacter) + agents();
+  if (end > crowd->count)
+    problems.push_back(concat("characters ", firstCharacter, " + ", agents(),
+                              " run past the crowd's ", crowd->count));
+  requireBuffer(problems, crowd->placement, VkDeviceSize(crowd->count) * 16, "placement");
+  if (end > previous->capacity || !previous->texels)
+    problems.push_back(concat("the saved positions hold ", previous->capacity,
+                              " agents, characters up to ", end, " are constrained"));
+  if (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->indexTexels)
+    problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
+  if (!(radius > 0.0f) || !std::isfinite(radius))
+    problems.push_back(concat("radius must be positive, got ", radius));
+  else if (!(walls->reach > radius))
+    problems.push_back(concat("the walls were binned to reach ", walls->reach,
+                              " m, not more than the radius ", radius, " m"));
+  return problems;
+}
+
+void WallConstraintJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
+  gpu::throwIfInvalid("WallConstraintJob", validate());
+  WallPush push{};
+  push.first = firstCharacter;
+  push.count = agents();
+  push.radius = radius;
+  push.maxMove = walls->reach - radius;
+  if (push.count == 0) return;
+  const gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kWallBindingPlacement, crowd->placement),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingPrevious, previous->texels),
+      gpu::uniformBinding(gpu_types::kWallBindingInfo, walls->info),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingSegments, walls->segmentTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingStarts, walls->startTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingIndices, walls->indexTexels)};
+  gpu::dispatch(cmd, programs.wallConstraint, bindings, push, push.count);
 }
 
 }  // namespace throng::crowd

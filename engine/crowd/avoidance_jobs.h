@@ -13,6 +13,7 @@
 
 #include "crowd/avoidance.h"
 #include "crowd/crowd.h"
+#include "crowd/obstacles.h"
 #include "gpu/program.h"
 #include "gpu/timestamps.h"
 
@@ -21,18 +22,47 @@ namespace throng::crowd {
 // The compiled passes. The steering pass is specialized per (policy, neighbour range), built
 // on first use; subgroups of at least 4 lanes with vote, arithmetic and ballot are required
 // (lavapipe: 8; every desktop GPU has them).
+struct WallBuffers;
+
 class AvoidancePrograms {
  public:
   explicit AvoidancePrograms(const gpu::Context& context);
-  gpu::ComputeProgram count, scan, scatter, advance, goals;
-  const gpu::ComputeProgram& steer(SteerPolicy policy, glm::ivec2 range) const;
+  ~AvoidancePrograms();
+  gpu::ComputeProgram count, scan, scatter, advance, goals, wallConstraint;
+  const gpu::ComputeProgram& steer(SteerPolicy policy, glm::ivec2 range, bool walls = false) const;
   uint32_t chunk() const { return chunk_; }  // candidates shared per subgroup round
+  // Empty walls, bound where a pass runs without walls (every declared binding must be given).
+  const WallBuffers& noWalls() const;
 
  private:
   const gpu::Context* context_;
   uint32_t chunk_ = 8;
-  mutable std::map<std::tuple<uint32_t, int, int>, std::unique_ptr<gpu::ComputeProgram>> steer_;
+  mutable std::map<std::tuple<uint32_t, int, int, bool>, std::unique_ptr<gpu::ComputeProgram>>
+      steer_;
+  mutable std::unique_ptr<WallBuffers> noWalls_;
 };
+
+// A WallGrid on the GPU: its frame as a uniform block, segments (RGBA32F), starts and indices
+// (R32UI) as texels. Uploaded once: walls do not move.
+struct WallBuffers {
+  gpu::Buffer info, segments, starts, indices;
+  gpu::Handle<VkBufferView> segmentTexels, startTexels, indexTexels;
+  float reach = 0.0f;  // the grid's lists hold every segment within this of their cell
+  uint32_t segmentCount = 0;
+};
+WallBuffers uploadWalls(const gpu::Context& context, const WallGrid& walls);
+
+// Each agent's placement before a step, the input of WallConstraintJob (RGBA32F texels).
+struct SavedPositions {
+  gpu::Buffer placement;
+  gpu::Handle<VkBufferView> texels;
+  uint32_t capacity = 0;
+};
+SavedPositions makeSavedPositions(const gpu::Context& context, uint32_t capacity);
+// Copies the placement of agents [first, first + count) into `saved` (a transfer; barriers from
+// earlier compute writes and to later compute reads).
+void recordSavePositions(VkCommandBuffer cmd, const CrowdBuffers& crowd, const SavedPositions& saved,
+                         uint32_t first, uint32_t count);
 
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
 struct GridBuffers {
@@ -82,6 +112,8 @@ struct AvoidanceJob {
   const GridBuffers* grid = nullptr;     // input: built this step by GridJob
   AvoidanceParams params;
   SteerFrame frame;
+  // Optional static walls (reach >= params.sensing), neighbours that never move.
+  const WallBuffers* walls = nullptr;
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
@@ -93,6 +125,24 @@ struct AdvanceJob {
   const SteerBuffers* agents = nullptr;  // input: steer, goals
   float dt = 0.0f;
 
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
+};
+
+// The hard guarantee of static walls (shaders/wall_constraint.comp; twin: wallConstraintCpu):
+// each agent of [firstCharacter, firstCharacter + count) moved from `previous` to its placement
+// now is stopped at its first contact with a wall and slid along it, so no agent crosses a
+// segment or ends within `radius` of one. Record it after whatever moved the agents (AdvanceJob,
+// or root motion), with recordSavePositions before that move; only placement.xz changes.
+struct WallConstraintJob {
+  const CrowdBuffers* crowd = nullptr;       // input/output: placement
+  const SavedPositions* previous = nullptr;  // input: placement before the move
+  const WallBuffers* walls = nullptr;
+  float radius = 0.3f;
+  uint32_t firstCharacter = 0;
+  uint32_t count = UINT32_MAX;  // UINT32_MAX: to the end of the crowd
+
+  uint32_t agents() const;  // count resolved
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "core/error.h"
 #include "crowd/avoidance_jobs.h"
@@ -32,13 +33,38 @@ struct GpuRun {
   SteerBuffers agents;
   GridBuffers grid;
 
+  std::unique_ptr<WallBuffers> walls;  // with walls: the segments and each step's start
+  SavedPositions previous;
+
   GpuRun(const gpu::Context& ctx, const Crowd& c, std::span<const glm::vec4> goals,
-         std::span<const glm::vec4> steer, glm::vec2 cellSize)
+         std::span<const glm::vec4> steer, glm::vec2 cellSize, const WallGrid* wallGrid)
       : context(ctx),
         programs(ctx),
         crowd(uploadCrowd(ctx, c)),
         agents(uploadSteer(ctx, goals, steer)),
-        grid(makeGridBuffers(ctx, uint32_t(c.size()), cellSize)) {}
+        grid(makeGridBuffers(ctx, uint32_t(c.size()), cellSize)) {
+    if (!wallGrid) return;
+    walls = std::make_unique<WallBuffers>(uploadWalls(ctx, *wallGrid));
+    previous = makeSavedPositions(ctx, uint32_t(c.size()));
+  }
+
+  // Grid, steering, advance and (with walls) the wall constraint of one step.
+  void record(VkCommandBuffer cmd, const AvoidanceParams& avoidance, const SteerFrame& frame,
+              float radius) {
+    GridJob gridJob{&crowd, &agents, &grid};
+    AvoidanceJob avoid{&crowd, &agents, &grid, avoidance, frame, walls.get()};
+    AdvanceJob advance{&crowd, &agents, frame.dt};
+    gridJob.record(cmd, programs);
+    gpu::computeToComputeBarrier(cmd);
+    avoid.record(cmd, programs);
+    gpu::computeToComputeBarrier(cmd);
+    if (walls) recordSavePositions(cmd, crowd, previous, 0, crowd.count);
+    advance.record(cmd, programs);
+    if (!walls) return;
+    gpu::computeToComputeBarrier(cmd);
+    WallConstraintJob constrain{&crowd, &previous, walls.get(), radius};
+    constrain.record(cmd, programs);
+  }
 
   template <typename T>
   void upload(const gpu::Buffer& buffer, std::span<const T> data) {
@@ -57,6 +83,10 @@ uint32_t nextArrival(const AgentPaths& paths, uint32_t s) {
 }
 
 }  // namespace
+
+WallGrid binWallsFor(const Obstacles& walls, const AvoidanceParams& avoidance) {
+  return binObstacles(walls, avoidance.sensing, std::max(avoidance.sensing, 2.0f * avoidance.radius));
+}
 
 std::vector<float> expectedSpeeds(const AgentPaths& paths, uint32_t seconds) {
   std::vector<float> speeds;
@@ -113,6 +143,10 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
     fail("body radius ", options.bodyRadius, " m: expected 0 < radius <= 10 m");
   CollisionCounter collisions(options.bodyRadius), intrusions(options.avoidance.radius);
   std::unique_ptr<GpuRun> gpuRun;
+  std::optional<WallGrid> walls;
+  if (options.walls) walls = binWallsFor(*options.walls, options.avoidance);
+  const WallGrid* wallGrid = walls ? &*walls : nullptr;
+  std::vector<glm::vec4> previous;
   const auto started = std::chrono::steady_clock::now();
 
   for (uint32_t s = 0; s < seconds; ++s) {
@@ -151,8 +185,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
     writeGoals(paths, s, goals);
     if (context) {
       if (!gpuRun) {
-        gpuRun =
-            std::make_unique<GpuRun>(*context, crowd, goals, steer, options.avoidance.cellSize);
+        gpuRun = std::make_unique<GpuRun>(*context, crowd, goals, steer,
+                                          options.avoidance.cellSize, wallGrid);
       } else {
         gpuRun->upload<glm::vec4>(gpuRun->agents.goals, goals);
         if (changed) {
@@ -171,23 +205,20 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
       frame.slowSpeed = options.slowSpeed;
       frame.fastSpeed = options.fastSpeed;
       if (gpuRun) {
-        GpuRun& g = *gpuRun;
-        GridJob grid{&g.crowd, &g.agents, &g.grid};
-        AvoidanceJob avoid{&g.crowd, &g.agents, &g.grid, options.avoidance, frame};
-        AdvanceJob advance{&g.crowd, &g.agents, dt};
         gpu::submitAndWait(*context, [&](VkCommandBuffer cmd) {
-          grid.record(cmd, g.programs);
-          gpu::computeToComputeBarrier(cmd);
-          avoid.record(cmd, g.programs);
-          gpu::computeToComputeBarrier(cmd);
-          advance.record(cmd, g.programs);
+          gpuRun->record(cmd, options.avoidance, frame, options.avoidance.radius);
         });
-        crowd.placement = gpu::readback<glm::vec4>(*context, g.crowd.placement, n);
+        crowd.placement = gpu::readback<glm::vec4>(*context, gpuRun->crowd.placement, n);
       } else {
         Grid grid = buildGridCpu(crowd.placement, steer, options.avoidance.cellSize,
                                  gridTable(uint32_t(n)));
-        steerCpu(grid, options.avoidance, frame, crowd.placement, crowd.motion, goals, steer);
+        steerCpu(grid, options.avoidance, frame, crowd.placement, crowd.motion, goals, steer,
+                 wallGrid);
+        if (wallGrid) previous = crowd.placement;
         advanceCpu(crowd.placement, steer, goals, dt);
+        if (wallGrid)
+          wallConstraintCpu(*wallGrid, options.avoidance.radius, previous, crowd.placement, 0,
+                            uint32_t(n));
       }
       collisions.addStep(crowd.placement, active, dt);
       intrusions.addStep(crowd.placement, active, dt);

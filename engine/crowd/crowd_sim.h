@@ -16,6 +16,7 @@
 #include "crowd/avoidance.h"
 #include "crowd/crowd.h"
 #include "crowd/crowd_metrics.h"
+#include "crowd/obstacles.h"
 #include "crowd/path_vectors.h"
 #include "gpu/context.h"
 
@@ -48,7 +49,14 @@ struct SimulationOptions {
   float slowSpeed = 0.0f;  // clip pair root speeds (speed → motion.z); 0, 0: leave motion.z
   float fastSpeed = 0.0f;
   StepObserver* observer = nullptr;  // optional, not owned
+  // Optional static walls, not owned: both policies steer around them, and after each advance
+  // the wall constraint keeps every agent off them (no crossing, never within the safe radius).
+  const Obstacles* walls = nullptr;
 };
+
+// The binning of walls for a run: cells and reach of the sensing distance (the steering pass
+// sees every segment within sensing; a step may move an agent up to sensing − radius).
+WallGrid binWallsFor(const Obstacles& walls, const AvoidanceParams& avoidance);
 
 struct SimulationResult {
   CrowdMetrics metrics;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "crowd/crowd_sim.h"
 #include "gpu/commands.h"
 
 namespace throng::crowd {
@@ -23,6 +24,10 @@ CrowdSteering::CrowdSteering(const gpu::Context& context, const AgentPaths& path
   agents_ = uploadSteer(context, goals, steer);
   grid_ = makeGridBuffers(context, count_, avoidance_.cellSize);
   paths_ = uploadPaths(context, paths);
+}
+
+void CrowdSteering::setWalls(const gpu::Context& context, const Obstacles& walls) {
+  walls_ = std::make_unique<WallBuffers>(uploadWalls(context, binWallsFor(walls, avoidance_)));
 }
 
 SteerStep CrowdSteering::advance(float dt) {
@@ -50,7 +55,8 @@ void CrowdSteering::record(VkCommandBuffer cmd, const CrowdBuffers& crowd,
   }
   GridJob{&crowd, &agents_, &grid_}.record(cmd, programs_);
   gpu::computeToComputeBarrier(cmd);
-  AvoidanceJob{&crowd, &agents_, &grid_, avoidance_, step.frame}.record(cmd, programs_);
+  AvoidanceJob{&crowd, &agents_, &grid_, avoidance_, step.frame, walls_.get()}.record(cmd,
+                                                                                     programs_);
   gpu::computeToComputeBarrier(cmd);
 }
 

@@ -4,6 +4,7 @@
 // heading and speed weight into the crowd's buffers for the root-motion pass to take up. Used
 // by storyboard crowds and the circle scene's lanes; the state of the simulated clock lives here.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "crowd/avoidance_jobs.h"
@@ -30,6 +31,13 @@ class CrowdSteering {
   // motion's speed weights written); barriers before and after.
   void record(VkCommandBuffer cmd, const CrowdBuffers& crowd, const SteerStep& step) const;
 
+  // Static walls both policies steer around from the next step on (binned as binWallsFor in
+  // crowd_sim.h); the render path keeps agents off them with WallConstraintJob over walls()
+  // after root motion. Throws Error for invalid walls.
+  void setWalls(const gpu::Context& context, const Obstacles& walls);
+  const WallBuffers* walls() const { return walls_.get(); }  // null: none
+  const AvoidancePrograms& programs() const { return programs_; }
+
   double seconds() const { return time_; }
   uint32_t count() const { return count_; }
   const AvoidanceParams& avoidance() const { return avoidance_; }
@@ -41,6 +49,7 @@ class CrowdSteering {
   SteerBuffers agents_;
   GridBuffers grid_;
   PathBuffers paths_;
+  std::unique_ptr<WallBuffers> walls_;
   std::vector<ClipSpeeds> speeds_;
   double time_ = 0.0;
   uint32_t step_ = 0;
