@@ -278,11 +278,14 @@ void scanWalls() {
   float r2 = gPush.radius * gPush.radius;
   float firstTau = kNoWallHit;
   vec2 firstNormal = vec2(0.0);
+  float ruleReach = gPush.radius + length(gVPref) * gPush.lookahead;
   for (uint k = begin; k < end; ++k) {
     vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(k)).x));
     if (kPolicy == kSteerPolicyRule) {
       vec2 x = gPos - closestOnSegment(gPos, s.xy, s.zw);
-      if (dot(x, x) >= gSensing2) continue;
+      // Every course runs at the preferred speed: none comes within r of a point farther than
+      // r + speed · lookahead (the same screen as the twin's, so both decide alike).
+      if (dot(x, x) >= gSensing2 || dot(x, x) > ruleReach * ruleReach) continue;
       gBlocked = gBlocked || collides(x, gVPref, gPush.lookahead, r2);
       gKeepBlocked = gKeepBlocked || collides(x, gKeep, gPush.lookahead, r2);
       for (uint d = 0u; d < kRuleDraws; ++d)

@@ -31,12 +31,16 @@ vec2 constrainMove(vec2 from, vec2 to, WallPush pc, WallGridInfo info) {
   uint begin = texelFetch(wallStarts, int(cell)).x;
   uint end = texelFetch(wallStarts, int(cell + 1u)).x;
   float r = pc.radius + kWallSkin;
+  // Segments farther than r + |m| from the start cannot be touched by any slide of this move.
+  float screen = r + length(m);
   vec2 p = from;
   for (uint contact = 0u; contact < kWallContacts; ++contact) {
     float first = kNoWallHit;
     vec2 normal = vec2(0.0);
     for (uint k = begin; k < end; ++k) {
       vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(k)).x));
+      vec2 off = from - closestOnSegment(from, s.xy, s.zw);
+      if (dot(off, off) > screen * screen) continue;
       vec2 n;
       float t = segmentHit(p, m, s.xy, s.zw, r, n);
       if (t < first) {

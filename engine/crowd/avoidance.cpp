@@ -303,7 +303,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
         }
         // The rule: the closest point is a neighbour that never moves, of no size.
         const glm::vec2 x = pos - closestOnSegment(pos, s.a, s.b);
-        if (glm::dot(x, x) >= sensing2) continue;
+        const float ruleReach = p.radius + glm::length(vPref) * p.lookahead;  // screen as the GPU
+        if (glm::dot(x, x) >= sensing2 || glm::dot(x, x) > ruleReach * ruleReach) continue;
         const float r2 = p.radius * p.radius;
         if (collides(x, vPref, p.lookahead, r2)) blocked = true;
         if (collides(x, keep, p.lookahead, r2)) keepBlocked = true;

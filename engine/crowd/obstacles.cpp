@@ -213,12 +213,15 @@ glm::vec2 constrainMove(const WallGrid& walls, glm::vec2 from, glm::vec2 to, flo
   if (shortened) m *= maxMove / length;
   if (cell == UINT32_MAX) return shortened ? from + m : to;
   const float r = radius + kWallSkin;
+  const float screen = r + glm::length(m);  // no slide of this move reaches farther segments
   glm::vec2 p = from;
   for (int contact = 0; contact < 3; ++contact) {
     float first = kNoWallHit;
     glm::vec2 normal(0.0f);
     for (uint32_t k = walls.starts[cell]; k < walls.starts[cell + 1]; ++k) {
       const Segment& s = walls.segments[walls.indices[k]];
+      const glm::vec2 off = from - closestOnSegment(from, s.a, s.b);
+      if (glm::dot(off, off) > screen * screen) continue;
       glm::vec2 n;
       const float t = segmentHit(p, m, s.a, s.b, r, n);
       if (t < first) first = t, normal = n;
