@@ -19,6 +19,7 @@
 #include "crowd/crowd_sim.h"
 #include "crowd/trajectories.h"
 #include "crowd/trajectory_writer.h"
+#include "crowd/walls_file.h"
 #include "gpu/context.h"
 #include "scene_storyboard.h"
 #include "storyboard/codec.h"
@@ -125,7 +126,7 @@ void printRun(crowd::SteerPolicy policy, const crowd::SimulationResult& r) {
 }
 
 struct SimulateArgs {
-  std::string storyboard, trajectories, legend, trajectoriesOut;
+  std::string storyboard, trajectories, legend, trajectoriesOut, walls;
   float cell = 0.5f, jitter = 0.1f;
   RunOptions run;
 };
@@ -195,6 +196,8 @@ void runSimulate(const SimulateArgs& a) {
   setup.paths = crowd::followSources(setup.crowd, sources, assigned, maxSpeed);
 
   const std::vector<crowd::SteerPolicy> policies = a.run.parsedPolicies();
+  std::optional<crowd::Obstacles> walls;
+  if (!a.walls.empty()) walls = crowd::loadWalls(a.walls);
   std::unique_ptr<TrajectoryRecorder> recorder = makeRecorder(a, policies, placed);
   std::unique_ptr<gpu::Context> context = makeContext(a.run);
   nlohmann::json doc;
@@ -205,17 +208,21 @@ void runSimulate(const SimulateArgs& a) {
   doc["agents"] = board.glyphs.size();
   doc["invalid_glyphs"] = board.invalid.size();
   doc["sources"] = sources.size();
+  if (walls) doc["wall_segments"] = walls->segments.size();
   doc["device"] = context ? context->info().name : std::string("cpu twin");
   if (!a.run.json)
     std::printf(
         "%s: %zu agents (%zu invalid glyphs skipped) following %zu tracked people of %s, on %s\n",
         a.storyboard.c_str(), board.glyphs.size(), board.invalid.size(), sources.size(),
         a.trajectories.c_str(), doc["device"].get<std::string>().c_str());
+  if (walls && !a.run.json)
+    std::printf("walls: %zu segments from %s\n", walls->segments.size(), a.walls.c_str());
   for (crowd::SteerPolicy policy : policies) {
     crowd::SimulationOptions options = a.run.simulation(policy);
     options.slowSpeed = placeOptions.slowSpeed;
     options.fastSpeed = placeOptions.fastSpeed;
     options.observer = recorder.get();
+    options.walls = walls ? &*walls : nullptr;
     crowd::SimulationResult result = crowd::simulateCrowd(context.get(), setup, options);
     if (a.run.json)
       doc["runs"].push_back(runJson(policy, result));
@@ -248,6 +255,10 @@ void addSimulate(CLI::App& parent) {
                   "Every agent's position per simulated step: FILE.txt in PedPy's 'id frame x y z' "
                   "(metres, x y = engine x z) or FILE.csv with time, heading, speed, group and "
                   "state (one --policy)");
+  cmd->add_option("--walls", args->walls,
+                  "Static walls: polylines, polygons and walkable rasters in metres, scene "
+                  "coordinates (docs/formats.md, Walls); agents steer around them and never cross "
+                  "them or come within --radius of them");
   args->run.add(cmd,
                 "Avoidance: anticipatory, published, none or all (default anticipatory; ttc and "
                 "rule are aliases)");
@@ -327,7 +338,15 @@ struct BenchArgs {
   float density = 0.5f;
   std::string numbering = "grid";
   std::string device;
+  bool walls = false;
 };
+
+void printBenchRow(const std::string& name, uint32_t n, const crowd::AvoidanceTiming& t) {
+  std::printf("%-8s %9u %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %8.2f\n",
+              name.c_str(), n, t.countMs, t.scanMs, t.scatterMs, t.gridMs, t.steerMs, t.totalMs,
+              t.moveMs, t.cpuMs, t.cpuMs / std::max(t.totalMs, 1e-6));
+  std::fflush(stdout);
+}
 
 void addBench(CLI::App& parent) {
   auto* cmd = parent.add_subcommand(
@@ -347,6 +366,9 @@ void addBench(CLI::App& parent) {
                   "random (default grid)")
       ->check(oneOf("numbering", {"grid", "random"}));
   cmd->add_option("--device", args->device, "Vulkan device by index or name");
+  cmd->add_flag("--walls", args->walls,
+                "Also time each row with walls (2 x 2 m boxes every 10 m, steering and the wall "
+                "constraint), in the same run, and print the ratio");
   cmd->callback([args] {
     const crowd::BenchNumbering numbering =
         args->numbering == "grid" ? crowd::BenchNumbering::Grid : crowd::BenchNumbering::Random;
@@ -357,20 +379,28 @@ void addBench(CLI::App& parent) {
     options.device = args->device;
     gpu::Context context(options);
     std::printf(
-        "device: %s (%s), agents numbered %s\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %8s\n",
+        "device: %s (%s), agents numbered %s\n%-8s %9s %10s %10s %10s %10s %10s %10s %10s %10s "
+        "%8s\n",
         context.info().name.c_str(), context.info().driver.c_str(),
         numbering == crowd::BenchNumbering::Grid ? "in grid order" : "at random", "policy",
-        "agents", "count ms", "scan ms", "scatter ms", "grid ms", "steer ms", "total ms", "cpu ms",
-        "cpu/gpu");
+        "agents", "count ms", "scan ms", "scatter ms", "grid ms", "steer ms", "total ms", "move ms",
+        "cpu ms", "cpu/gpu");
     for (crowd::SteerPolicy policy : policies)
       for (uint32_t n : args->agents) {
         crowd::AvoidanceParams params;
         params.policy = policy;
+        const std::string name(policyName(policy));
         crowd::AvoidanceTiming t =
             crowd::benchmarkAvoidance(context, n, params, args->steps, args->density, numbering);
-        std::printf("%-8s %9u %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %10.3f %8.2f\n",
-                    std::string(policyName(policy)).c_str(), n, t.countMs, t.scanMs, t.scatterMs,
-                    t.gridMs, t.steerMs, t.totalMs, t.cpuMs, t.cpuMs / std::max(t.totalMs, 1e-6));
+        printBenchRow(name, n, t);
+        if (!args->walls) continue;
+        crowd::AvoidanceTiming w = crowd::benchmarkAvoidance(context, n, params, args->steps,
+                                                             args->density, numbering, true);
+        printBenchRow(name + "+w", n, w);
+        // The step with walls (grid, steering, advance, wall constraint) over the one without.
+        std::printf("  walls: %u segments (boxes), step %.3f ms vs %.3f ms: %.2fx\n",
+                    w.wallSegments, w.totalMs + w.moveMs, t.totalMs + t.moveMs,
+                    (w.totalMs + w.moveMs) / std::max(t.totalMs + t.moveMs, 1e-6));
         std::fflush(stdout);
       }
   });

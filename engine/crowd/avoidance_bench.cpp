@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/error.h"
 #include "core/math.h"
 #include "core/rng.h"
 #include "crowd/avoidance_jobs.h"
+#include "crowd/crowd_sim.h"
 #include "gpu/commands.h"
 #include "gpu/timestamps.h"
 
@@ -31,25 +34,43 @@ SteerFrame benchFrame(int s) {
 // The CPU twin (one thread) over the same steps from the same start: grid + steering, median ms.
 double cpuTwinStepMs(std::vector<glm::vec4> placement, std::vector<glm::vec4> steer,
                      const std::vector<glm::vec4>& goals, const GridTable& table,
-                     const AvoidanceParams& params, int steps, int warmup) {
+                     const AvoidanceParams& params, int steps, int warmup, const WallGrid* walls) {
   std::vector<glm::vec4> motion(placement.size(), glm::vec4(0.0f));
   std::vector<double> ms;
   for (int s = 0; s < warmup + steps; ++s) {
     SteerFrame frame = benchFrame(s);
     auto begin = std::chrono::steady_clock::now();
     Grid grid = buildGridCpu(placement, steer, params.cellSize, table);
-    steerCpu(grid, params, frame, placement, motion, goals, steer);
+    steerCpu(grid, params, frame, placement, motion, goals, steer, walls);
     auto end = std::chrono::steady_clock::now();
     if (s >= warmup) ms.push_back(std::chrono::duration<double, std::milli>(end - begin).count());
+    const std::vector<glm::vec4> previous = placement;
     advanceCpu(placement, steer, goals, frame.dt);
+    if (walls)
+      wallConstraintCpu(*walls, params.radius, previous, placement, 0, uint32_t(placement.size()));
   }
   return median(ms);
 }
+bool nearBox(glm::vec2 p, float half) {
+  const glm::vec2 local = glm::mod(p + half, 10.0f) - 5.0f;
+  return std::abs(local.x) < 1.5f && std::abs(local.y) < 1.5f;
+}
 }  // namespace
+
+Obstacles benchBoxes(float half) {
+  Obstacles o;
+  for (float x = -half + 5.0f; x < half; x += 10.0f)
+    for (float z = -half + 5.0f; z < half; z += 10.0f) {
+      const glm::vec2 box[] = {
+          {x - 1.0f, z - 1.0f}, {x + 1.0f, z - 1.0f}, {x + 1.0f, z + 1.0f}, {x - 1.0f, z + 1.0f}};
+      o.addPolyline(box, true);
+    }
+  return o;
+}
 
 AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
                                    const AvoidanceParams& params, int steps, float density,
-                                   BenchNumbering numbering) {
+                                   BenchNumbering numbering, bool walls) {
   if (agents == 0 || steps < 1 || !(density > 0.0f))
     fail("benchmark needs agents, steps and a positive density");
   Crowd crowd;
@@ -59,6 +80,7 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
   const float half = 0.5f * std::sqrt(float(agents) / density);
   for (uint32_t i = 0; i < agents; ++i) {
     glm::vec2 p(rng.uniform(-half, half), rng.uniform(-half, half));
+    while (walls && nearBox(p, half)) p = {rng.uniform(-half, half), rng.uniform(-half, half)};
     float heading = rng.uniform(-kPi, kPi);
     glm::vec2 dir(std::sin(heading), std::cos(heading));
     crowd.placement[i] = glm::vec4(p.x, 0.0f, p.y, heading);
@@ -79,6 +101,14 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     steer = std::move(steerInOrder);
   }
   const std::vector<glm::vec4> startPlacement = crowd.placement, startSteer = steer;
+  std::optional<WallGrid> wallGrid;
+  std::unique_ptr<WallBuffers> wallBuffers;
+  SavedPositions previous;
+  if (walls) {
+    wallGrid = binWallsFor(benchBoxes(half), params);
+    wallBuffers = std::make_unique<WallBuffers>(uploadWalls(context, *wallGrid));
+    previous = makeSavedPositions(context, agents);
+  }
   AvoidancePrograms programs(context);
   CrowdBuffers buffers = uploadCrowd(context, crowd);
   SteerBuffers agentBuffers = uploadSteer(context, goals, steer);
@@ -87,12 +117,12 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
   VkCommandBuffer cmd = pool.allocate();
   gpu::Fence fence(context);
   gpu::TimestampPool timestamps(context, 6);
-  std::vector<double> countMs, scanMs, scatterMs, gridMs, steerMs, totalMs;
+  std::vector<double> countMs, scanMs, scatterMs, gridMs, steerMs, totalMs, moveMs;
   const int warmup = 2;
   for (int s = 0; s < warmup + steps; ++s) {
     SteerFrame frame = benchFrame(s);
     GridJob gridJob{&buffers, &agentBuffers, &grid, &timestamps};
-    AvoidanceJob avoid{&buffers, &agentBuffers, &grid, params, frame};
+    AvoidanceJob avoid{&buffers, &agentBuffers, &grid, params, frame, wallBuffers.get()};
     AdvanceJob advance{&buffers, &agentBuffers, frame.dt};
     timestamps.reset();
     gpu::beginCommands(cmd);
@@ -102,7 +132,14 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     avoid.record(cmd, programs);
     timestamps.write(cmd);  // 4
     gpu::computeToComputeBarrier(cmd);
+    if (walls) recordSavePositions(cmd, buffers, previous, 0, agents);
     advance.record(cmd, programs);
+    if (walls) {
+      gpu::computeToComputeBarrier(cmd);
+      WallConstraintJob{&buffers, &previous, wallBuffers.get(), params.radius}.record(cmd,
+                                                                                      programs);
+    }
+    timestamps.write(cmd);  // 5
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();
@@ -115,9 +152,13 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     gridMs.push_back(timestamps.millisecondsBetween(ticks, 0, 3));
     steerMs.push_back(timestamps.millisecondsBetween(ticks, 3, 4));
     totalMs.push_back(timestamps.millisecondsBetween(ticks, 0, 4));
+    moveMs.push_back(timestamps.millisecondsBetween(ticks, 4, 5));
   }
   AvoidanceTiming t;
-  t.cpuMs = cpuTwinStepMs(startPlacement, startSteer, goals, grid.table, params, steps, warmup);
+  t.cpuMs = cpuTwinStepMs(startPlacement, startSteer, goals, grid.table, params, steps, warmup,
+                          wallGrid ? &*wallGrid : nullptr);
+  t.moveMs = median(moveMs);
+  t.wallSegments = wallGrid ? uint32_t(wallGrid->segments.size()) : 0u;
   t.agents = agents;
   t.gridMs = median(gridMs);
   t.countMs = median(countMs);

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "crowd/avoidance.h"
+#include "crowd/obstacles.h"
 #include "gpu/context.h"
 
 namespace throng::crowd {
@@ -16,6 +17,9 @@ struct AvoidanceTiming {
   double scatterMs = 0.0;  // scatter
   double steerMs = 0.0;    // the policy pass
   double totalMs = 0.0;    // both, plus the barriers between them
+  // The move after it: advance, or with walls save + advance + wall constraint.
+  double moveMs = 0.0;
+  uint32_t wallSegments = 0;  // 0: run without walls
   // The CPU twin's grid + steering on one thread, the same steps from the same start.
   double cpuMs = 0.0;
   int steps = 0;
@@ -28,8 +32,13 @@ enum class BenchNumbering { Grid, Random };
 // Agents uniform in a square at `density` per m², each heading for a waypoint 1.3 m away in a
 // random direction; `steps` measured after 2 warm-up steps (positions advance between steps),
 // then the same steps again by the CPU twin.
+// With `walls`, the square holds a grid of 2 x 2 m boxes every 10 m (benchBoxes), no agent
+// starts within 0.5 m of one, the steering pass sees them and the wall constraint runs.
 AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
                                    const AvoidanceParams& params, int steps, float density = 0.5f,
-                                   BenchNumbering numbering = BenchNumbering::Grid);
+                                   BenchNumbering numbering = BenchNumbering::Grid,
+                                   bool walls = false);
+// 2 x 2 m boxes centred every 10 m over the square [-half, half]².
+Obstacles benchBoxes(float half);
 
 }  // namespace throng::crowd
