@@ -78,6 +78,13 @@ awk 'BEGIN {
     for (p = 1; p <= 2; ++p) printf "%d %d %.4f %.4f 1.7\n", p, f, 0.05 * f, p - 0.02 * f
 }' > corpus/trajectories/pedpy.txt
 
+# Walls (docs/formats.md, "Walls"; no tool writes them): each statement, a corridor and a room.
+reset walls
+printf '# a corridor and a box\npolyline -10 -1.5 10 -1.5\npolyline -10 1.5 10 1.5\npolygon 3 3 5 3 5 5 3 5\n' \
+  > corpus/walls/corridor.txt
+printf 'walkable -2 -2 0.5\n########\n#......#\n#..##..#\n#......#\n###..###\nend\npolyline 0 4 2 6 4 4 # a V\n' \
+  > corpus/walls/room.txt
+
 # Viewer input scripts: every command of docs/viewer.md.
 reset input_script
 printf '# orbit, zoom, fly\ndrag 900 400 1000 400 10\nscroll 2\nkey W 5\nkey SHIFT\nwait 3\n' \
