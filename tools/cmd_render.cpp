@@ -192,6 +192,10 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     renderMs.push_back(timings.renderMs);
     if (cloth) clothTimes.push_back(cloth->timings(0));
     output.push(std::make_shared<ImageRgba8>(render::readbackImage(target)), frame);
+    // Goals: the state machines see arrivals and plan new paths between frames (the device is
+    // idle here), every half simulated second.
+    if (scene.hasGoals() && (frame + 1) % std::max(1, int(std::lround(0.5f / o.scene.dt))) == 0)
+      scene.updateGoals(context);
     trajectories.record(context, scene, double(frame) * o.scene.dt);
     char detail[96];
     std::snprintf(detail, sizeof(detail), "synthesis %.2f ms, render %.2f ms",
@@ -226,6 +230,9 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   if (trajectories.enabled())
     std::printf("trajectories of %u agents over %d frames written to %s\n", scene.count(), o.frames,
                 o.scene.trajectoriesOut.c_str());
+  if (scene.hasGoals())
+    std::printf("goals: %u of %u agents reached their final goal%s\n", scene.agentsAtGoal(),
+                scene.count(), scene.goalsDone() ? " (all done)" : "");
   if (cloth) printClothSummary(*cloth, clothTimes, o.scene.cloth);
   if (synth.cached()) {
     synth::MotionCacheStats c = synth::readCacheStats(synth);

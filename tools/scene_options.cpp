@@ -50,13 +50,22 @@ bool given(const SceneOptions& o, const char* name) {
 // An option that changes nothing in the chosen scene is an error, not silently ignored.
 void checkUsedOptions(const SceneOptions& o) {
   const std::string& scene = o.scenario.name;
-  const bool steered = o.storyboard() || steersCircle(o);
+  const bool steered = o.storyboard() || steersCircle(o) || o.mengeScene();
   for (const char* name : {"--policy", "--radius"})
     if (given(o, name) && !steered)
       fail(name, ": steers the storyboard and circle scenes (without --speed-period), not '", scene,
            "'");
   if (o.storyboard() && given(o, "--characters"))
     fail("-n/--characters: the storyboard's glyphs make the crowd; drop -n with --storyboard");
+  if (o.mengeScene() && given(o, "--characters"))
+    fail("-n/--characters: the Menge scenario's generators make the crowd; drop -n with --menge");
+  if (o.mengeScene() && given(o, "--radius"))
+    fail("--radius: a Menge scenario gives each agent profile its radius");
+  if (!o.mengeScene() && !o.menge.empty())
+    fail("--menge makes the menge scene, not '", scene, "'");
+  if (o.mengeScene() && o.menge.empty()) fail("--scene menge needs --menge PROJECT.xml");
+  if (o.mengeScene() && o.speedPeriod != 0.0f)
+    fail("--speed-period: Menge agents walk at their profiles' preferred speeds");
   for (const char* name : {"--cell", "--jitter", "--step-time", "--legend"})
     if (given(o, name) && !o.storyboard())
       fail(name, ": belongs to the storyboard scene (--storyboard FILE), not '", scene, "'");
@@ -78,7 +87,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       .add_option("--scene", o.scenario.name,
                   "Scenario: random, circle or storyboard (with --storyboard)")
       ->capture_default_str()
-      ->check(oneOf("scene", {"random", "circle", "storyboard"}));
+      ->check(oneOf("scene", {"random", "circle", "storyboard", "menge"}));
+  command.add_option("--menge", o.menge,
+                     "A Menge scenario's project file (XML): its agents, obstacles, goals and "
+                     "behaviour (the menge scene)");
   command.add_option("--characters,-n", o.characters, "Number of characters")
       ->capture_default_str()
       ->check(inRange(1, 4000000));
@@ -185,10 +197,14 @@ void validateSceneOptions(SceneOptions& o) {
     fail("--cloth-tint and --cloth-full need --cloth");
   validateSceneCacheOptions(o);
   if (!o.trajectoriesOut.empty()) crowd::checkTrajectoryOutput(o.trajectoriesOut, 0, 0);
-  // --storyboard alone picks the storyboard scene (--scene defaults to random).
+  // --storyboard alone picks the storyboard scene, --menge the menge scene (--scene defaults to
+  // random).
   if (!o.story.storyboard.empty() && o.scenario.name == "random") o.scenario.name = "storyboard";
+  if (!o.menge.empty() && o.scenario.name == "random") o.scenario.name = "menge";
   checkUsedOptions(o);
-  if (o.storyboard()) {
+  if (o.mengeScene()) {
+    validateMengeScene(o);
+  } else if (o.storyboard()) {
     validateStoryboardScene(o);
   } else {
     if (!o.story.storyboard.empty() || !o.story.trajectories.empty())
@@ -236,6 +252,8 @@ std::string charactersOption(const SceneOptions& o) {
 
 anim::ClipPair loadSceneClips(const SceneOptions& o) {
   if (!o.groups.empty()) return scene::groupClips(o.groups.front());
+  // Menge's pedestrians walk (1.34 m/s by default): the walk pair unless --slow/--fast.
+  if (o.mengeScene() && o.slowClip.empty()) return anim::defaultWalkPair();
   if (o.slowClip.empty()) return anim::defaultRunPair();
   return anim::loadClipPair(o.slowClip, o.fastClip);
 }
@@ -268,6 +286,7 @@ synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& s
 
 float sceneExtent(const SceneOptions& o) {
   if (o.storyboard()) return o.story.extent;
+  if (o.mengeScene()) return o.mengeExtent;
   float extent = crowd::scenarioExtent(o.scenario);
   for (const scene::GroupDescription& g : o.groups) {
     crowd::ScenarioOptions s = o.scenario;
@@ -285,6 +304,10 @@ float sceneGroundExtent(const SceneOptions& o) {
 
 render::Camera sceneCamera(const SceneOptions& o) {
   render::Camera camera = render::cameraPreset(o.cameraPreset, sceneExtent(o));
+  // Presets look at the origin; a Menge scene lies wherever its file puts it.
+  const glm::vec3 centre(o.mengeCentre.x, 0.0f, o.mengeCentre.y);
+  camera.eye += centre;
+  camera.target += centre;
   if (!o.eye.empty()) camera.eye = render::parseVec3(o.eye, "--eye");
   if (!o.target.empty()) camera.target = render::parseVec3(o.target, "--target");
   if (o.fovY) camera.fovYDegrees = *o.fovY;

@@ -52,6 +52,11 @@ struct SceneOptions {
   bool clothTint = false;  // colour capes by garment level
   bool clothFull = false;  // every visible cape at full detail (no garment LOD)
   StoryboardSceneOptions story;
+  // The Menge scene (--menge PROJECT.xml): its agents, walls, goals and behaviour. Validation
+  // sets where it lies (the cameras look at its centre).
+  std::string menge;
+  glm::vec2 mengeCentre{0.0f};
+  float mengeExtent = 0.0f;
   // From a scene file (SCENE.json, tools/scene_file_options.h): its groups (empty: the one
   // group the flags describe), its keyframed camera (empty: fixed) and its seconds of output.
   std::string sceneFile;
@@ -63,6 +68,7 @@ struct SceneOptions {
   // so that one that does nothing in the chosen scene is an error.
   const CLI::App* command = nullptr;
   bool storyboard() const { return scenario.name == "storyboard"; }
+  bool mengeScene() const { return scenario.name == "menge"; }
 };
 
 // The motion cache keeps a few small per-bucket buffers: --bucket-width may not make more.

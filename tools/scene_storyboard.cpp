@@ -5,6 +5,8 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/log.h"
+#include "scene/menge_scene.h"
 
 namespace throng::tools {
 
@@ -69,12 +71,34 @@ scene::StoryboardSceneDescription storyboardDescription(const SceneOptions& o,
   return d;
 }
 
+namespace {
+scene::MengeSceneResult readMenge(const SceneOptions& o, const anim::ClipPair& clips) {
+  const menge::MengeScenario scenario = menge::readMengeProject(o.menge);
+  scene::MengeSceneResult r =
+      scene::mengeScene(scenario, clips, o.scenario.seed, o.cache ? o.bucketWidth : 0.0f);
+  r.setup.steering->avoidance.policy = scenePolicy(o.story.policy);
+  return r;
+}
+}  // namespace
+
+void validateMengeScene(SceneOptions& o) {
+  if (!std::filesystem::is_regular_file(o.menge)) fail("--menge ", o.menge, ": no such file");
+  const scene::MengeSceneResult r = readMenge(o, loadSceneClips(o));
+  for (const std::string& warning : r.warnings) logWarning(warning);
+  o.mengeCentre = 0.5f * (r.boundsMin + r.boundsMax);
+  o.mengeExtent = std::max(1.0f, 0.5f * glm::length(r.boundsMax - r.boundsMin));
+  logInfo(concat("menge ", o.menge, ": ", r.setup.crowd.size(), " agents, ",
+                 r.setup.walls.segments.size(), " wall segments, ",
+                 r.setup.steering->goals->goalSets.size(), " goal sets"));
+}
+
 bool steersCircle(const SceneOptions& o) {
   // A speed schedule changes w behind the waypoints' back: such runs keep tangent steering.
   return o.scenario.name == "circle" && o.speedPeriod == 0.0f;
 }
 
 scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& clips) {
+  if (o.mengeScene()) return readMenge(o, clips).setup;
   if (o.storyboard())
     return scene::storyboardScene(storyboardDescription(o, o.slowClip.empty() ? nullptr : &clips));
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);

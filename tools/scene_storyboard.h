@@ -16,6 +16,9 @@ namespace throng::tools {
 // Checks the storyboard options and reads the storyboard's size (sets options.story.extent);
 // throws Error naming the option or file.
 void validateStoryboardScene(SceneOptions& options);
+// Reads the Menge scenario (its errors name file and line; its warnings are logged) and sets
+// where it lies (options.mengeCentre, mengeExtent). Throws Error.
+void validateMengeScene(SceneOptions& options);
 // --policy NAME (the one vocabulary: crowd::parseSteerPolicy); throws Error on another name.
 crowd::SteerPolicy scenePolicy(const std::string& name);
 std::string_view policyName(crowd::SteerPolicy policy);

@@ -5,9 +5,12 @@
 // by storyboard crowds and the circle scene's lanes; the state of the simulated clock lives here.
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <memory>
 #include <vector>
 
 #include "crowd/avoidance_jobs.h"
+#include "crowd/nav_jobs.h"
 #include "crowd/path_goals.h"
 
 namespace throng::crowd {
@@ -24,6 +27,10 @@ class CrowdSteering {
   // Throws Error for inconsistent sizes or avoidance parameters.
   CrowdSteering(const gpu::Context& context, const AgentPaths& paths,
                 const AvoidanceParams& avoidance, std::vector<ClipSpeeds> speeds);
+  // Without path vectors: `count` agents that goals steer (setGoals).
+  CrowdSteering(const gpu::Context& context, uint32_t count, const AvoidanceParams& avoidance,
+                std::vector<ClipSpeeds> speeds);
+  ~CrowdSteering();
 
   // Advances the simulated clock by dt and says what this step does.
   SteerStep advance(float dt);
@@ -36,6 +43,14 @@ class CrowdSteering {
   // after root motion. Throws Error for invalid walls.
   void setWalls(const gpu::Context& context, const Obstacles& walls);
   const WallBuffers* walls() const { return walls_.get(); }  // null: none
+
+  // Goals and navigation instead of path vectors (goals.h, nav_jobs.h): every agent's first goal
+  // is chosen from `placement`, and each frame's steering follows its planned path.
+  void setGoals(const gpu::Context& context, GoalScene goals, std::span<const glm::vec4> placement);
+  // Between frames, with none in flight: the goals' state machines on read-back positions and
+  // new plans (every N frames is enough: GoalSteering::update). Nothing without goals.
+  void updateGoals(const gpu::Context& context, const CrowdBuffers& crowd);
+  const GoalSteering* goals() const { return goals_.get(); }  // null: none
   const AvoidancePrograms& programs() const { return programs_; }
 
   double seconds() const { return time_; }
@@ -50,6 +65,8 @@ class CrowdSteering {
   GridBuffers grid_;
   PathBuffers paths_;
   std::unique_ptr<WallBuffers> walls_;
+  std::unique_ptr<GoalSteering> goals_;
+  bool hasPaths_ = false;
   std::vector<ClipSpeeds> speeds_;
   double time_ = 0.0;
   uint32_t step_ = 0;

@@ -52,7 +52,7 @@ void validateState(const GoalScene& scene, const GoalBehavior& group, size_t g, 
   if (!(st.reach >= 0.0f) || !(st.waitSeconds >= 0.0f) || !std::isfinite(st.waitSeconds) ||
       !(st.leaveAfter >= 0.0f))
     problems.push_back(where + "reach, wait and leave-after times must be 0 or more");
-  if (st.choice.kind == GoalChoice::Kind::Identity) return;
+  if (st.choice.ownPoint()) return;
   if (st.choice.goalSet >= scene.goalSets.size()) {
     problems.push_back(
         concat(where, "goal set ", st.choice.goalSet, " of ", scene.goalSets.size()));
@@ -242,9 +242,11 @@ void GoalMachine::choose(uint32_t agent, glm::vec2 p, bool another) {
   const uint32_t group = scene_.agentGroup[agent];
   const GoalChoice& c = scene_.groups[group].states[a.state].choice;
   ++a.visits;
-  if (c.kind == GoalChoice::Kind::Identity) {
+  if (c.ownPoint()) {
     a.goal = 0;
     a.target = p;
+    if (c.kind == GoalChoice::Kind::Mirror)
+      a.target = glm::vec2(c.mirrorX ? -p.x : p.x, c.mirrorZ ? -p.y : p.y);
     return;
   }
   const GoalSet& set = scene_.goalSets[c.goalSet];
@@ -286,7 +288,7 @@ bool GoalMachine::step(uint32_t agent, glm::vec2 p, double seconds) {
   AgentGoal& a = agents_[agent];
   if (a.done) return false;
   const GoalState& st = scene_.groups[scene_.agentGroup[agent]].states[a.state];
-  const bool identity = st.choice.kind == GoalChoice::Kind::Identity;
+  const bool identity = st.choice.ownPoint();
   const Goal goal =
       identity ? pointGoal(a.target) : scene_.goalSets[st.choice.goalSet].goals[a.goal];
   if (a.reachedAt < 0.0 && goalDistance(goal, p) <= st.reach) {

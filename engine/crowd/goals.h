@@ -65,11 +65,16 @@ struct GoalChoice {
     Nearest,   // the nearest to the agent (goalDistance)
     Shared,    // one goal for the whole group in this state, drawn by weight from (group, seed)
     Identity,  // where the agent stands (no set)
+    Mirror,    // where the agent stands mirrored through the origin's axes (no set; Menge's
+               // mirror selector: mirrorX negates x, mirrorZ negates z)
   };
   Kind kind = Kind::Explicit;
   uint32_t goalSet = 0;
   uint32_t goal = 0;          // Explicit
   bool sampleInside = false;  // target a point sampled inside the region, else its closest point
+  bool mirrorX = false, mirrorZ = false;  // Mirror
+  // Identity and Mirror target a point of the agent's own, not a goal of a set.
+  bool ownPoint() const { return kind == Kind::Identity || kind == Kind::Mirror; }
 };
 
 inline constexpr uint32_t kNoState = std::numeric_limits<uint32_t>::max();

@@ -30,8 +30,15 @@ std::vector<std::string> SynthesisStage::validate() const {
 
 void SynthesisStage::record(VkCommandBuffer cmd) const {
   gpu::throwIfInvalid("SynthesisStage", validate());
-  synth::recordSynthesis(cmd, scene->programs(), scene->synth(), step->dt, maxBindingBytes,
-                         step->retarget, &lodCamera);
+  // With walls, root motion is followed by the constraint that keeps characters off them, and
+  // the pose passes see the constrained placement.
+  scene->recordSavePositions(cmd);
+  synth::recordRootMotionPasses(cmd, scene->programs(), scene->synth(), step->dt, step->retarget);
+  if (scene->hasWalls()) {
+    scene->recordWallConstraint(cmd);
+    gpu::computeToComputeBarrier(cmd);
+  }
+  synth::recordPosePasses(cmd, scene->programs(), scene->synth(), maxBindingBytes, &lodCamera);
 }
 
 std::vector<std::string> SecondaryStage::validate() const {

@@ -20,7 +20,8 @@ struct SteerStage {
   void record(VkCommandBuffer cmd) const;
 };
 
-// Every synthesis pass over each group's range of the scene's crowd.
+// Every synthesis pass over each group's range of the scene's crowd; with walls, the wall
+// constraint between root motion and the pose passes.
 struct SynthesisStage {
   const Scene* scene = nullptr;
   const SceneStep* step = nullptr;

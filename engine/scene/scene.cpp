@@ -19,8 +19,11 @@ void checkSetup(const SceneSetup& s) {
     fail("scene: ", n, " characters but ", s.tints.size(), " tints");
   if (!s.labels.empty() && s.labels.size() != n)
     fail("scene: ", n, " characters but ", s.labels.size(), " labels");
-  if (s.steering && s.steering->paths.size() != n)
+  if (s.steering && !s.steering->goals && s.steering->paths.size() != n)
     fail("scene: ", n, " characters but ", s.steering->paths.size(), " paths");
+  if (s.steering && s.steering->goals && s.steering->paths.size() > 0)
+    fail("scene: agents follow goals or path vectors, not both");
+  if (!s.walls.empty() && !s.steering) fail("scene: walls need a steered scene");
 }
 
 std::vector<crowd::ClipSpeeds> clipSpeeds(
@@ -57,16 +60,53 @@ Scene::Scene(const gpu::Context& context, SceneSetup setup, const synth::MotionC
     }
     groupPrograms_.push_back(programs);
   }
-  if (setup.steering) {
-    paths_ = std::move(setup.steering->paths);
-    steering_ = std::make_unique<crowd::CrowdSteering>(context, paths_, setup.steering->avoidance,
-                                                       clipSpeeds(pairs_, setup.groupFirst));
-  }
+  if (setup.steering) makeSteering(context, setup);
   if (!setup.tints.empty()) tints_ = gpu::makeStorageBuffer<uint32_t>(context, setup.tints);
   labels_ = std::move(setup.labels);
 }
 
 Scene::~Scene() = default;
+
+void Scene::makeSteering(const gpu::Context& context, SceneSetup& setup) {
+  SteeringSetup& s = *setup.steering;
+  std::vector<crowd::ClipSpeeds> speeds = clipSpeeds(pairs_, setup.groupFirst);
+  if (s.goals) {
+    steering_ = std::make_unique<crowd::CrowdSteering>(context, count(), s.avoidance,
+                                                       std::move(speeds));
+    steering_->setGoals(context, std::move(*s.goals), setup.crowd.placement);
+  } else {
+    paths_ = std::move(s.paths);
+    steering_ = std::make_unique<crowd::CrowdSteering>(context, paths_, s.avoidance,
+                                                       std::move(speeds));
+  }
+  if (!setup.walls.empty()) {
+    steering_->setWalls(context, setup.walls);
+    saved_ = std::make_unique<crowd::SavedPositions>(crowd::makeSavedPositions(context, count()));
+  }
+}
+
+void Scene::recordSavePositions(VkCommandBuffer cmd) const {
+  if (saved_) crowd::recordSavePositions(cmd, synth_.crowd, *saved_, 0, count());
+}
+
+void Scene::recordWallConstraint(VkCommandBuffer cmd) const {
+  if (!saved_ || !steering_->walls()) return;
+  crowd::WallConstraintJob job{&synth_.crowd, saved_.get(), steering_->walls(),
+                               steering_->avoidance().radius};
+  job.record(cmd, steering_->programs());
+}
+
+void Scene::updateGoals(const gpu::Context& context) {
+  if (hasGoals()) steering_->updateGoals(context, synth_.crowd);
+}
+
+uint32_t Scene::agentsAtGoal() const {
+  return hasGoals() ? steering_->goals()->agentsAtGoal() : 0;
+}
+
+bool Scene::goalsDone() const {
+  return hasGoals() && steering_->goals()->allDone();
+}
 
 std::vector<uint8_t> Scene::activeAt(double seconds) const {
   std::vector<uint8_t> active(count(), 1);

@@ -13,15 +13,18 @@
 #include <vector>
 
 #include "crowd/crowd_steering.h"
+#include "crowd/obstacles.h"
 #include "crowd/path_vectors.h"
 #include "synth/crowd_synth.h"
 
 namespace throng::scene {
 
-// Path vectors and avoidance for every agent of the scene.
+// How every agent of a steered scene is led: path vectors (storyboards, the circle's lanes) or
+// goals with navigation (Menge scenarios), with avoidance of each other and of the walls.
 struct SteeringSetup {
   crowd::AgentPaths paths;  // one per agent; agents whose paths are never active stand still
   crowd::AvoidanceParams avoidance;
+  std::optional<crowd::GoalScene> goals;  // instead of paths (then `paths` stays empty)
 };
 
 // What a scene is made of, on the CPU.
@@ -32,6 +35,9 @@ struct SceneSetup {
   std::vector<uint32_t> tints;          // per character: its tint index (empty: no tints)
   std::vector<uint32_t> labels;         // per character: its group label in exports (or empty)
   std::optional<SteeringSetup> steering;
+  // Static walls (empty: none; steered scenes only): the steering avoids them and a constraint
+  // after root motion keeps every character off them (crowd::WallConstraintJob).
+  crowd::Obstacles walls;
   synth::SpeedSchedule speeds;  // speed changes of unsteered scenes (period 0: none)
 };
 
@@ -79,13 +85,29 @@ class Scene {
   SceneStep advance(float dt);
   // The steer stage of a frame (nothing for unsteered scenes).
   void recordSteering(VkCommandBuffer cmd, const SceneStep& step) const;
+  // Walls: before root motion the positions are saved; after it, the wall constraint.
+  bool hasWalls() const { return steering_ && steering_->walls(); }
+  void recordSavePositions(VkCommandBuffer cmd) const;
+  void recordWallConstraint(VkCommandBuffer cmd) const;
+  const crowd::WallBuffers* walls() const { return steering_ ? steering_->walls() : nullptr; }
+
+  // Goals: between frames, with none in flight (waits for the device), the state machines run
+  // on read-back positions and changed goals are planned. Call every few frames (arrivals and
+  // timers are seen that much later). Nothing for scenes without goals.
+  bool hasGoals() const { return steering_ && steering_->goals(); }
+  void updateGoals(const gpu::Context& context);
+  uint32_t agentsAtGoal() const;  // in a final state, reached (0 without goals)
+  bool goalsDone() const;         // every agent with goals is done
 
  private:
+  void makeSteering(const gpu::Context& context, SceneSetup& setup);
+
   std::vector<std::unique_ptr<anim::MotionPair>> pairs_;
   std::vector<std::unique_ptr<synth::SynthPrograms>> programs_;
   std::vector<const synth::SynthPrograms*> groupPrograms_;
   synth::CrowdSynth synth_;
   std::unique_ptr<crowd::CrowdSteering> steering_;
+  std::unique_ptr<crowd::SavedPositions> saved_;  // walls: placement before root motion
   crowd::AgentPaths paths_;
   std::vector<uint32_t> labels_;
   gpu::Buffer tints_;
