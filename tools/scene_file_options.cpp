@@ -17,7 +17,7 @@ constexpr const char* kSceneFlags[] = {
     "--target",       "--fov",          "--dt",        "--cache",
     "--cache-budget", "--bucket-width", "--speed-period", "--lod",       "--storyboard",
     "--trajectories", "--legend",       "--cell",         "--jitter",    "--policy",
-    "--radius",       "--step-time",    "--cloth"};
+    "--radius",       "--step-time",    "--cloth",        "--menge"};
 
 std::string vec3Text(const glm::vec3& v) {
   char text[96];
@@ -49,7 +49,10 @@ void applySceneFile(SceneOptions& o) {
            " or edit the file");
   const scene::SceneFile f = scene::readSceneFile(o.sceneFile);
   o.scenario.seed = f.seed;
-  if (f.behaviour == "storyboard") {
+  if (f.behaviour == "menge") {
+    o.scenario.name = "menge";
+    o.menge = f.menge;
+  } else if (f.behaviour == "storyboard") {
     o.scenario.name = "storyboard";
     o.story.storyboard = f.storyboard.storyboard;
     o.story.trajectories = f.storyboard.trajectories;
@@ -81,7 +84,10 @@ void applySceneFile(SceneOptions& o) {
 scene::SceneFile sceneFileOf(const SceneOptions& o, float seconds) {
   scene::SceneFile f;
   f.seed = o.scenario.seed;
-  if (o.storyboard()) {
+  if (o.mengeScene()) {
+    f.behaviour = "menge";
+    f.menge = o.menge;
+  } else if (o.storyboard()) {
     f.behaviour = "storyboard";
     f.storyboard = storyboardDescription(o, nullptr);
   } else {

@@ -92,6 +92,12 @@ void ViewSession::run() {
     presenter_.endFrame(*frame, capture);
     recordTrajectories();
     scene_->simulatedSeconds += dt;
+    // Goals: the state machines run between frames on read-back positions (the device idle),
+    // every 15 frames.
+    if (scene_->crowd->hasGoals() && stats_.frames() % 15 == 14) {
+      context_.waitIdle();
+      scene_->crowd->updateGoals(context_);
+    }
     stats_.frameDone(wall);
     if ((titleSeconds_ += wall) >= 1.0) {
       titleSeconds_ = 0.0;

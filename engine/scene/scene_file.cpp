@@ -238,15 +238,24 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
   const Json doc = storyboard::parseJsonDocument(text, source);
   const Reader r(source, text);
   r.onlyKeys(doc, "",
-             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "avoidance",
+             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "avoidance",
               "speed_period", "motion", "capes", "camera", "output"});
   if (r.text(doc, "", "schema", "") != kSchema)
     r.fail("/schema", concat("expected \"", kSchema, "\""));
   if (r.number(doc, "", "version", 1, 1, 0) != 1) r.fail("/version", "expected 1");
   SceneFile scene;
   scene.seed = uint64_t(r.number(doc, "", "seed", 0, 4294967295.0, 1));
-  scene.behaviour = r.text(doc, "", "behaviour", "plain", {"plain", "circle", "storyboard"});
-  if (scene.behaviour == "storyboard") {
+  scene.behaviour =
+      r.text(doc, "", "behaviour", "plain", {"plain", "circle", "storyboard", "menge"});
+  if (doc.contains("menge") && scene.behaviour != "menge")
+    r.fail("/menge", "only the menge behaviour reads a Menge scenario");
+  if (scene.behaviour == "menge") {
+    scene.menge = r.file(doc, "", "menge", baseDir);
+    if (scene.menge.empty()) r.fail("/behaviour", "the menge behaviour needs a menge project file");
+    if (doc.contains("groups") || doc.contains("storyboard"))
+      r.fail(doc.contains("groups") ? "/groups" : "/storyboard",
+             "a Menge scenario's agents come from its own file");
+  } else if (scene.behaviour == "storyboard") {
     if (!doc.contains("storyboard"))
       r.fail("/behaviour", "the storyboard behaviour needs a storyboard");
     if (doc.contains("groups"))
@@ -265,6 +274,8 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
     scene.policy = r.text(doc.at("avoidance"), "/avoidance", "policy", scene.policy,
                           {"anticipatory", "published", "none", "ttc", "rule"});
     scene.radius = float(r.number(doc.at("avoidance"), "/avoidance", "radius", 0.01, 10.0, 0.3));
+    if (scene.behaviour == "menge" && doc.at("avoidance").contains("radius"))
+      r.fail("/avoidance/radius", "a Menge scenario gives each agent profile its radius");
   }
   scene.speedPeriod = float(r.number(doc, "", "speed_period", 0.0, 1e6, 0.0));
   if (scene.speedPeriod > 0.0f && scene.behaviour != "plain")
@@ -333,7 +344,9 @@ std::string writeSceneFile(const SceneFile& s) {
   doc["version"] = 1;
   doc["seed"] = s.seed;
   doc["behaviour"] = s.behaviour;
-  if (s.behaviour == "storyboard") {
+  if (s.behaviour == "menge") {
+    doc["menge"] = absolute(s.menge);
+  } else if (s.behaviour == "storyboard") {
     const StoryboardSceneDescription& d = s.storyboard;
     Json b = {{"file", absolute(d.storyboard)}, {"trajectories", absolute(d.trajectories)}};
     if (!d.legend.empty()) b["legend"] = absolute(d.legend);
@@ -344,7 +357,9 @@ std::string writeSceneFile(const SceneFile& s) {
   } else {
     for (const GroupDescription& g : s.groups) doc["groups"].push_back(groupJson(g));
   }
-  if (s.behaviour != "plain") doc["avoidance"] = {{"policy", s.policy}, {"radius", tidy(s.radius)}};
+  if (s.behaviour == "menge") doc["avoidance"] = {{"policy", s.policy}};
+  if (s.behaviour == "circle" || s.behaviour == "storyboard")
+    doc["avoidance"] = {{"policy", s.policy}, {"radius", tidy(s.radius)}};
   if (s.behaviour == "plain") doc["speed_period"] = tidy(s.speedPeriod);
   doc["motion"] = {{"lod", s.lod},
                    {"cache", s.cache},

@@ -22,7 +22,8 @@ namespace throng::scene {
 
 struct SceneFile {
   uint64_t seed = 1;
-  std::string behaviour = "plain";  // plain, circle or storyboard
+  std::string behaviour = "plain";  // plain, circle, storyboard or menge
+  std::string menge;                // the menge behaviour's project file (XML)
   std::vector<GroupDescription> groups;
   StoryboardSceneDescription storyboard;  // the storyboard behaviour's files and options
   std::string policy = "anticipatory";    // avoidance (circle and storyboard)
