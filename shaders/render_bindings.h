@@ -23,6 +23,7 @@ const uint kRenderBindingPoseSource = 8u;
 const uint kRenderBindingCacheData = 9u;
 const uint kRenderBindingGroups = 10u;     // kDrawGroupTint: a uint per character
 const uint kRenderBindingLodLevels = 11u;  // kDrawLodLevels: CoverageParts (uniform)
+const uint kRenderBindingWalls = 12u;      // walls.vert: segments (ax, az, bx, bz) as texels
 
 #ifdef __cplusplus
 }  // namespace throng::gpu_types

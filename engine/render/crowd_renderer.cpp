@@ -72,6 +72,10 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   groundDesc.cullMode = VK_CULL_MODE_NONE;
   groundDesc.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   ground_ = gpu::GraphicsProgram(context, groundDesc);
+  gpu::GraphicsPipelineDesc wallDesc = groundDesc;
+  wallDesc.vertexShader = "walls.vert";
+  wallDesc.fragmentShader = "walls.frag";
+  walls_ = gpu::GraphicsProgram(context, wallDesc);
 
   if (splatSupported_) {
     splat_ = gpu::ComputeProgram(context, "joint_splat.comp");
@@ -209,6 +213,13 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
   gpu::Binding groundBindings[] = {gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms)};
   ground_.bind(cmd, groundBindings, nullptr, 0);
   vkCmdDraw(cmd, 6, 1, 0, 0);
+  if (params.wallSegmentCount > 0) {
+    gpu::Binding wallBindings[] = {
+        gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
+        gpu::uniformTexelBinding(gpu_types::kRenderBindingWalls, params.wallSegments)};
+    walls_.bind(cmd, wallBindings, nullptr, 0);
+    vkCmdDraw(cmd, 6 * params.wallSegmentCount, 1, 0, 0);
+  }
 
   DrawPush push{};
   push.jointCount = params.jointCount;

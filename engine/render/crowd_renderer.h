@@ -33,6 +33,9 @@ struct DrawParams {
   const gpu::Buffer* groups = nullptr;  // storyboard group per character (uint): colour by group
   CachedPoseInputs cachedPoses;  // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
+  // Static walls drawn as panels: segments (ax, az, bx, bz) as RGBA32F uniform texels.
+  VkBufferView wallSegments = VK_NULL_HANDLE;
+  uint32_t wallSegmentCount = 0;
 };
 
 
@@ -71,6 +74,7 @@ class CrowdRenderer {
  private:
   gpu::GraphicsProgram joints_;
   gpu::GraphicsProgram ground_;
+  gpu::GraphicsProgram walls_;
   std::vector<gpu::Buffer> frameUniforms_;
   const gpu::Context* context_ = nullptr;
   bool splatSupported_ = false;

@@ -22,6 +22,10 @@ render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings)
   params.lodLevels = synth.lod ? &synth.front().coverageParts : nullptr;
   params.tintLevels = settings.tintLevels;
   params.groups = scene.tints();
+  if (const crowd::WallBuffers* walls = scene.walls()) {
+    params.wallSegments = walls->segmentTexels.get();
+    params.wallSegmentCount = walls->segmentCount;
+  }
   if (synth.cached())
     params.cachedPoses = {&synth.crowd.placement, &synth.crowd.motion, &synth.poseSource,
                           &synth.cacheData};
