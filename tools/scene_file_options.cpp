@@ -17,7 +17,7 @@ constexpr const char* kSceneFlags[] = {
     "--target",       "--fov",          "--dt",        "--cache",
     "--cache-budget", "--bucket-width", "--speed-period", "--lod",       "--storyboard",
     "--trajectories", "--legend",       "--cell",         "--jitter",    "--policy",
-    "--radius",       "--step-time",    "--cloth",        "--menge"};
+    "--radius",       "--step-time",    "--cloth",        "--menge",        "--corridor-length"};
 
 std::string vec3Text(const glm::vec3& v) {
   char text[96];
@@ -49,7 +49,10 @@ void applySceneFile(SceneOptions& o) {
            " or edit the file");
   const scene::SceneFile f = scene::readSceneFile(o.sceneFile);
   o.scenario.seed = f.seed;
-  if (f.behaviour == "menge") {
+  if (f.behaviour == "corridor") {
+    o.scenario.name = "corridor";
+    o.corridorLength = f.corridorLength;
+  } else if (f.behaviour == "menge") {
     o.scenario.name = "menge";
     o.menge = f.menge;
   } else if (f.behaviour == "storyboard") {
@@ -84,7 +87,10 @@ void applySceneFile(SceneOptions& o) {
 scene::SceneFile sceneFileOf(const SceneOptions& o, float seconds) {
   scene::SceneFile f;
   f.seed = o.scenario.seed;
-  if (o.mengeScene()) {
+  if (o.corridor()) {
+    f.behaviour = "corridor";
+    f.corridorLength = o.corridorLength;
+  } else if (o.mengeScene()) {
     f.behaviour = "menge";
     f.menge = o.menge;
   } else if (o.storyboard()) {

@@ -50,7 +50,7 @@ bool given(const SceneOptions& o, const char* name) {
 // An option that changes nothing in the chosen scene is an error, not silently ignored.
 void checkUsedOptions(const SceneOptions& o) {
   const std::string& scene = o.scenario.name;
-  const bool steered = o.storyboard() || steersCircle(o) || o.mengeScene();
+  const bool steered = o.storyboard() || steersCircle(o) || o.mengeScene() || o.corridor();
   for (const char* name : {"--policy", "--radius"})
     if (given(o, name) && !steered)
       fail(name, ": steers the storyboard and circle scenes (without --speed-period), not '", scene,
@@ -64,6 +64,12 @@ void checkUsedOptions(const SceneOptions& o) {
   if (!o.mengeScene() && !o.menge.empty())
     fail("--menge makes the menge scene, not '", scene, "'");
   if (o.mengeScene() && o.menge.empty()) fail("--scene menge needs --menge PROJECT.xml");
+  if (o.corridor() && given(o, "--characters"))
+    fail("-n/--characters: the corridor's storyboard makes the crowd; use --corridor-length");
+  if (!o.corridor() && given(o, "--corridor-length"))
+    fail("--corridor-length: belongs to the corridor scene, not '", scene, "'");
+  if (o.corridor() && o.speedPeriod != 0.0f)
+    fail("--speed-period: corridor walkers take their speeds from the storyboard");
   if (o.mengeScene() && o.speedPeriod != 0.0f)
     fail("--speed-period: Menge agents walk at their profiles' preferred speeds");
   for (const char* name : {"--cell", "--jitter", "--step-time", "--legend"})
@@ -87,7 +93,12 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       .add_option("--scene", o.scenario.name,
                   "Scenario: random, circle or storyboard (with --storyboard)")
       ->capture_default_str()
-      ->check(oneOf("scene", {"random", "circle", "storyboard", "menge"}));
+      ->check(oneOf("scene", {"random", "circle", "storyboard", "menge", "corridor"}));
+  command
+      .add_option("--corridor-length", o.corridorLength,
+                  "The corridor scene: its length in metres (15 m wide; about 8 people per metre)")
+      ->capture_default_str()
+      ->check(inRange(10, 2000, "metres"));
   command.add_option("--menge", o.menge,
                      "A Menge scenario's project file (XML): its agents, obstacles, goals and "
                      "behaviour (the menge scene)");
@@ -206,6 +217,8 @@ void validateSceneOptions(SceneOptions& o) {
     validateMengeScene(o);
   } else if (o.storyboard()) {
     validateStoryboardScene(o);
+  } else if (o.corridor()) {
+    scenePolicy(o.story.policy);
   } else {
     if (!o.story.storyboard.empty() || !o.story.trajectories.empty())
       fail("--storyboard and --trajectories make the storyboard scene, not '", o.scenario.name,
@@ -287,6 +300,7 @@ synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& s
 float sceneExtent(const SceneOptions& o) {
   if (o.storyboard()) return o.story.extent;
   if (o.mengeScene()) return o.mengeExtent;
+  if (o.corridor()) return 0.5f * o.corridorLength;
   float extent = crowd::scenarioExtent(o.scenario);
   for (const scene::GroupDescription& g : o.groups) {
     crowd::ScenarioOptions s = o.scenario;

@@ -55,6 +55,7 @@ struct SceneOptions {
   // The Menge scene (--menge PROJECT.xml): its agents, walls, goals and behaviour. Validation
   // sets where it lies (the cameras look at its centre).
   std::string menge;
+  float corridorLength = 60.0f;  // the corridor scene (metres; 15 m wide)
   glm::vec2 mengeCentre{0.0f};
   float mengeExtent = 0.0f;
   // From a scene file (SCENE.json, tools/scene_file_options.h): its groups (empty: the one
@@ -69,6 +70,7 @@ struct SceneOptions {
   const CLI::App* command = nullptr;
   bool storyboard() const { return scenario.name == "storyboard"; }
   bool mengeScene() const { return scenario.name == "menge"; }
+  bool corridor() const { return scenario.name == "corridor"; }
 };
 
 // The motion cache keeps a few small per-bucket buffers: --bucket-width may not make more.

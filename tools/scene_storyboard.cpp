@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "scene/corridor_scene.h"
 #include "scene/menge_scene.h"
 
 namespace throng::tools {
@@ -99,6 +100,13 @@ bool steersCircle(const SceneOptions& o) {
 
 scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& clips) {
   if (o.mengeScene()) return readMenge(o, clips).setup;
+  if (o.corridor()) {
+    scene::CorridorDescription d;
+    d.length = o.corridorLength;
+    d.seed = o.scenario.seed;
+    d.avoidance = sceneAvoidance(o);
+    return scene::corridorScene(d);
+  }
   if (o.storyboard())
     return scene::storyboardScene(storyboardDescription(o, o.slowClip.empty() ? nullptr : &clips));
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);

@@ -55,10 +55,28 @@ SceneFile circleOrbit() {
   return s;
 }
 
+// The storyboard paper's subway corridor (about 500 people, 60 × 15 m), seen from inside; and
+// ten times as long (about 5,000 people).
+SceneFile corridor(float length, glm::vec3 eye, glm::vec3 target, float seconds) {
+  SceneFile s;
+  s.behaviour = "corridor";
+  s.corridorLength = length;
+  s.policy = "anticipatory";
+  s.eye = eye;
+  s.target = target;
+  s.seconds = seconds;
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, SceneFile>> exampleScenes() {
-  return {{"plaza_groups.json", plazaGroups()}, {"circle_orbit.json", circleOrbit()}};
+  return {{"plaza_groups.json", plazaGroups()},
+          {"circle_orbit.json", circleOrbit()},
+          // From above one open end, looking down the corridor.
+          {"corridor.json", corridor(60.0f, {-40.0f, 9.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 30.0f)},
+          {"corridor_long.json",
+           corridor(600.0f, {-330.0f, 40.0f, 0.0f}, {-150.0f, 0.0f, 0.0f}, 30.0f)}};
 }
 
 }  // namespace throng::scene

@@ -238,7 +238,7 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
   const Json doc = storyboard::parseJsonDocument(text, source);
   const Reader r(source, text);
   r.onlyKeys(doc, "",
-             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "avoidance",
+             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "corridor", "avoidance",
               "speed_period", "motion", "capes", "camera", "output"});
   if (r.text(doc, "", "schema", "") != kSchema)
     r.fail("/schema", concat("expected \"", kSchema, "\""));
@@ -246,10 +246,21 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
   SceneFile scene;
   scene.seed = uint64_t(r.number(doc, "", "seed", 0, 4294967295.0, 1));
   scene.behaviour =
-      r.text(doc, "", "behaviour", "plain", {"plain", "circle", "storyboard", "menge"});
+      r.text(doc, "", "behaviour", "plain", {"plain", "circle", "storyboard", "menge", "corridor"});
+  if (doc.contains("corridor") && scene.behaviour != "corridor")
+    r.fail("/corridor", "only the corridor behaviour has one");
   if (doc.contains("menge") && scene.behaviour != "menge")
     r.fail("/menge", "only the menge behaviour reads a Menge scenario");
-  if (scene.behaviour == "menge") {
+  if (scene.behaviour == "corridor") {
+    if (doc.contains("groups") || doc.contains("storyboard"))
+      r.fail(doc.contains("groups") ? "/groups" : "/storyboard",
+             "the corridor's agents come from its own quilted storyboard");
+    if (doc.contains("corridor")) {
+      r.onlyKeys(doc.at("corridor"), "/corridor", {"length"});
+      scene.corridorLength =
+          float(r.number(doc.at("corridor"), "/corridor", "length", 10.0, 2000.0, 60.0));
+    }
+  } else if (scene.behaviour == "menge") {
     scene.menge = r.file(doc, "", "menge", baseDir);
     if (scene.menge.empty()) r.fail("/behaviour", "the menge behaviour needs a menge project file");
     if (doc.contains("groups") || doc.contains("storyboard"))
@@ -344,7 +355,9 @@ std::string writeSceneFile(const SceneFile& s) {
   doc["version"] = 1;
   doc["seed"] = s.seed;
   doc["behaviour"] = s.behaviour;
-  if (s.behaviour == "menge") {
+  if (s.behaviour == "corridor") {
+    doc["corridor"] = {{"length", tidy(s.corridorLength)}};
+  } else if (s.behaviour == "menge") {
     doc["menge"] = absolute(s.menge);
   } else if (s.behaviour == "storyboard") {
     const StoryboardSceneDescription& d = s.storyboard;
@@ -358,7 +371,7 @@ std::string writeSceneFile(const SceneFile& s) {
     for (const GroupDescription& g : s.groups) doc["groups"].push_back(groupJson(g));
   }
   if (s.behaviour == "menge") doc["avoidance"] = {{"policy", s.policy}};
-  if (s.behaviour == "circle" || s.behaviour == "storyboard")
+  if (s.behaviour == "circle" || s.behaviour == "storyboard" || s.behaviour == "corridor")
     doc["avoidance"] = {{"policy", s.policy}, {"radius", tidy(s.radius)}};
   if (s.behaviour == "plain") doc["speed_period"] = tidy(s.speedPeriod);
   doc["motion"] = {{"lod", s.lod},

@@ -22,8 +22,9 @@ namespace throng::scene {
 
 struct SceneFile {
   uint64_t seed = 1;
-  std::string behaviour = "plain";  // plain, circle, storyboard or menge
+  std::string behaviour = "plain";  // plain, circle, storyboard, menge or corridor
   std::string menge;                // the menge behaviour's project file (XML)
+  float corridorLength = 60.0f;     // the corridor behaviour's length (metres)
   std::vector<GroupDescription> groups;
   StoryboardSceneDescription storyboard;  // the storyboard behaviour's files and options
   std::string policy = "anticipatory";    // avoidance (circle and storyboard)
