@@ -17,7 +17,7 @@ constexpr const char* kSceneFlags[] = {
     "--target",       "--fov",          "--dt",        "--cache",
     "--cache-budget", "--bucket-width", "--speed-period", "--lod",       "--storyboard",
     "--trajectories", "--legend",       "--cell",         "--jitter",    "--policy",
-    "--radius",       "--step-time",    "--cloth",        "--menge",        "--corridor-length"};
+    "--radius",       "--step-time",    "--cloth",        "--menge",        "--corridor-length", "--walls"};
 
 std::string vec3Text(const glm::vec3& v) {
   char text[96];
@@ -74,6 +74,7 @@ void applySceneFile(SceneOptions& o) {
   o.cacheBudgetMb = f.cacheBudgetMb;
   o.bucketWidth = f.bucketWidth;
   o.cloth = f.capes;
+  o.walls = f.walls;
   o.cameraPreset = f.cameraPreset;
   o.eye = f.eye ? vec3Text(*f.eye) : "";
   o.target = f.target ? vec3Text(*f.target) : "";
@@ -122,6 +123,7 @@ scene::SceneFile sceneFileOf(const SceneOptions& o, float seconds) {
   f.cacheBudgetMb = o.cacheBudgetMb;
   f.bucketWidth = o.bucketWidth;
   f.capes = o.cloth;
+  f.walls = o.walls;
   f.cameraPreset = o.cameraPreset;
   if (!o.eye.empty()) f.eye = render::parseVec3(o.eye, "--eye");
   if (!o.target.empty()) f.target = render::parseVec3(o.target, "--target");

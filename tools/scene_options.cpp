@@ -68,6 +68,9 @@ void checkUsedOptions(const SceneOptions& o) {
     fail("-n/--characters: the corridor's storyboard makes the crowd; use --corridor-length");
   if (!o.corridor() && given(o, "--corridor-length"))
     fail("--corridor-length: belongs to the corridor scene, not '", scene, "'");
+  if (!o.walls.empty() && !steered)
+    fail("--walls: walls need a steered scene (circle, storyboard, menge or corridor), not '",
+         scene, "'");
   if (o.corridor() && o.speedPeriod != 0.0f)
     fail("--speed-period: corridor walkers take their speeds from the storyboard");
   if (o.mengeScene() && o.speedPeriod != 0.0f)
@@ -91,9 +94,13 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
                      "the scene flags");
   command
       .add_option("--scene", o.scenario.name,
-                  "Scenario: random, circle or storyboard (with --storyboard)")
+                  "Scenario: random, circle, storyboard (with --storyboard), menge (with --menge) or "
+                  "corridor")
       ->capture_default_str()
       ->check(oneOf("scene", {"random", "circle", "storyboard", "menge", "corridor"}));
+  command.add_option("--walls", o.walls,
+                     "Walls file (docs/formats.md): static walls every steered scene (circle, "
+                     "storyboard, menge, corridor) avoids and never crosses");
   command
       .add_option("--corridor-length", o.corridorLength,
                   "The corridor scene: its length in metres (15 m wide; about 8 people per metre)")

@@ -56,6 +56,7 @@ struct SceneOptions {
   // sets where it lies (the cameras look at its centre).
   std::string menge;
   float corridorLength = 60.0f;  // the corridor scene (metres; 15 m wide)
+  std::string walls;             // --walls FILE: more walls for a steered scene
   glm::vec2 mengeCentre{0.0f};
   float mengeExtent = 0.0f;
   // From a scene file (SCENE.json, tools/scene_file_options.h): its groups (empty: the one

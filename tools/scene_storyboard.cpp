@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "crowd/walls_file.h"
 #include "scene/corridor_scene.h"
 #include "scene/menge_scene.h"
 
@@ -98,7 +99,22 @@ bool steersCircle(const SceneOptions& o) {
   return o.scenario.name == "circle" && o.speedPeriod == 0.0f;
 }
 
+namespace {
+scene::SceneSetup makeSetupWithoutWalls(const SceneOptions& o, const anim::ClipPair& clips);
+}
+
 scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& clips) {
+  scene::SceneSetup setup = makeSetupWithoutWalls(o, clips);
+  if (!o.walls.empty()) {
+    const crowd::Obstacles more = crowd::loadWalls(o.walls);
+    setup.walls.segments.insert(setup.walls.segments.end(), more.segments.begin(),
+                                more.segments.end());
+  }
+  return setup;
+}
+
+namespace {
+scene::SceneSetup makeSetupWithoutWalls(const SceneOptions& o, const anim::ClipPair& clips) {
   if (o.mengeScene()) return readMenge(o, clips).setup;
   if (o.corridor()) {
     scene::CorridorDescription d;
@@ -121,6 +137,8 @@ scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& cl
     return scene::circleScene(makeSceneCrowd(o), std::move(pair), sceneAvoidance(o));
   return scene::plainScene(makeSceneCrowd(o), std::move(pair), sceneSpeedSchedule(o));
 }
+
+}  // namespace
 
 std::unique_ptr<scene::Scene> makeScene(const gpu::Context& context, const SceneOptions& o,
                                         const anim::ClipPair& clips) {

@@ -238,7 +238,7 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
   const Json doc = storyboard::parseJsonDocument(text, source);
   const Reader r(source, text);
   r.onlyKeys(doc, "",
-             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "corridor", "avoidance",
+             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "corridor", "walls", "avoidance",
               "speed_period", "motion", "capes", "camera", "output"});
   if (r.text(doc, "", "schema", "") != kSchema)
     r.fail("/schema", concat("expected \"", kSchema, "\""));
@@ -293,6 +293,9 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
     r.fail("/speed_period", "speed changes apply to the plain behaviour only");
   if (doc.contains("motion")) readMotion(r, doc.at("motion"), "/motion", scene);
   scene.capes = r.file(doc, "", "capes", baseDir);
+  scene.walls = r.file(doc, "", "walls", baseDir);
+  if (!scene.walls.empty() && scene.behaviour == "plain")
+    r.fail("/walls", "walls need a steered behaviour (circle, storyboard, menge or corridor)");
   if (doc.contains("camera")) readCamera(r, doc.at("camera"), "/camera", scene);
   if (doc.contains("output")) readOutput(r, doc.at("output"), "/output", scene);
   return scene;
@@ -379,6 +382,7 @@ std::string writeSceneFile(const SceneFile& s) {
                    {"cache_budget_mb", tidy(s.cacheBudgetMb)},
                    {"bucket_width", tidy(s.bucketWidth)}};
   if (!s.capes.empty()) doc["capes"] = absolute(s.capes);
+  if (!s.walls.empty()) doc["walls"] = absolute(s.walls);
   doc["camera"] = cameraJson(s);
   doc["output"] = {{"size", s.size}, {"fps", tidy(s.fps)}, {"seconds", tidy(s.seconds)}};
   return doc.dump(2) + "\n";

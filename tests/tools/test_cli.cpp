@@ -73,11 +73,11 @@ TEST_CASE("cli: bad choices and numbers out of range are usage errors that say w
   };
   const Case cases[] = {
       {"render --scene foo",
-       "error: --scene: unknown scene 'foo': expected random, circle or "
-       "storyboard"},
+       "error: --scene: unknown scene 'foo': expected random, circle, storyboard, menge or "
+       "corridor"},
       {"view --scene foo",
-       "error: --scene: unknown scene 'foo': expected random, circle or "
-       "storyboard"},
+       "error: --scene: unknown scene 'foo': expected random, circle, storyboard, menge or "
+       "corridor"},
       {"render --camera foo",
        "error: --camera: unknown camera preset 'foo': expected wide, top, "
        "street or closeup"},
