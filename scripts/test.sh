@@ -2,7 +2,7 @@
 # Fresh machine → all tests: installs the packages, builds, runs every suite (GPU suites on
 # lavapipe with two threads, the Khronos validation layer and a random test order), then the CPU
 # suites again under AddressSanitizer + UndefinedBehaviorSanitizer, then every libFuzzer harness
-# for THRONG_FUZZ_SECONDS (default 30) seconds each: any finding fails the run.
+# for THRONG_FUZZ_SECONDS (default 20) seconds each: any finding fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -20,4 +20,4 @@ for test in $(ctest --test-dir build-asan -N -L cpu 2>/dev/null | sed -n 's/^ *T
 done
 cmake --build --preset asan -j"$jobs" --target "${targets[@]}"
 ctest --preset asan-cpu -j1
-./scripts/fuzz.sh "${THRONG_FUZZ_SECONDS:-30}"
+./scripts/fuzz.sh "${THRONG_FUZZ_SECONDS:-20}"
