@@ -11,6 +11,7 @@
 #include "cli_support.h"
 #include "core/file_io.h"
 #include "secondary/offline/cloth_compress.h"
+#include "json_keys.h"
 
 using namespace throng;
 
@@ -30,20 +31,7 @@ std::filesystem::path exploredCape(const std::filesystem::path& dir) {
 nlohmann::json reportOf(const std::string& output) {
   return nlohmann::json::parse(output.substr(output.find('{')));
 }
-// The first key anywhere in `j` that is not snake_case ("" when every key is).
-std::string firstNonSnakeKey(const nlohmann::json& j) {
-  auto snake = [](const std::string& key) {
-    return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
-      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-    });
-  };
-  if (!j.is_structured()) return {};
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (j.is_object() && !snake(it.key())) return it.key();
-    if (std::string inner = firstNonSnakeKey(*it); !inner.empty()) return inner;
-  }
-  return {};
-}
+using throng::test::firstNonSnakeKey;
 // The number printed after `"key": ` in pretty-printed JSON text.
 std::string numberTextOf(const std::string& text, const std::string& key) {
   const std::string field = "\"" + key + "\": ";

@@ -12,24 +12,12 @@
 
 #include "cli_support.h"
 #include "core/file_io.h"
+#include "json_keys.h"
 
 using namespace throng;
 
 namespace {
-// The first key anywhere in `j` that is not snake_case ("" when every key is).
-std::string firstNonSnakeKey(const nlohmann::json& j) {
-  auto snake = [](const std::string& key) {
-    return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
-      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-    });
-  };
-  if (!j.is_structured()) return {};
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (j.is_object() && !snake(it.key())) return it.key();
-    if (std::string inner = firstNonSnakeKey(*it); !inner.empty()) return inner;
-  }
-  return {};
-}
+using throng::test::firstNonSnakeKey;
 }  // namespace
 
 TEST_CASE("bench --quick: JSON rows for every variant, medians present") {

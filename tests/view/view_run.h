@@ -9,6 +9,7 @@
 
 #include "cli_support.h"
 #include "xvfb_server.h"
+#include "json_keys.h"
 
 namespace throng::test {
 
@@ -28,20 +29,6 @@ inline ViewRun runView(const std::string& args) {
   return run;
 }
 
-// The first key anywhere in `j` that is not snake_case ("" when every key is).
-inline std::string firstNonSnakeKey(const nlohmann::json& j) {
-  auto snake = [](const std::string& key) {
-    return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
-      return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-    });
-  };
-  if (!j.is_structured()) return {};
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (j.is_object() && !snake(it.key())) return it.key();
-    if (std::string inner = firstNonSnakeKey(*it); !inner.empty()) return inner;
-  }
-  return {};
-}
 
 inline void writeText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path);
