@@ -26,7 +26,7 @@ static_assert(kPresenterFrames <= kFramesInFlight,
 
 struct PresentFrame {
   VkCommandBuffer cmd = VK_NULL_HANDLE;
-  uint32_t slot = 0;        // < kPresenterFrames: pass to recordCrowdFrame as frameSlot
+  uint32_t slot = 0;        // < kPresenterFrames: pass to scene::recordFrame as frameSlot
   uint32_t imageIndex = 0;  // the swapchain image being drawn
   FrameTargets targets;  // finalLayout COLOR_ATTACHMENT_OPTIMAL: overlays may draw after the crowd
   gpu::TimestampPool* timestamps = nullptr;  // reset and owned by this slot
