@@ -323,12 +323,17 @@ float sceneGroundExtent(const SceneOptions& o) {
   return 1.6f * sceneExtent(o) + 40.0f;
 }
 
-render::Camera sceneCamera(const SceneOptions& o) {
-  render::Camera camera = render::cameraPreset(o.cameraPreset, sceneExtent(o));
+render::Camera scenePreset(const SceneOptions& o, const std::string& preset) {
+  render::Camera camera = render::cameraPreset(preset, sceneExtent(o));
   // Presets look at the origin; a Menge scene lies wherever its file puts it.
   const glm::vec3 centre(o.mengeCentre.x, 0.0f, o.mengeCentre.y);
   camera.eye += centre;
   camera.target += centre;
+  return camera;
+}
+
+render::Camera sceneCamera(const SceneOptions& o) {
+  render::Camera camera = scenePreset(o, o.cameraPreset);
   if (!o.eye.empty()) camera.eye = render::parseVec3(o.eye, "--eye");
   if (!o.target.empty()) camera.target = render::parseVec3(o.target, "--target");
   if (o.fovY) camera.fovYDegrees = *o.fovY;

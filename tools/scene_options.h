@@ -103,6 +103,8 @@ crowd::Crowd makeSceneCrowd(const SceneOptions& options);
 synth::MotionCacheOptions sceneCacheOptions(const SceneOptions& options);
 synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& options);
 synth::LodOptions sceneLodOptions(const SceneOptions& options, const anim::Skeleton& skeleton);
+// A named preset framed for the scene (around its centre); sceneCamera adds --eye/--target/--fov.
+render::Camera scenePreset(const SceneOptions& options, const std::string& preset);
 render::Camera sceneCamera(const SceneOptions& options);
 // Half the side (or the radius) of the ground the crowd starts on, and the ground drawn.
 float sceneExtent(const SceneOptions& options);

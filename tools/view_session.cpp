@@ -19,7 +19,7 @@ namespace {
 
 // Keys 1-4 and the panel's preset buttons: the named preset framed for the current crowd.
 render::Camera presetCamera(int index, const SceneOptions& scene) {
-  return render::cameraPreset(kPresetNames[index], sceneExtent(scene));
+  return scenePreset(scene, kPresetNames[index]);
 }
 
 gpu::ContextOptions contextOptionsFor(const ViewOptions& o, const render::Window& window) {
