@@ -70,8 +70,12 @@ std::filesystem::path agentPath(const std::filesystem::path& out, uint32_t agent
 void runExport(ExportOptions& o, const CLI::App& command) {
   rejectRenderOnlyOptions(command);
   validateSceneOptions(o.scene);
-  if (o.scene.storyboard())
-    fail("export: storyboard crowds are steered on the GPU; export random or circle scenes");
+  if (o.scene.storyboard() || o.scene.mengeScene() || o.scene.corridor())
+    fail("export: ", o.scene.scenario.name,
+         " scenes are steered on the GPU (goals, walls); export random or circle scenes");
+  if (o.scene.groups.size() > 1)
+    fail("export: a scene of ", o.scene.groups.size(),
+         " groups has as many clip sets; export a scene of one group");
   if (o.frames < 1 || o.frames > 100000) fail("--frames: expected 1..100000, got ", o.frames);
   const std::filesystem::path out = o.out;
   const std::string extension = out.extension().string();
