@@ -7,7 +7,8 @@ using namespace throng;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   fuzz::expectParseOrError([&] {
-    const scene::SceneFile f = scene::parseSceneFile(fuzz::asText(data, size), "fuzz.json", "/scenes");
+    const scene::SceneFile f =
+        scene::parseSceneFile(fuzz::asText(data, size), "fuzz.json", "/scenes");
     const std::string text = scene::writeSceneFile(f);
     const scene::SceneFile g = scene::parseSceneFile(text, "written.json", "/scenes");
     if (scene::writeSceneFile(g) != text)

@@ -47,8 +47,8 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
     timestamps.reset();
     const scene::SceneStep step = crowd->advance(scene.dt);
     gpu::beginCommands(cmd);
-    scene::FrameTimestamps marks = scene::recordFrame(cmd, context, *crowd, step, renderer, &cloth,
-                                                      settings, timestamps);
+    scene::FrameTimestamps marks =
+        scene::recordFrame(cmd, context, *crowd, step, renderer, &cloth, settings, timestamps);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();

@@ -34,8 +34,7 @@ CacheRun runWithSpeedChanges(const gpu::Context& context, const synth::SynthProg
   scenario.characters = n;
   scenario.seed = 7;
   crowd::Crowd crowd = crowd::makeScenario(scenario);
-  if (cache.enabled)
-    anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
+  if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache);
   synth::SpeedSchedule schedule{o.speedPeriod, 7, 0.0f, 1.0f,
                                 cache.enabled ? cache.bucketWidth : 0.0f};

@@ -12,8 +12,8 @@ namespace throng::tools {
 struct ClipSetBenchResult {
   uint32_t characters = 0;
   int frames = 0;
-  double oneSetMs = 0.0;    // synthesis, median
-  double fourSetsMs = 0.0;  // synthesis, median
+  double oneSetMs = 0.0;                                     // synthesis, median
+  double fourSetsMs = 0.0;                                   // synthesis, median
   double ratioMedian = 0.0, ratioMin = 0.0, ratioMax = 0.0;  // per-frame pairs four / one
 };
 

@@ -42,8 +42,10 @@ void runGenerate(const AssetsOptions& options) {
 void addAssetsCommands(CLI::App& app) {
   CLI::App* assets = app.add_subcommand("assets", "The project's own default assets");
   assets->require_subcommand(1);
-  CLI::App* generate = assets->add_subcommand(
-      "generate", "Write the default clips (run, walk, idle/talk, hop pairs) from the parametric gait and the example scene files");
+  CLI::App* generate =
+      assets->add_subcommand("generate",
+                             "Write the default clips (run, walk, idle/talk, hop pairs) from the "
+                             "parametric gait and the example scene files");
   auto options = std::make_shared<AssetsOptions>();
   generate->add_option("--out", options->out, "Output directory")->capture_default_str();
   generate->callback([options] { runGenerate(*options); });

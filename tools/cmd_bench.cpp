@@ -18,9 +18,9 @@
 #include "core/file_io.h"
 #include "core/log.h"
 #include "gpu/commands.h"
-#include "scene/frame.h"
-#include "render/offscreen_target.h"
 #include "progress.h"
+#include "render/offscreen_target.h"
+#include "scene/frame.h"
 #include "scene_options.h"
 #include "stats.h"
 #include "synth/cpu_synth.h"
@@ -68,8 +68,7 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
                       const BenchOptions& o, Variant variant) {
   crowd::Crowd crowd = benchCrowd(n);
   synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
-  if (cache.enabled)
-    anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
+  if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
   // The default wide camera of `throng render` for this crowd, at 1280x720.
@@ -109,16 +108,15 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
           frames};
 }
 
-Row benchRender(const gpu::Context& context, const anim::MotionPair& pair, const anim::Skeleton& skeleton, const BenchOptions& o,
-                Variant variant) {
+Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
+                const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant) {
   Size size = parseSize(o.size);
   crowd::ScenarioOptions scenario;
   scenario.characters = o.renderCharacters;
   scenario.seed = 42;
   crowd::Crowd crowd = crowd::makeScenario(scenario);
   synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
-  if (cache.enabled)
-    anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
+  if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
   scene::SceneSetup setup;
   setup.pairs.push_back(pair);
@@ -284,11 +282,13 @@ void runBench(BenchOptions& o) {
   if (!o.clothOnly) {
     next("four clip sets against one");
     const ClipSetBenchResult sets = benchClipSets(context, o.clipSetCharacters, o.frames, o.warmup);
-    report({"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames});
+    report(
+        {"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames});
     report({"gpu-synthesis-lod+cache-4-clip-sets", sets.characters, sets.fourSetsMs, 0.0,
             sets.frames});
-    std::printf("  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
-                sets.ratioMedian, sets.ratioMin, sets.ratioMax);
+    std::printf(
+        "  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
+        sets.ratioMedian, sets.ratioMin, sets.ratioMax);
     next("synthesis and render");
     report(benchRender(context, pair, clips.slow.skeleton, o, Variant::Full));
     next("synthesis and render with LOD and cache");

@@ -179,8 +179,8 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     const scene::SceneStep step = scene.advance(o.scene.dt);
     settings.camera = render::cameraAt(o.scene.cameraPath, float(frame) * o.scene.dt, in.camera);
     gpu::beginCommands(cmd);
-    scene::FrameTimestamps marks = scene::recordFrame(cmd, context, scene, step, renderer,
-                                                      cloth.get(), settings, timestamps);
+    scene::FrameTimestamps marks =
+        scene::recordFrame(cmd, context, scene, step, renderer, cloth.get(), settings, timestamps);
     render::recordReadback(cmd, target);
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
@@ -216,9 +216,10 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames,
               scene.count(), synth.jointCount(), size.width, size.height, where.c_str());
   if (scene.steered())
-    std::printf("GPU time per frame (median): steering %.2f ms, synthesis %.2f ms, render %.2f ms"
-                "  [%s]\n",
-                median(steerMs), median(synthMs), median(renderMs), context.info().name.c_str());
+    std::printf(
+        "GPU time per frame (median): steering %.2f ms, synthesis %.2f ms, render %.2f ms"
+        "  [%s]\n",
+        median(steerMs), median(synthMs), median(renderMs), context.info().name.c_str());
   else
     std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
                 median(synthMs), median(renderMs), context.info().name.c_str());

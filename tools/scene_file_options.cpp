@@ -12,12 +12,12 @@ namespace {
 
 // The flags a scene file replaces: giving one with a file is an error, not a silent override.
 constexpr const char* kSceneFlags[] = {
-    "--scene",        "--characters",   "--seed",         "--speed-min", "--speed-max",
-    "--density",      "--slow",         "--fast",         "--camera",    "--eye",
-    "--target",       "--fov",          "--dt",        "--cache",
-    "--cache-budget", "--bucket-width", "--speed-period", "--lod",       "--storyboard",
-    "--trajectories", "--legend",       "--cell",         "--jitter",    "--policy",
-    "--radius",       "--step-time",    "--cloth",        "--menge",        "--corridor-length", "--walls"};
+    "--scene",        "--characters",   "--seed",   "--speed-min",       "--speed-max",
+    "--density",      "--slow",         "--fast",   "--camera",          "--eye",
+    "--target",       "--fov",          "--dt",     "--cache",           "--cache-budget",
+    "--bucket-width", "--speed-period", "--lod",    "--storyboard",      "--trajectories",
+    "--legend",       "--cell",         "--jitter", "--policy",          "--radius",
+    "--step-time",    "--cloth",        "--menge",  "--corridor-length", "--walls"};
 
 std::string vec3Text(const glm::vec3& v) {
   char text[96];

@@ -61,8 +61,7 @@ void checkUsedOptions(const SceneOptions& o) {
     fail("-n/--characters: the Menge scenario's generators make the crowd; drop -n with --menge");
   if (o.mengeScene() && given(o, "--radius"))
     fail("--radius: a Menge scenario gives each agent profile its radius");
-  if (!o.mengeScene() && !o.menge.empty())
-    fail("--menge makes the menge scene, not '", scene, "'");
+  if (!o.mengeScene() && !o.menge.empty()) fail("--menge makes the menge scene, not '", scene, "'");
   if (o.mengeScene() && o.menge.empty()) fail("--scene menge needs --menge PROJECT.xml");
   if (o.corridor() && given(o, "--characters"))
     fail("-n/--characters: the corridor's storyboard makes the crowd; use --corridor-length");
@@ -93,9 +92,10 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
                      "Scene file (JSON, docs/formats.md): the whole scene in one file, instead of "
                      "the scene flags");
   command
-      .add_option("--scene", o.scenario.name,
-                  "Scenario: random, circle, storyboard (with --storyboard), menge (with --menge) or "
-                  "corridor")
+      .add_option(
+          "--scene", o.scenario.name,
+          "Scenario: random, circle, storyboard (with --storyboard), menge (with --menge) or "
+          "corridor")
       ->capture_default_str()
       ->check(oneOf("scene", {"random", "circle", "storyboard", "menge", "corridor"}));
   command.add_option("--walls", o.walls,

@@ -7,8 +7,9 @@ SynthesisTimer::SynthesisTimer(const gpu::Context& context)
   cmd_ = pool_.allocate();
 }
 
-double SynthesisTimer::frame(const synth::SynthPrograms& programs, const synth::CrowdSynth& synth, float dt,
-                             const anim::SpeedRetarget& retarget, const synth::CoverageCamera* lodCamera) {
+double SynthesisTimer::frame(const synth::SynthPrograms& programs, const synth::CrowdSynth& synth,
+                             float dt, const anim::SpeedRetarget& retarget,
+                             const synth::CoverageCamera* lodCamera) {
   const synth::SynthPrograms* one[] = {&programs};
   return frame(one, synth, dt, retarget, lodCamera);
 }
@@ -20,7 +21,8 @@ double SynthesisTimer::frame(std::span<const synth::SynthPrograms* const> progra
   timestamps_.reset();
   gpu::beginCommands(cmd_);
   timestamps_.write(cmd_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-  synth::recordSynthesis(cmd_, programs, synth, dt, context_.info().maxStorageBufferRange, retarget, lodCamera);
+  synth::recordSynthesis(cmd_, programs, synth, dt, context_.info().maxStorageBufferRange, retarget,
+                         lodCamera);
   timestamps_.write(cmd_);
   gpu::endCommands(cmd_);
   gpu::submit(context_, cmd_, fence_.get());

@@ -14,10 +14,11 @@ class SynthesisTimer {
 
   // Runs recordSynthesis once and waits for it; returns its GPU milliseconds.
   double frame(const synth::SynthPrograms& programs, const synth::CrowdSynth& synth, float dt,
-               const anim::SpeedRetarget& retarget = {}, const synth::CoverageCamera* lodCamera = nullptr);
+               const anim::SpeedRetarget& retarget = {},
+               const synth::CoverageCamera* lodCamera = nullptr);
   // The same for a crowd of several groups (programs[k] for group k).
-  double frame(std::span<const synth::SynthPrograms* const> programs, const synth::CrowdSynth& synth,
-               float dt, const anim::SpeedRetarget& retarget = {},
+  double frame(std::span<const synth::SynthPrograms* const> programs,
+               const synth::CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget = {},
                const synth::CoverageCamera* lodCamera = nullptr);
 
  private:

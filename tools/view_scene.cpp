@@ -37,9 +37,9 @@ void installCrowd(const gpu::Context& context, ViewScene& scene, const SceneOpti
                   scene::SceneSetup& prepared) {
   scene.cloth.reset();  // it refers to the old crowd's buffers
   scene.crowd.reset();
-  scene.crowd = std::make_unique<scene::Scene>(context, std::move(prepared),
-                                               sceneCacheOptions(options),
-                                               sceneLodOptions(options, scene.skeleton));
+  scene.crowd =
+      std::make_unique<scene::Scene>(context, std::move(prepared), sceneCacheOptions(options),
+                                     sceneLodOptions(options, scene.skeleton));
   scene.options = options;
   scene.groundExtent = sceneGroundExtent(options);
   if (scene.clothDb)

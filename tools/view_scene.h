@@ -18,7 +18,7 @@ struct ViewScene {
   anim::ClipPair clips;     // what every respawn animates (the storyboard: with --slow/--fast)
   anim::Skeleton skeleton;  // the slow clip's: the coverage LOD finds the body parts in it
   std::string clipDescription;
-  SceneOptions options;  // the scene as last spawned
+  SceneOptions options;                 // the scene as last spawned
   std::unique_ptr<scene::Scene> crowd;  // the plain scenario's, the circle's or the storyboard's
   float groundExtent = 0.0f;
   double simulatedSeconds = 0.0;
@@ -29,8 +29,12 @@ struct ViewScene {
 };
 
 // What the frame synthesizes and draws.
-inline const synth::CrowdSynth& frameSynth(const ViewScene& s) { return s.crowd->synth(); }
-inline uint32_t characterCount(const ViewScene& s) { return s.crowd->count(); }
+inline const synth::CrowdSynth& frameSynth(const ViewScene& s) {
+  return s.crowd->synth();
+}
+inline uint32_t characterCount(const ViewScene& s) {
+  return s.crowd->count();
+}
 
 std::unique_ptr<ViewScene> makeViewScene(const gpu::Context& context, const SceneOptions& options,
                                          anim::ClipPair clips, VkFormat colorFormat);

@@ -7,7 +7,8 @@
 namespace throng::anim {
 
 MotionTexture bakeMotionTexture(const Clip& clip) {
-  if (clip.frameCount <= 0 || clip.jointCount() <= 0) fail(clip.name, ": empty clip cannot be baked");
+  if (clip.frameCount <= 0 || clip.jointCount() <= 0)
+    fail(clip.name, ": empty clip cannot be baked");
   MotionTexture tex;
   tex.jointCount = clip.jointCount();
   tex.frameCount = clip.frameCount;
@@ -35,18 +36,21 @@ float boneRadius(const Joint& joint, int index) {
 
 MotionPair makeMotionPair(const Clip& slow, const Clip& fast) {
   if (!slow.skeleton.sameTopology(fast.skeleton)) {
-    fail("slow clip ", slow.name, " has ", slow.jointCount(), " joints and fast clip ", fast.name, " has ",
-         fast.jointCount(), " (or different parents): a pair must share one skeleton topology");
+    fail("slow clip ", slow.name, " has ", slow.jointCount(), " joints and fast clip ", fast.name,
+         " has ", fast.jointCount(),
+         " (or different parents): a pair must share one skeleton topology");
   }
   MotionPair pair;
   pair.slow = bakeMotionTexture(slow);
   pair.fast = bakeMotionTexture(fast);
   pair.parents = slow.skeleton.parents();
-  for (int j = 0; j < slow.jointCount(); ++j) pair.jointRadius.push_back(boneRadius(slow.skeleton.joints[j], j));
+  for (int j = 0; j < slow.jointCount(); ++j)
+    pair.jointRadius.push_back(boneRadius(slow.skeleton.joints[j], j));
   for (int j = 0; j < slow.jointCount(); ++j) {
     bool animated = j == 0;
     for (const MotionTexture* tex : {&pair.slow, &pair.fast})
-      for (int f = 1; f < tex->frameCount && !animated; ++f) animated = tex->offset(f, j) != tex->offset(0, j);
+      for (int f = 1; f < tex->frameCount && !animated; ++f)
+        animated = tex->offset(f, j) != tex->offset(0, j);
     pair.animatedOffset.push_back(animated);
   }
   return pair;

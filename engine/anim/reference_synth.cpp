@@ -4,9 +4,9 @@
 #include <vector>
 
 #include "anim/speed_buckets.h"
-#include "shaders/shared_types.h"
 #include "core/error.h"
 #include "core/math.h"
+#include "shaders/shared_types.h"
 
 namespace throng::anim {
 namespace {

@@ -18,7 +18,6 @@ struct CharacterRef {
   glm::vec4& motion;
 };
 
-
 // Eq. 10: advances the phase by dt, moves the root by the blended displacement between the two
 // phases (each clip's root interpolated between its rows, so the step is continuous in the
 // phase) rotated by the heading and scaled, and switches w to wTarget only when a cycle ends.
@@ -56,7 +55,6 @@ struct PoseJoint {
   glm::vec4 rotation;
 };
 void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out);
-
 
 // World position of a point given in a joint draw matrix's unit space.
 glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p);

@@ -215,8 +215,7 @@ const ClipSpeeds& speedSet(const std::array<ClipSpeeds, 4>& table, uint32_t agen
 
 void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& frame,
               std::span<glm::vec4> placement, std::span<glm::vec4> motion,
-              std::span<const glm::vec4> goals, std::span<glm::vec4> steer,
-              const WallGrid* walls) {
+              std::span<const glm::vec4> goals, std::span<glm::vec4> steer, const WallGrid* walls) {
   const size_t n = placement.size();
   THRONG_CHECK(!walls || walls->reach >= p.sensing, "steerCpu: walls binned to ",
                walls ? walls->reach : 0.0f, " m, the sensing distance is ", p.sensing, " m");
@@ -270,7 +269,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
             if (dist2 >= sensing2) continue;
             if (rule) {
               glm::vec2 theirs(other.z, other.w);
-              if (collides(x, vPref - theirs, p.lookahead, diameter2)) blocked = agentBlocked = true;
+              if (collides(x, vPref - theirs, p.lookahead, diameter2))
+                blocked = agentBlocked = true;
               if (collides(x, keep - theirs, p.lookahead, diameter2)) keepBlocked = true;
               for (uint32_t d = 0; d < gpu_types::kRuleDraws; ++d)
                 if (collides(x, draws[d] - theirs, p.lookahead, diameter2)) drawBlocked |= 1u << d;
@@ -311,7 +311,8 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
         for (uint32_t d = 0; d < gpu_types::kRuleDraws; ++d)
           if (collides(x, draws[d], p.lookahead, r2)) drawBlocked |= 1u << d;
       }
-      if (p.policy == SteerPolicy::Ttc) force += toFixed(wallTtcForce(p, vCur, firstTau, firstNormal));
+      if (p.policy == SteerPolicy::Ttc)
+        force += toFixed(wallTtcForce(p, vCur, firstTau, firstNormal));
     }
     glm::vec2 v = vPref;
     uint32_t flags = 0;

@@ -1,6 +1,6 @@
 #pragma once
-// Collision avoidance (docs/design.md, "Storyboard crowds"): each agent is a cylinder of a safe radius;
-// every step a uniform grid is built by counting sort (count and rank per cell, exclusive
+// Collision avoidance (docs/design.md, "Storyboard crowds"): each agent is a cylinder of a safe
+// radius; every step a uniform grid is built by counting sort (count and rank per cell, exclusive
 // prefix sum, scatter) and each agent looks at the agents of the nearby cells. Policies:
 //   * None: head for the path-vector waypoint, ignore others (the baseline of the metrics);
 //   * Rule (the published one): if the course towards the waypoint makes the safe cylinders

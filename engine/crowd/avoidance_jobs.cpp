@@ -191,12 +191,12 @@ WallBuffers uploadWalls(const gpu::Context& context, const WallGrid& walls) {
   static_assert(sizeof(Segment) == sizeof(glm::vec4));
   const std::vector<uint32_t> noStarts = {0u, 0u};
   const VkBufferUsageFlags texels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
-  b.segments = gpu::makeStorageBuffer<Segment>(context, walls.segments,
-                                               gpu::MemoryUse::DeviceLocal, texels);
+  b.segments =
+      gpu::makeStorageBuffer<Segment>(context, walls.segments, gpu::MemoryUse::DeviceLocal, texels);
   b.starts = gpu::makeStorageBuffer<uint32_t>(context, any ? walls.starts : noStarts,
                                               gpu::MemoryUse::DeviceLocal, texels);
-  b.indices = gpu::makeStorageBuffer<uint32_t>(context, walls.indices,
-                                               gpu::MemoryUse::DeviceLocal, texels);
+  b.indices =
+      gpu::makeStorageBuffer<uint32_t>(context, walls.indices, gpu::MemoryUse::DeviceLocal, texels);
   b.segmentTexels = gpu::makeBufferView(context, b.segments, VK_FORMAT_R32G32B32A32_SFLOAT);
   b.startTexels = gpu::makeBufferView(context, b.starts, VK_FORMAT_R32_UINT);
   b.indexTexels = gpu::makeBufferView(context, b.indices, VK_FORMAT_R32_UINT);
@@ -213,8 +213,8 @@ SavedPositions makeSavedPositions(const gpu::Context& context, uint32_t capacity
   return s;
 }
 
-void recordSavePositions(VkCommandBuffer cmd, const CrowdBuffers& crowd, const SavedPositions& saved,
-                         uint32_t first, uint32_t count) {
+void recordSavePositions(VkCommandBuffer cmd, const CrowdBuffers& crowd,
+                         const SavedPositions& saved, uint32_t first, uint32_t count) {
   if (size_t(first) + count > crowd.count || size_t(first) + count > saved.capacity)
     fail("recordSavePositions: agents ", first, " + ", count, " of a crowd of ", crowd.count,
          " and ", saved.capacity, " saved places");
@@ -284,8 +284,8 @@ std::vector<std::string> AvoidanceJob::validate() const {
   if (walls && !(walls->reach >= params.sensing))
     problems.push_back(concat("the walls were binned to reach ", walls->reach,
                               " m, less than the sensing distance ", params.sensing, " m"));
-  if (walls && (!walls->info || !walls->segmentTexels || !walls->startTexels ||
-                !walls->indexTexels))
+  if (walls &&
+      (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->indexTexels))
     problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   return problems;
 }

@@ -61,8 +61,8 @@ struct SavedPositions {
 SavedPositions makeSavedPositions(const gpu::Context& context, uint32_t capacity);
 // Copies the placement of agents [first, first + count) into `saved` (a transfer; barriers from
 // earlier compute writes and to later compute reads).
-void recordSavePositions(VkCommandBuffer cmd, const CrowdBuffers& crowd, const SavedPositions& saved,
-                         uint32_t first, uint32_t count);
+void recordSavePositions(VkCommandBuffer cmd, const CrowdBuffers& crowd,
+                         const SavedPositions& saved, uint32_t first, uint32_t count);
 
 // The grid's GPU arrays (Grid in avoidance.h), sized for up to `agentCapacity` agents.
 struct GridBuffers {

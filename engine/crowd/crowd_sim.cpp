@@ -85,7 +85,8 @@ uint32_t nextArrival(const AgentPaths& paths, uint32_t s) {
 }  // namespace
 
 WallGrid binWallsFor(const Obstacles& walls, const AvoidanceParams& avoidance) {
-  return binObstacles(walls, avoidance.sensing, std::max(avoidance.sensing, 2.0f * avoidance.radius));
+  return binObstacles(walls, avoidance.sensing,
+                      std::max(avoidance.sensing, 2.0f * avoidance.radius));
 }
 
 std::vector<float> expectedSpeeds(const AgentPaths& paths, uint32_t seconds) {
@@ -185,8 +186,8 @@ SimulationResult simulateCrowd(const gpu::Context* context, const SimulationSetu
     writeGoals(paths, s, goals);
     if (context) {
       if (!gpuRun) {
-        gpuRun = std::make_unique<GpuRun>(*context, crowd, goals, steer,
-                                          options.avoidance.cellSize, wallGrid);
+        gpuRun = std::make_unique<GpuRun>(*context, crowd, goals, steer, options.avoidance.cellSize,
+                                          wallGrid);
       } else {
         gpuRun->upload<glm::vec4>(gpuRun->agents.goals, goals);
         if (changed) {

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <memory>
 #include <vector>
 
 #include "crowd/avoidance_jobs.h"

@@ -281,8 +281,8 @@ void CrowdRenderer::endDraw(VkCommandBuffer cmd, const FrameTargets& target) {
                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, dstStage, dstAccess);
 }
 
-void CrowdRenderer::record(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
-                           uint32_t frameSlot) {
+void CrowdRenderer::record(VkCommandBuffer cmd, const FrameTargets& target,
+                           const DrawParams& params, uint32_t frameSlot) {
   recordSplat(cmd, params, frameSlot);
   beginDraw(cmd, target, params, frameSlot);
   endDraw(cmd, target);

@@ -38,7 +38,6 @@ struct DrawParams {
   uint32_t wallSegmentCount = 0;
 };
 
-
 // Camera, light and viewport of a frame as the shaders read them.
 gpu_types::FrameUniforms makeFrameUniforms(const DrawParams& params);
 

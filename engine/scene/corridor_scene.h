@@ -11,9 +11,9 @@
 namespace throng::scene {
 
 struct CorridorDescription {
-  float length = 60.0f;  // metres along x, centred at the origin
-  float width = 15.0f;   // metres along z
-  float cell = 0.15f;    // metres per storyboard pixel (glyph centres at least 5 px apart)
+  float length = 60.0f;   // metres along x, centred at the origin
+  float width = 15.0f;    // metres along z
+  float cell = 0.15f;     // metres per storyboard pixel (glyph centres at least 5 px apart)
   double density = 14.0;  // the sample storyboard's glyphs per 1000 px²
   uint64_t seed = 1;
   crowd::AvoidanceParams avoidance;

@@ -21,10 +21,9 @@ GroupDescription group(uint32_t count, const char* clips, glm::vec2 centre, floa
 SceneFile plazaGroups() {
   SceneFile s;
   s.seed = 3;
-  s.groups = {group(1500, "walk", {-45.0f, 0.0f}, 0.0f, 1.0f),
-              group(800, "run", {45.0f, 0.0f}, 0.2f, 1.0f),
-              group(300, "talk", {0.0f, -45.0f}, 0.0f, 1.0f),
-              group(400, "hop", {0.0f, 45.0f}, 0.0f, 1.0f)};
+  s.groups = {
+      group(1500, "walk", {-45.0f, 0.0f}, 0.0f, 1.0f), group(800, "run", {45.0f, 0.0f}, 0.2f, 1.0f),
+      group(300, "talk", {0.0f, -45.0f}, 0.0f, 1.0f), group(400, "hop", {0.0f, 45.0f}, 0.0f, 1.0f)};
   s.speedPeriod = 5.0f;
   s.cameraPreset = "wide";
   s.seconds = 6.0f;

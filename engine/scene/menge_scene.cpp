@@ -45,8 +45,8 @@ crowd::Obstacles mengeWalls(const menge::MengeScenario& s) {
 }
 
 struct GoalSetIndex {
-  std::map<int, uint32_t> set;                        // Menge goal set id → index
-  std::vector<std::map<int, uint32_t>> goal;          // per set: goal id → index
+  std::map<int, uint32_t> set;                // Menge goal set id → index
+  std::vector<std::map<int, uint32_t>> goal;  // per set: goal id → index
 };
 
 GoalSetIndex mengeGoalSets(const menge::Behavior& b, crowd::GoalScene& scene) {
@@ -122,13 +122,14 @@ uint32_t transitionTarget(const menge::Transition& t, const std::filesystem::pat
                           std::vector<std::string>& warnings) {
   if (t.targets.empty() || t.targets.front().stateIndex < 0) return crowd::kNoState;
   if (t.targets.size() > 1)
-    warnings.push_back(concat(where(file, t.line), ": a probabilistic target becomes its most "
+    warnings.push_back(concat(where(file, t.line),
+                              ": a probabilistic target becomes its most "
                               "likely state"));
-  const auto best = std::max_element(
-      t.targets.begin(), t.targets.end(),
-      [](const menge::TransitionTarget& a, const menge::TransitionTarget& b) {
-        return a.weight < b.weight;
-      });
+  const auto best =
+      std::max_element(t.targets.begin(), t.targets.end(),
+                       [](const menge::TransitionTarget& a, const menge::TransitionTarget& b) {
+                         return a.weight < b.weight;
+                       });
   return uint32_t(best->stateIndex);
 }
 
@@ -164,7 +165,8 @@ void applyTransitions(const menge::Behavior& b, std::vector<crowd::GoalState>& s
         break;
       default:
         warnings.push_back(concat(where(b.source, t.condition.line), ": condition '",
-                                  t.condition.type, "' has no equivalent: the transition is dropped"));
+                                  t.condition.type,
+                                  "' has no equivalent: the transition is dropped"));
         break;
     }
   }

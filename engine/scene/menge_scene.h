@@ -16,7 +16,7 @@ namespace throng::scene {
 
 struct MengeSceneResult {
   SceneSetup setup;
-  std::vector<std::string> warnings;  // the scenario's own, then the conversion's
+  std::vector<std::string> warnings;           // the scenario's own, then the conversion's
   glm::vec2 boundsMin{0.0f}, boundsMax{0.0f};  // agents, walls and goals (x, z)
 };
 

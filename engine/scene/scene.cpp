@@ -71,13 +71,13 @@ void Scene::makeSteering(const gpu::Context& context, SceneSetup& setup) {
   SteeringSetup& s = *setup.steering;
   std::vector<crowd::ClipSpeeds> speeds = clipSpeeds(pairs_, setup.groupFirst);
   if (s.goals) {
-    steering_ = std::make_unique<crowd::CrowdSteering>(context, count(), s.avoidance,
-                                                       std::move(speeds));
+    steering_ =
+        std::make_unique<crowd::CrowdSteering>(context, count(), s.avoidance, std::move(speeds));
     steering_->setGoals(context, std::move(*s.goals), setup.crowd.placement);
   } else {
     paths_ = std::move(s.paths);
-    steering_ = std::make_unique<crowd::CrowdSteering>(context, paths_, s.avoidance,
-                                                       std::move(speeds));
+    steering_ =
+        std::make_unique<crowd::CrowdSteering>(context, paths_, s.avoidance, std::move(speeds));
   }
   if (!setup.walls.empty()) {
     steering_->setWalls(context, setup.walls);

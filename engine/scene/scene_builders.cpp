@@ -109,8 +109,7 @@ crowd::Crowd groupCrowd(const GroupDescription& group, uint64_t seed, size_t ind
     p.x += group.centre.x;
     p.z += group.centre.y;
   }
-  if (bucketWidth > 0.0f)
-    anim::quantizeSpeeds(crowd.motion, bucketWidth);
+  if (bucketWidth > 0.0f) anim::quantizeSpeeds(crowd.motion, bucketWidth);
   return crowd;
 }
 

@@ -238,8 +238,8 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
   const Json doc = storyboard::parseJsonDocument(text, source);
   const Reader r(source, text);
   r.onlyKeys(doc, "",
-             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "corridor", "walls", "avoidance",
-              "speed_period", "motion", "capes", "camera", "output"});
+             {"schema", "version", "seed", "behaviour", "groups", "storyboard", "menge", "corridor",
+              "walls", "avoidance", "speed_period", "motion", "capes", "camera", "output"});
   if (r.text(doc, "", "schema", "") != kSchema)
     r.fail("/schema", concat("expected \"", kSchema, "\""));
   if (r.number(doc, "", "version", 1, 1, 0) != 1) r.fail("/version", "expected 1");

@@ -45,8 +45,8 @@ ClothLayer::ClothLayer(const gpu::Context& context, const ClothDatabase& db,
 void ClothLayer::recordCompute(VkCommandBuffer cmd, const render::Camera& camera, uint32_t width,
                                uint32_t height, uint32_t slot) {
   THRONG_CHECK(slot < render::kFramesInFlight, "frame slot ", slot, " out of range");
-  gpu_types::ClothView view = makeClothView(camera, width, height, cloth_.lod, options_.lod,
-                                            clothSplattable(cloth_));
+  gpu_types::ClothView view =
+      makeClothView(camera, width, height, cloth_.lod, options_.lod, clothSplattable(cloth_));
   view.viewport.w = options_.tintLevels ? 1.0f : 0.0f;
   std::memcpy(views_[slot].mapped(), &view, sizeof(view));
   gpu::TimestampPool& t = *timestamps_[slot];

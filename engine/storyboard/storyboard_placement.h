@@ -40,12 +40,13 @@ struct PlacementOptions {
 };
 
 struct Placement {
-  crowd::Crowd crowd;                            // ordered by clip set
-  std::vector<uint32_t> glyph;                   // per agent: its glyph in the storyboard
-  std::array<uint32_t, kActionCount + 1> setBegin{};  // clip set k: agents [setBegin[k], setBegin[k + 1])
-  std::vector<uint32_t> tint;                    // per agent: group number
-  std::vector<crowd::SpeedRange> speedRange;     // per agent: its state's range
-  std::vector<float> speed;                      // per agent: the desired speed drawn in it
+  crowd::Crowd crowd;           // ordered by clip set
+  std::vector<uint32_t> glyph;  // per agent: its glyph in the storyboard
+  std::array<uint32_t, kActionCount + 1>
+      setBegin{};                             // clip set k: agents [setBegin[k], setBegin[k + 1])
+  std::vector<uint32_t> tint;                 // per agent: group number
+  std::vector<crowd::SpeedRange> speedRange;  // per agent: its state's range
+  std::vector<float> speed;                   // per agent: the desired speed drawn in it
 };
 
 // World heading (radians, 0 faces +z, +π/2 faces +x) of a glyph heading.

@@ -9,7 +9,8 @@
 namespace throng::synth {
 
 void parallelFor(size_t count, unsigned threads, const std::function<void(size_t, size_t)>& body) {
-  threads = std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<size_t>(count, 1))));
+  threads =
+      std::max(1u, std::min<unsigned>(threads, static_cast<unsigned>(std::max<size_t>(count, 1))));
   if (threads == 1) {
     body(0, count);
     return;
@@ -40,8 +41,8 @@ void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, CharacterRa
   });
 }
 
-void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, std::span<JointMatrix> out,
-                  unsigned threads) {
+void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd,
+                  std::span<JointMatrix> out, unsigned threads) {
   poseCrowdCpu(pair, crowd, {0, crowd.size()}, out, threads);
 }
 
@@ -55,7 +56,8 @@ void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, Chara
   parallelFor(range.count, threads, [&](size_t begin, size_t stop) {
     for (size_t i = range.first + begin; i < range.first + stop; ++i) {
       auto* rows = reinterpret_cast<glm::vec4*>(&out[i * joints]);
-      anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i], std::span<glm::vec4>(rows, 3 * joints));
+      anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i],
+                          std::span<glm::vec4>(rows, 3 * joints));
     }
   });
 }

@@ -21,8 +21,8 @@ void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, u
 void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, CharacterRange range, float dt,
                   unsigned threads = 1, const anim::SpeedRetarget& retarget = {});
 // `out` holds crowd.size() × jointCount joint matrices (character i's from i × jointCount).
-void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, std::span<JointMatrix> out,
-                  unsigned threads = 1);
+void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd,
+                  std::span<JointMatrix> out, unsigned threads = 1);
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, CharacterRange range,
                   std::span<JointMatrix> out, unsigned threads = 1);
 

@@ -23,8 +23,8 @@ void checkGroups(std::span<const anim::MotionPair* const> pairs,
     if (!pairs[k]) fail("crowd group ", k, " has no motion pair");
     if (groupFirst[k + 1] <= groupFirst[k]) fail("crowd group ", k, " has no character");
     if (pairs[k]->jointCount() != pairs.front()->jointCount())
-      fail("every clip set of a crowd needs the same joint count (", pairs[k]->jointCount(),
-           " vs ", pairs.front()->jointCount(), ")");
+      fail("every clip set of a crowd needs the same joint count (", pairs[k]->jointCount(), " vs ",
+           pairs.front()->jointCount(), ")");
   }
 }
 
@@ -58,8 +58,8 @@ void allocateCacheLists(const gpu::Context& context, CrowdSynth& synth, size_t c
 // workgroups of 64.
 uint32_t poseChunk(const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
   const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
-  return static_cast<uint32_t>(
-      std::max<VkDeviceSize>(1, std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u)));
+  return static_cast<uint32_t>(std::max<VkDeviceSize>(
+      1, std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u)));
 }
 
 void checkPrograms(std::span<const SynthPrograms* const> programs, const CrowdSynth& synth) {
@@ -158,9 +158,8 @@ void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> p
                     const CrowdSynth& synth, const CoverageCamera& lodCamera) {
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
-    CoverageJob coverage{&synth.crowd, &g.coverageParts, nullptr,           &synth.masks,
-                         nullptr,      lodCamera,        synth.jointCount(), g.first,
-                         g.count};
+    CoverageJob coverage{&synth.crowd, &g.coverageParts,   nullptr, &synth.masks, nullptr,
+                         lodCamera,    synth.jointCount(), g.first, g.count};
     coverage.record(cmd, programs[k]->coverage);
   }
   gpu::computeToComputeBarrier(cmd);
@@ -220,8 +219,12 @@ void recordPose(VkCommandBuffer cmd, std::span<const SynthPrograms* const> progr
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
     for (uint32_t first = g.first; first < g.first + g.count; first += chunk, ++c) {
-      PoseJob pose{&g.motion, &synth.crowd, &synth.joints, first,
-                   std::min(chunk, g.first + g.count - first), VkDeviceSize(first) * perCharacter};
+      PoseJob pose{&g.motion,
+                   &synth.crowd,
+                   &synth.joints,
+                   first,
+                   std::min(chunk, g.first + g.count - first),
+                   VkDeviceSize(first) * perCharacter};
       pose.masks = lod ? &synth.masks : nullptr;
       if (cached) {
         pose.characterList = &synth.characterLists;

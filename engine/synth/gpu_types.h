@@ -3,15 +3,16 @@
 #include "shaders/shared_types.h"
 
 namespace throng::synth {
+using gpu_types::CacheCounters;
+using gpu_types::CachePush;
 using gpu_types::JointMatrix;
 using gpu_types::PosePush;
 using gpu_types::RootMotionPush;
-using gpu_types::CacheCounters;
-using gpu_types::CachePush;
 
 static_assert(sizeof(JointMatrix) == 48, "JointMatrix must match the GLSL std430 layout");
 static_assert(sizeof(RootMotionPush) == 96, "RootMotionPush must match the GLSL push block");
 static_assert(sizeof(PosePush) == 48, "PosePush must match the GLSL push block");
-static_assert(sizeof(gpu_types::CacheCounters) == 32, "CacheCounters must match the GLSL std430 layout");
+static_assert(sizeof(gpu_types::CacheCounters) == 32,
+              "CacheCounters must match the GLSL std430 layout");
 static_assert(sizeof(gpu_types::CachePush) == 48, "CachePush must match the GLSL push block");
 }  // namespace throng::synth

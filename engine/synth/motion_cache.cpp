@@ -76,13 +76,14 @@ gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache*
     fail("motion cache: ", matrices, " cached joint matrices are more than a 32-bit index reaches",
          " (lower the cache budget)");
   // A small buffer when every cache is disabled, so the passes always have their bindings.
-  return gpu::Buffer(context, std::max<uint64_t>(16 * sizeof(JointMatrix), matrices * sizeof(JointMatrix)),
+  return gpu::Buffer(context,
+                     std::max<uint64_t>(16 * sizeof(JointMatrix), matrices * sizeof(JointMatrix)),
                      gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
 }
 
 MotionCacheStats addCacheStats(const MotionCacheStats& a, const MotionCacheStats& b) {
-  return {a.hits + b.hits,           a.misses + b.misses,       a.evictions + b.evictions,
-          a.entries + b.entries,     a.bytesUsed + b.bytesUsed, a.budgetBytes + b.budgetBytes};
+  return {a.hits + b.hits,       a.misses + b.misses,       a.evictions + b.evictions,
+          a.entries + b.entries, a.bytesUsed + b.bytesUsed, a.budgetBytes + b.budgetBytes};
 }
 
 MotionCacheStats readCacheStats(const GpuMotionCache& cache) {

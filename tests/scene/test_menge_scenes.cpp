@@ -12,8 +12,8 @@
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "menge/menge.h"
-#include "scene/frame_stages.h"
 #include "scene/corridor_scene.h"
+#include "scene/frame_stages.h"
 #include "scene/menge_scene.h"
 #include "test_support.h"
 
@@ -165,7 +165,8 @@ TEST_CASE("Menge bottleneck scaled to 200 agents: flow through the 2 m opening")
   }
 }
 
-TEST_CASE("the corridor scene: about 500 people, nobody leaves the corridor, walkers reach the far end") {
+TEST_CASE(
+    "the corridor scene: about 500 people, nobody leaves the corridor, walkers reach the far end") {
   scene::CorridorDescription d;
   scene::SceneSetup setup = scene::corridorScene(d);
   const size_t agents = setup.crowd.size();
@@ -183,8 +184,8 @@ TEST_CASE("the corridor scene: about 500 people, nobody leaves the corridor, wal
   for (const glm::vec4& p : end)
     outside += std::abs(p.x) <= 0.5f * d.length + 6.0f && std::abs(p.z) > 0.5f * d.width ? 1 : 0;
   MESSAGE("corridor: ", agents, " agents; after ", r.seconds, " s ", r.atGoal,
-          " walkers at the far end; wall crossings ", r.walls.crossings, ", closer than the radius ",
-          r.walls.tooClose, ", outside ", outside);
+          " walkers at the far end; wall crossings ", r.walls.crossings,
+          ", closer than the radius ", r.walls.tooClose, ", outside ", outside);
   CHECK(r.walls.crossings == 0);
   CHECK(r.walls.tooClose == 0);
   CHECK(outside == 0);

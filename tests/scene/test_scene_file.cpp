@@ -2,10 +2,10 @@
 // same; relative files resolve against the file's folder. No GPU.
 #include <doctest/doctest.h>
 
-#include "core/error.h"
-#include "render/camera_path.h"
 #include <filesystem>
 #include <fstream>
+#include "core/error.h"
+#include "render/camera_path.h"
 
 #include "scene/example_scenes.h"
 #include "scene/json_lines.h"
@@ -154,7 +154,8 @@ TEST_CASE("camera path: linear between keyframes, held outside them") {
 TEST_CASE("the committed example scenes are what `throng assets generate` writes, and read back") {
   for (const auto& [name, scene] : scene::exampleScenes()) {
     CAPTURE(name);
-    const std::filesystem::path path = std::filesystem::path(THRONG_SOURCE_DIR) / "assets/scenes" / name;
+    const std::filesystem::path path =
+        std::filesystem::path(THRONG_SOURCE_DIR) / "assets/scenes" / name;
     REQUIRE_MESSAGE(std::filesystem::exists(path), "run `throng assets generate --out assets`");
     std::ifstream in(path);
     const std::string committed((std::istreambuf_iterator<char>(in)), {});
