@@ -11,18 +11,7 @@ namespace throng::crowd {
 
 CrowdSteering::CrowdSteering(const gpu::Context& context, const AgentPaths& paths,
                              const AvoidanceParams& avoidance, std::vector<ClipSpeeds> speeds)
-    : avoidance_(avoidance),
-      count_(uint32_t(paths.size())),
-      programs_(context),
-      speeds_(std::move(speeds)) {
-  if (count_ == 0) fail("steering needs at least one agent");
-  const std::vector<std::string> problems = validateParams(avoidance_);
-  if (!problems.empty()) fail("avoidance parameters: ", problems.front());
-  if (speeds_.empty() || speeds_.back().end != count_)
-    fail("steering: the clip sets' speed ranges must end at the ", count_, " agents");
-  std::vector<glm::vec4> goals(count_, glm::vec4(0.0f)), steer(count_, glm::vec4(0.0f));
-  agents_ = uploadSteer(context, goals, steer);
-  grid_ = makeGridBuffers(context, count_, avoidance_.cellSize);
+    : CrowdSteering(context, uint32_t(paths.size()), avoidance, std::move(speeds)) {
   paths_ = uploadPaths(context, paths);
   hasPaths_ = true;
 }
