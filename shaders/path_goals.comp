@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Path-vector waypoints for one simulated second, on the GPU (once per second, not per step):
 // goal[i] = (start + R · Σ_{k≤j} P_k, max speed, 1) for agents active during that second, 0 for
-// the others. A source's vectors loop: past its end the agent starts over from where it is.
+// the others. A source's vectors loop: past its end the agent starts over from where it is,
+// unless the source holds its end (kPathHoldsEnd), when its last waypoint stays the goal.
 // CPU twin: crowd::writeGoals (AgentPaths::waypoint).
 #include "crowd_types.h"
 #include "crowd_bindings.h"
@@ -24,8 +25,9 @@ void main() {
     return;
   }
   uvec2 range = sourceRange[info.x];
+  uint n = range.y & ~kPathHoldsEnd;
   uint j = push.second - info.y + 1u;
-  uint n = range.y;
+  if ((range.y & kPathHoldsEnd) != 0u) j = min(j, n);
   vec2 offset = j <= n ? cumulative[range.x + j] : float(j / n) * cumulative[range.x + n] + cumulative[range.x + j % n];
   vec4 start = agentStart[i];
   vec2 w = start.xy + vec2(start.z * offset.x - start.w * offset.y, start.w * offset.x + start.z * offset.y);

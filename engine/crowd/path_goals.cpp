@@ -12,9 +12,15 @@ PathBuffers uploadPaths(const gpu::Context& context, const AgentPaths& paths) {
   const size_t n = paths.size();
   std::vector<glm::uvec2> ranges;
   std::vector<glm::vec2> cumulative;
-  for (const std::vector<glm::vec2>& c : paths.cumulative) {
+  if (!paths.holdsEnd.empty() && paths.holdsEnd.size() != paths.cumulative.size())
+    fail("paths: ", paths.holdsEnd.size(), " hold flags for ", paths.cumulative.size(),
+         " sources");
+  for (size_t k = 0; k < paths.cumulative.size(); ++k) {
+    const std::vector<glm::vec2>& c = paths.cumulative[k];
     if (c.size() < 2) fail("a path source has no path vector");
-    ranges.push_back({uint32_t(cumulative.size()), uint32_t(c.size() - 1)});
+    if (c.size() - 1 >= gpu_types::kPathHoldsEnd) fail("a path source has too many vectors");
+    const uint32_t hold = paths.holds(uint32_t(k)) ? gpu_types::kPathHoldsEnd : 0u;
+    ranges.push_back({uint32_t(cumulative.size()), uint32_t(c.size() - 1) | hold});
     cumulative.insert(cumulative.end(), c.begin(), c.end());
   }
   std::vector<glm::vec4> start(n);

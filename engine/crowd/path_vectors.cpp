@@ -139,6 +139,7 @@ float speedWeight(float speed, float slowSpeed, float fastSpeed) {
 glm::vec2 AgentPaths::waypoint(size_t agent, uint32_t j) const {
   const std::vector<glm::vec2>& c = cumulative[source[agent]];
   const uint32_t n = uint32_t(c.size() - 1);
+  if (holds(source[agent])) j = std::min(j, n);
   glm::vec2 offset = j <= n ? c[j] : float(j / n) * c[n] + c[j % n];
   return start[agent] + rotate(rotation[agent], offset);
 }

@@ -59,11 +59,15 @@ struct AgentPaths {
   std::vector<float> maxSpeed;        // per agent: speed cap while catching up (m/s)
   std::vector<uint32_t> firstSecond;  // per agent: simulation second it appears at
   std::vector<uint32_t> lastSecond;   // per agent: second it leaves at (UINT32_MAX: never)
+  // Per source: 1 when the path ends at its last waypoint instead of starting over (a walk to a
+  // destination, such as the corridor's far end); empty: every path loops.
+  std::vector<uint8_t> holdsEnd;
 
   size_t size() const { return source.size(); }
   bool active(size_t agent, uint32_t second) const {
     return second >= firstSecond[agent] && second < lastSecond[agent];
   }
+  bool holds(uint32_t source) const { return source < holdsEnd.size() && holdsEnd[source] != 0; }
   // Where the agent is due at the end of its `j`-th second (j = 0: its start).
   glm::vec2 waypoint(size_t agent, uint32_t j) const;
 };

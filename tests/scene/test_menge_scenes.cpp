@@ -12,7 +12,6 @@
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "menge/menge.h"
-#include "scene/corridor_scene.h"
 #include "scene/frame_stages.h"
 #include "scene/menge_scene.h"
 #include "test_support.h"
@@ -163,31 +162,4 @@ TEST_CASE("Menge bottleneck scaled to 200 agents: flow through the 2 m opening")
     CHECK(flow > 0.3);  // agents do stream through; the figure itself is reported, not asserted
     CHECK(ctx.validationMessageCount() == 0);
   }
-}
-
-TEST_CASE(
-    "the corridor scene: about 500 people, nobody leaves the corridor, walkers reach the far end") {
-  scene::CorridorDescription d;
-  scene::SceneSetup setup = scene::corridorScene(d);
-  const size_t agents = setup.crowd.size();
-  CHECK(agents > 400);
-  CHECK(agents < 650);
-  const crowd::AvoidanceParams avoidance = setup.steering->avoidance;
-  const crowd::WallGrid walls = crowd::binWallsFor(setup.walls, avoidance);
-  scene::Scene s(test::gpuContext(), std::move(setup), {true, 0.05f, 20ull << 20}, {});
-  const RunResult r = runScene(s, &walls, avoidance.radius, 60.0);
-  // Along the corridor (and the 6 m of wall past each end) every agent is between the walls
-  // (|z| < 7.5 m) at the end; past the walls' ends walkers have arrived and spread out.
-  const std::vector<glm::vec4> end =
-      gpu::readback<glm::vec4>(test::gpuContext(), s.crowd().placement, s.count());
-  size_t outside = 0;
-  for (const glm::vec4& p : end)
-    outside += std::abs(p.x) <= 0.5f * d.length + 6.0f && std::abs(p.z) > 0.5f * d.width ? 1 : 0;
-  MESSAGE("corridor: ", agents, " agents; after ", r.seconds, " s ", r.atGoal,
-          " walkers at the far end; wall crossings ", r.walls.crossings,
-          ", closer than the radius ", r.walls.tooClose, ", outside ", outside);
-  CHECK(r.walls.crossings == 0);
-  CHECK(r.walls.tooClose == 0);
-  CHECK(outside == 0);
-  CHECK(r.atGoal > agents / 2);  // walkers (not the standing talkers) through 60 m within 60 s
 }
