@@ -2,10 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
-// The far joints: one invocation per joint ray-casts its ellipsoid over the pixels of its small
-// screen square and keeps the nearest hit per pixel with a 64-bit atomicMin of
-// (depth bits << 32 | colour). Joints wider than push.maxPixels are listed for an indirect
-// draw by the graphics pipeline instead. CPU twin: render::splatJointsCpu.
+// The far joints, step 1: one invocation per joint finds its ellipsoid's screen box and reserves
+// a sprite and one pixel entry per pixel of the box for joint_splat_pixels.comp, which
+// ray-casts them one pixel per invocation. A joint whose reservation does not fit ray-casts its
+// own pixels here (one invocation looping over the box). Joints wider than push.maxPixels are
+// listed for an indirect draw by the graphics pipeline instead. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -21,6 +22,10 @@ layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint gro
 layout(push_constant) uniform Push { SplatPush push; };
 #include "joint_fetch.glsl"
 #include "joint_lod.glsl"
+#include "joint_splat_common.glsl"
+layout(std430, binding = kRenderBindingSprites) writeonly buffer Sprites { SplatSprite sprites[]; };
+layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { uint owners[]; };
+layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
 
 void main() {
   uint joint = gl_GlobalInvocationID.x;
@@ -39,22 +44,22 @@ void main() {
   // Pixels whose centres lie inside the bounding box.
   ivec2 lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
   ivec2 hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
+  if (hi.x < lo.x || hi.y < lo.y) return;
   vec3 tint = (push.flags & kDrawTintLevel) != 0u  ? levelTint(mask.z)
               : (push.flags & kDrawGroupTint) != 0u ? groupTint(groups[character], character)
                                                     : characterTint(character);
-  uint width = uint(frame.viewport.x);
-  for (int y = lo.y; y <= hi.y; ++y) {
-    for (int x = lo.x; x <= hi.x; ++x) {
-      vec3 dir = pixelRay(vec2(x, y) + 0.5, frame);
-      float t;
-      vec3 n;
-      if (!hitJoint(frame.eye.xyz, dir, s.inverse0, s.inverse1, s.inverse2, t, n)) continue;
-      vec4 clip = frame.viewProjection * vec4(frame.eye.xyz + t * dir, 1.0);
-      float depth = clip.z / clip.w;
-      if (depth < 0.0 || depth > 1.0) continue;
-      uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0));
-      uint64_t packed = (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(colour);
-      atomicMin(visibility[uint(y) * width + uint(x)], packed);
-    }
+  uint boxWidth = uint(hi.x - lo.x + 1);
+  uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
+  uint sprite = atomicAdd(counters.sprites, 1u);
+  uint first = atomicAdd(counters.pixels, pixelCount);
+  bool fits = sprite < kSpriteCapacity && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
+  // Every entry reserved below the capacity gets an owner, a sentinel when the sprite is not kept.
+  uint owned = first < kPixelCapacity ? min(pixelCount, kPixelCapacity - first) : 0u;
+  for (uint i = 0u; i < owned; ++i) owners[first + i] = fits ? sprite : kSplatNoSprite;
+  if (fits) {
+    sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, first));
+    return;
   }
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
 }

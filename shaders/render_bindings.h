@@ -24,6 +24,20 @@ const uint kRenderBindingCacheData = 9u;
 const uint kRenderBindingGroups = 10u;     // kDrawGroupTint: a uint per character
 const uint kRenderBindingLodLevels = 11u;  // kDrawLodLevels: CoverageParts (uniform)
 const uint kRenderBindingWalls = 12u;      // walls.vert: segments (ax, az, bx, bz) as texels
+const uint kRenderBindingSprites = 13u;    // the splat's sprites (joint_splat_common.glsl)
+const uint kRenderBindingPixelOwners = 14u;  // per reserved pixel: its sprite
+const uint kRenderBindingSplatCounters = 15u;  // sprites and pixels reserved this frame
+
+// The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
+// pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own
+// pixels and not the 2×2 lanes' idle wait. Fixed capacities (≈ 37 MB; specialization constants
+// 0 and 1 of both splat shaders, so tests can shrink them): what does not fit is splatted by the
+// joint's own invocation, as correct and slower.
+const uint kSplatSpriteCapacity = 262144u;
+const uint kSplatSpriteBytes = 80u;          // SplatSprite
+const uint kSplatPixelCapacity = 4194304u;   // 4 Mi pixel entries (a 1280×720 frame 4.5 times)
+const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
+const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 
 #ifdef __cplusplus
 }  // namespace throng::gpu_types

@@ -182,6 +182,7 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
     scene::FrameTimestamps marks =
         scene::recordFrame(cmd, context, scene, step, renderer, cloth.get(), settings, timestamps);
     render::recordReadback(cmd, target);
+    renderer.passTimer().mark(cmd, "readback");
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());
     fence.wait();

@@ -57,7 +57,9 @@ FrameUniforms makeFrameUniforms(const DrawParams& params) {
 
 CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
                              VkFormat depthFormat)
-    : context_(&context), splatSupported_(context.info().int64Atomics) {
+    : context_(&context),
+      splatSupported_(context.info().int64Atomics),
+      passTimer_(std::make_unique<PassTimer>(context)) {
   gpu::GraphicsPipelineDesc jointDesc;
   jointDesc.vertexShader = "joints.vert";
   jointDesc.fragmentShader = "joints.frag";
@@ -78,7 +80,8 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   walls_ = gpu::GraphicsProgram(context, wallDesc);
 
   if (splatSupported_) {
-    splat_ = gpu::ComputeProgram(context, "joint_splat.comp");
+    splat_ = makeSplatPrograms(context);
+    splatLists_ = makeSplatLists(context);
     gpu::GraphicsPipelineDesc resolveDesc = groundDesc;
     resolveDesc.vertexShader = "splat_resolve.vert";
     resolveDesc.fragmentShader = "splat_resolve.frag";
@@ -130,6 +133,7 @@ bool CrowdRenderer::splats(const DrawParams& params) const {
 const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawParams& params,
                                               uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
+  passTimer_->beginFrame(cmd);
   const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
   FrameUniforms frame = makeFrameUniforms(params);
   std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
@@ -155,7 +159,11 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
                  boundCachedPoses(params, noMasks_),
                  params.groups,
                  params.drawnBones,
-                 lodLevels};
+                 lodLevels,
+                 passTimer_.get(),
+                 &splatLists_.sprites,
+                 &splatLists_.pixelOwners,
+                 &splatLists_.counters};
     job.record(cmd, splat_);
     return &visibility_;
   }
@@ -165,6 +173,7 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
 void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
                               const DrawParams& params, uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
+  passTimer_->mark(cmd, "before-pass");
   const VkImage color = target.color, depth = target.depth;
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
@@ -210,9 +219,12 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
   const bool splat = splats(params);
   const gpu::Buffer* lodLevels =
       params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
-  gpu::Binding groundBindings[] = {gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms)};
-  ground_.bind(cmd, groundBindings, nullptr, 0);
-  vkCmdDraw(cmd, 6, 1, 0, 0);
+  if (!splat) {  // with the splat, its resolve shades the ground
+    gpu::Binding groundBindings[] = {gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms)};
+    ground_.bind(cmd, groundBindings, nullptr, 0);
+    vkCmdDraw(cmd, 6, 1, 0, 0);
+    passTimer_->mark(cmd, "ground");
+  }
   if (params.wallSegmentCount > 0) {
     gpu::Binding wallBindings[] = {
         gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
@@ -257,17 +269,21 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
       vkCmdDraw(cmd, chunk.characterCount * params.jointCount, 1, 0, 0);
     }
   }
+  passTimer_->mark(cmd, "near-joints");
   if (splat) {
     gpu::Binding resolveBindings[] = {
         gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
         gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_)};
     resolve_.bind(cmd, resolveBindings, nullptr, 0);
     vkCmdDraw(cmd, 3, 1, 0, 0);
+    passTimer_->mark(cmd, "resolve");
   }
 }
 
 void CrowdRenderer::endDraw(VkCommandBuffer cmd, const FrameTargets& target) {
+  passTimer_->mark(cmd, "after-resolve");
   vkCmdEndRenderingKHR(cmd);
+  passTimer_->mark(cmd, "end-pass");
   const VkImageLayout finalLayout = target.finalLayout;
 
   VkAccessFlags dstAccess =

@@ -2,6 +2,7 @@
 // The one graphics pipeline that draws every joint of every character as an instanced
 // ellipsoid (a ray-cast quad), plus the ground. Records into any colour/depth image pair (offscreen
 // target or swapchain image), so the viewer and the frame dumper share it.
+#include <memory>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -10,6 +11,7 @@
 #include "render/camera.h"
 #include "render/frame_targets.h"
 #include "render/joint_splat.h"
+#include "render/pass_timer.h"
 #include "synth/gpu_types.h"
 
 namespace throng::render {
@@ -69,6 +71,8 @@ class CrowdRenderer {
   // All three steps with nothing between them.
   void record(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
               uint32_t frameSlot = 0);
+  // Per-pass GPU times (THRONG_RENDER_PASS_TIMES=1, one frame in flight at a time).
+  PassTimer& passTimer() { return *passTimer_; }
 
  private:
   gpu::GraphicsProgram joints_;
@@ -77,7 +81,9 @@ class CrowdRenderer {
   std::vector<gpu::Buffer> frameUniforms_;
   const gpu::Context* context_ = nullptr;
   bool splatSupported_ = false;
-  gpu::ComputeProgram splat_;
+  std::unique_ptr<PassTimer> passTimer_;
+  SplatPrograms splat_;
+  SplatLists splatLists_;
   gpu::GraphicsProgram resolve_;
   gpu::Buffer visibility_;
   gpu::Buffer draws_;        // indirect draws of the joints too wide to splat, one per chunk

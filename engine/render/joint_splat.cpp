@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "gpu/commands.h"
 #include "gpu/job_check.h"
+#include "render/pass_timer.h"
 #include "shaders/render_bindings.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
@@ -26,6 +27,22 @@ std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount
   for (uint32_t first = 0; first < characterCount; first += perChunk)
     chunks.push_back({first, std::min(perChunk, characterCount - first)});
   return chunks;
+}
+
+SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapacity,
+                                uint32_t pixelCapacity) {
+  const uint32_t capacities[] = {spriteCapacity, pixelCapacity};
+  return {gpu::ComputeProgram(context, "joint_splat.comp", capacities),
+          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities)};
+}
+
+SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
+                          uint32_t pixelCapacity) {
+  const auto buffer = [&](VkDeviceSize bytes) {
+    return gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  };
+  return {buffer(VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes),
+          buffer(VkDeviceSize(pixelCapacity) * 4u), buffer(16)};
 }
 
 std::vector<std::string> SplatJob::validate() const {
@@ -66,15 +83,31 @@ std::vector<std::string> SplatJob::validate() const {
     problems.push_back("output 'nearList' buffer is missing");
   else if (nearList->size() < VkDeviceSize(characterCount) * jointCount * 4)
     problems.push_back("output 'nearList' is smaller than one index per joint");
+  if (spriteCapacity == 0 || pixelCapacity == 0) problems.push_back("a work-list capacity is zero");
+  const auto checkList = [&](const gpu::Buffer* list, const char* name, VkDeviceSize bytes) {
+    if (!list || !*list)
+      problems.push_back(concat("work list '", name, "' is missing"));
+    else if (list->size() < bytes)
+      problems.push_back(
+          concat("work list '", name, "' holds ", list->size(), " bytes, ", bytes, " needed"));
+  };
+  checkList(sprites, "sprites", VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes);
+  checkList(pixelOwners, "pixelOwners", VkDeviceSize(pixelCapacity) * 4u);
+  checkList(counters, "counters", 16);
   return problems;
 }
 
-void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
+void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const {
   gpu::throwIfInvalid("SplatJob", validate());
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   // The previous frame's resolve may still read the buffer: order the clear after it.
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  gpu::memoryBarrier(cmd,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT);
+  if (timer) timer->mark(cmd, "setup");
   vkCmdFillBuffer(cmd, visibility->get(), 0, pixels * sizeof(uint64_t), 0xFFFFFFFFu);
+  vkCmdFillBuffer(cmd, counters->get(), 0, 16, 0u);
+  if (timer) timer->mark(cmd, "clear");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   const std::vector<JointChunk> chunks =
       jointChunks(characterCount, jointCount, maxStorageBufferRange);
@@ -116,9 +149,26 @@ void SplatJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) c
         gpu::storageBinding(gpu_types::kRenderBindingGroups, groups ? *groups : *masks),
         gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
                             sizeof(gpu_types::CoverageParts)),
+        gpu::storageBinding(gpu_types::kRenderBindingSprites, *sprites),
+        gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
+        gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
     };
-    gpu::dispatch(cmd, program, bindings, push, push.jointTotal);
+    gpu::dispatch(cmd, programs.joints, bindings, push, push.jointTotal);
   }
+  if (timer) timer->mark(cmd, "splat-joints");
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  gpu::Binding pixelBindings[] = {
+      gpu::uniformBinding(gpu_types::kRenderBindingFrame, *frameUniforms),
+      gpu::storageBinding(gpu_types::kRenderBindingVisibility, *visibility, 0,
+                          pixels * sizeof(uint64_t)),
+      gpu::storageBinding(gpu_types::kRenderBindingSprites, *sprites),
+      gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
+      gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
+  };
+  gpu::dispatch(cmd, programs.pixels, pixelBindings, nullptr, 0,
+                gpu_types::kSplatPixelGroups * programs.pixels.localSizeX());
+  if (timer) timer->mark(cmd, "splat-pixels");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,

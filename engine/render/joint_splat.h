@@ -1,7 +1,8 @@
 #pragma once
 // The compute path for small joints (a job: named inputs and outputs, validate(), record()).
-// Each joint ray-casts its ellipsoid over its few screen pixels and keeps the nearest hit per
-// pixel in a visibility buffer of (depth << 32 | colour); a full-screen pass resolves it into
+// Each joint's ellipsoid is ray-cast over its few screen pixels (one invocation per pixel, see
+// joint_splat_pixels.comp) and the nearest hit per pixel is kept in a visibility buffer of
+// (depth << 32 | colour); a full-screen pass resolves it into
 // the frame with depth. On lavapipe this is an order of magnitude cheaper than sending tens of
 // thousands of tiny sprites through the single-threaded vertex pipeline.
 #include <string>
@@ -9,8 +10,11 @@
 
 #include "gpu/buffer.h"
 #include "gpu/program.h"
+#include "shaders/render_bindings.h"
 
 namespace throng::render {
+
+class PassTimer;
 
 constexpr uint64_t kEmptyPixel = ~uint64_t(0);
 
@@ -34,6 +38,24 @@ struct CachedPoseInputs {
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 
+// joint_splat.comp (a sprite per joint) and joint_splat_pixels.comp (an invocation per pixel),
+// specialized with the work lists' capacities.
+struct SplatPrograms {
+  gpu::ComputeProgram joints;
+  gpu::ComputeProgram pixels;
+};
+SplatPrograms makeSplatPrograms(const gpu::Context& context,
+                                uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
+                                uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity);
+
+// The work lists for those capacities (device-local).
+struct SplatLists {
+  gpu::Buffer sprites, pixelOwners, counters;
+};
+SplatLists makeSplatLists(const gpu::Context& context,
+                          uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
+                          uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity);
+
 struct SplatJob {
   const gpu::Buffer* joints = nullptr;         // input: JointMatrix per character per joint
   const gpu::Buffer* frameUniforms = nullptr;  // input: gpu_types::FrameUniforms
@@ -53,11 +75,19 @@ struct SplatJob {
   uint64_t drawnBones = ~uint64_t(0);  // bit j: joint j's bone is drawn (placements' are not)
   const gpu::Buffer* lodLevels =
       nullptr;  // input: uniform CoverageParts (kDrawLodLevels; a placeholder otherwise)
+  PassTimer* timer = nullptr;  // optional: marks the clear and the splat
+  // The pixel pass's work lists (render_bindings.h), sized for the capacities both programs
+  // were specialized with (makeSplatPrograms).
+  const gpu::Buffer* sprites = nullptr;      // spriteCapacity × kSplatSpriteBytes
+  const gpu::Buffer* pixelOwners = nullptr;  // pixelCapacity uints
+  const gpu::Buffer* counters = nullptr;     // 16 bytes, cleared by record()
+  uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
+  uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
 
   std::vector<std::string> validate() const;
   // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the
   // fragment-shader resolve.
-  void record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const;
+  void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 };
 
 }  // namespace throng::render

@@ -52,7 +52,9 @@ const gpu_types::CoverageParts kNoLevels{};
 void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joints,
                     const render::Camera& camera, uint64_t bones,
                     std::span<const synth::CoverageMask> masks,
-                    const gpu_types::CoverageParts* levels) {
+                    const gpu_types::CoverageParts* levels,
+                    uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
+                    uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity) {
   const size_t characters = matrices.size() / joints;
   const uint32_t width = 320, height = 180;
   render::DrawParams params;
@@ -73,7 +75,8 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
                     gpu::MemoryUse::DeviceLocal);
   gpu::Buffer nearList(ctx, VkDeviceSize(matrices.size()) * 4, gpu::kStorageUsage,
                        gpu::MemoryUse::DeviceLocal);
-  gpu::ComputeProgram program(ctx, "joint_splat.comp");
+  render::SplatPrograms programs = render::makeSplatPrograms(ctx, spriteCapacity, pixelCapacity);
+  render::SplatLists lists = render::makeSplatLists(ctx, spriteCapacity, pixelCapacity);
   render::SplatJob job{&jointBuffer,
                        &uniforms,
                        &visibility,
@@ -101,8 +104,13 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   }
   job.lodLevels = &levelsBuffer;
   job.drawnBones = bones;
+  job.sprites = &lists.sprites;
+  job.pixelOwners = &lists.pixelOwners;
+  job.counters = &lists.counters;
+  job.spriteCapacity = spriteCapacity;
+  job.pixelCapacity = pixelCapacity;
   REQUIRE(job.validate().empty());
-  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, program); });
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, programs); });
 
   const std::vector<synth::JointMatrix> drawn =
       render::drawnJointMatrices(matrices, joints, bones, masks, levels);
@@ -111,6 +119,10 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
   auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
   auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
+  auto counters = gpu::readback<uint32_t>(ctx, lists.counters, 2);
+  MESSAGE("work lists: ", counters[0], " sprites (capacity ", spriteCapacity, "), ", counters[1],
+          " pixels (capacity ", pixelCapacity, ")");
+  CHECK(counters[0] > 0);
   std::sort(gpuNear.begin(), gpuNear.end());
 
   // Where two ellipsoids meet at nearly the same depth, float rounding may pick the other one:
@@ -173,6 +185,11 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
   const render::Camera camera = render::cameraPreset("street", crowd::scenarioExtent(options));
   SUBCASE("every joint") {
     checkSplatTwin(matrices, joints, camera, ~uint64_t(0), {}, nullptr);
+  }
+  SUBCASE("work lists too small: the joints past them splat their own pixels") {
+    // 300 sprites fit and 8,000 pixel entries (of ≈ 4,700 and ≈ 18,000): both limits are crossed,
+    // one joint's reservation straddles the pixel capacity.
+    checkSplatTwin(matrices, joints, camera, ~uint64_t(0), {}, nullptr, 300, 8000);
   }
   SUBCASE("a bone mask and the LOD levels (long bones)") {
     synth::BodyParts parts = synth::describeBodyParts(clips.slow.skeleton);

@@ -1,0 +1,37 @@
+#pragma once
+// GPU time per pass of the joint renderer (the visibility clear, the splat, the ground, the near
+// joints, the resolve, ...), for finding where a frame's time goes. Off unless the environment
+// sets THRONG_RENDER_PASS_TIMES=1: each mark is a timestamp, and on lavapipe a timestamp inside
+// a render pass makes the rasterizer flush, so marks cost a little themselves. Prints the median
+// of every pass to stderr when destroyed.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gpu/timestamps.h"
+
+namespace throng::render {
+
+class PassTimer {
+ public:
+  explicit PassTimer(const gpu::Context& context);
+  ~PassTimer();
+  PassTimer(const PassTimer&) = delete;
+  PassTimer& operator=(const PassTimer&) = delete;
+
+  bool enabled() const { return pool_ != nullptr; }
+  // Starts a frame: the previous frame's marks are read (its work has completed by then).
+  void beginFrame(VkCommandBuffer cmd);
+  // The time since the previous mark is booked to `pass`.
+  void mark(VkCommandBuffer cmd, const char* pass);
+
+ private:
+  void collect();
+  std::unique_ptr<gpu::TimestampPool> pool_;
+  std::vector<std::string> pending_;  // pass of each mark after the first
+  std::map<std::string, std::vector<double>> times_;
+  std::vector<std::string> order_;
+};
+
+}  // namespace throng::render
