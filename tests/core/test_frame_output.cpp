@@ -1,4 +1,5 @@
-// Frames out: PNG files and H.264/MP4 video written off the frame loop, checked with ffprobe.
+// Frames out: PNG files (read back pixel for pixel) and H.264/MP4 video written off the frame
+// loop, checked with ffprobe.
 #include <doctest/doctest.h>
 #include <signal.h>
 #include <unistd.h>
@@ -167,4 +168,28 @@ TEST_CASE("frame output: a failing encoder's error reaches the frame loop") {
   }
   CHECK(threw);
   fs::remove_all(dir);
+}
+
+TEST_CASE("png: what encodePng writes reads back pixel for pixel (RGB and RGBA)") {
+  fs::path dir = freshFolder("png_round_trip");
+  SUBCASE("opaque: written as RGB") {
+    auto image = gradientFrame(37, 23, 5);
+    image->at(3, 4) = {250, 1, 128, 255};
+    std::vector<uint8_t> bytes = encodePng(*image);
+    REQUIRE(bytes.size() > 33);
+    CHECK(bytes[25] == 2);  // IHDR colour type: RGB
+    writePngAtomic(dir / "rgb.png", *image);
+    ImageRgba8 back = readPng(dir / "rgb.png");
+    CHECK(back.width == 37);
+    CHECK(back.height == 23);
+    CHECK(back.pixels == image->pixels);
+  }
+  SUBCASE("one translucent pixel: written as RGBA") {
+    auto image = gradientFrame(16, 9, 2);
+    image->at(15, 8).a = 7;
+    CHECK(encodePng(*image)[25] == 6);  // RGBA
+    writePngAtomic(dir / "rgba.png", *image);
+    CHECK(readPng(dir / "rgba.png").pixels == image->pixels);
+  }
+  CHECK_THROWS_AS(encodePng(ImageRgba8()), Error);
 }
