@@ -13,8 +13,7 @@ PathBuffers uploadPaths(const gpu::Context& context, const AgentPaths& paths) {
   std::vector<glm::uvec2> ranges;
   std::vector<glm::vec2> cumulative;
   if (!paths.holdsEnd.empty() && paths.holdsEnd.size() != paths.cumulative.size())
-    fail("paths: ", paths.holdsEnd.size(), " hold flags for ", paths.cumulative.size(),
-         " sources");
+    fail("paths: ", paths.holdsEnd.size(), " hold flags for ", paths.cumulative.size(), " sources");
   for (size_t k = 0; k < paths.cumulative.size(); ++k) {
     const std::vector<glm::vec2>& c = paths.cumulative[k];
     if (c.size() < 2) fail("a path source has no path vector");

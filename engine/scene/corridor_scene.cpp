@@ -80,7 +80,8 @@ std::vector<crowd::PathSource> walkingSources(const std::string& file) {
     glm::vec2 net(0.0f);
     float along = 0.0f;
     for (glm::vec2 v : s.vectors) net += v, along += glm::length(v);
-    if (glm::length(net) >= 3.0f && glm::length(net) >= 0.8f * along) walking.push_back(std::move(s));
+    if (glm::length(net) >= 3.0f && glm::length(net) >= 0.8f * along)
+      walking.push_back(std::move(s));
   }
   return walking;
 }
@@ -92,7 +93,9 @@ float fold(float z, float lo, float hi) {
   return lo + (t <= span ? t : 2.0f * span - t);
 }
 
-glm::vec2 rotated(glm::vec2 r, glm::vec2 v) { return {r.x * v.x - r.y * v.y, r.y * v.x + r.x * v.y}; }
+glm::vec2 rotated(glm::vec2 r, glm::vec2 v) {
+  return {r.x * v.x - r.y * v.y, r.y * v.x + r.x * v.y};
+}
 
 // One walker's path from `start`: the source's vectors turned by `r` (rotation and scale), over
 // and over, with z folded into the corridor, until x is `endX` past the centre in direction
@@ -124,7 +127,8 @@ crowd::AgentPaths corridorPaths(const CorridorDescription& d, const sb::Placemen
       crowd::assignSources(sources, placed.speedRange, d.seed, d.trajectories);
   size_t toEnd[2] = {0, 0};  // walkers to +x, to −x
   for (size_t i = 0; i < crowd.size(); ++i)
-    if (speeds[crowd.clipSet[i]].fast > 0.0f) ++toEnd[std::sin(crowd.placement[i].w) >= 0.0f ? 0 : 1];
+    if (speeds[crowd.clipSet[i]].fast > 0.0f)
+      ++toEnd[std::sin(crowd.placement[i].w) >= 0.0f ? 0 : 1];
   const float depth[2] = {corridorStopDepth(toEnd[0], d.width),
                           corridorStopDepth(toEnd[1], d.width)};
   crowd::AgentPaths paths;
@@ -160,6 +164,28 @@ crowd::AgentPaths corridorPaths(const CorridorDescription& d, const sb::Placemen
     paths.maxSpeed.push_back(1.25f * r.fast);
   }
   return paths;
+}
+
+// Path vectors from the tracked set when it is there and has walkers, else goals.
+void addCorridorSteering(const CorridorDescription& d, const sb::Placement& placed,
+                         std::span<const sb::RootSpeeds> speeds,
+                         const std::vector<float>& rootSpeed, SceneSetup& setup) {
+  setup.steering.emplace();
+  setup.steering->avoidance = d.avoidance;
+  const bool tracked = !d.trajectories.empty() && std::filesystem::exists(d.trajectories);
+  const std::vector<crowd::PathSource> sources =
+      tracked ? walkingSources(d.trajectories) : std::vector<crowd::PathSource>{};
+  if (!sources.empty()) {
+    setup.steering->paths = corridorPaths(d, placed, speeds, sources);
+    logInfo(concat("corridor: ", setup.crowd.size(), " agents; walkers follow the path vectors of ",
+                   sources.size(), " tracked people of ", d.trajectories));
+  } else {
+    logWarning(concat(
+        "corridor: ", d.trajectories.empty() ? std::string("no tracked set") : d.trajectories,
+        tracked ? " has nobody walking 3 m or more" : " is absent",
+        "; walkers head for the far end by goals instead of path vectors"));
+    setup.steering->goals = corridorGoals(d, setup.crowd, rootSpeed, setup.crowd.clipSet);
+  }
 }
 
 // The walls run past each end around the walkers' stops, so that nobody pushed out of an end
@@ -240,22 +266,7 @@ SceneSetup corridorScene(const CorridorDescription& d) {
     setup.pairs.push_back(std::move(pairs[k]));
     setup.groupFirst.push_back(placed.setBegin[k + 1]);
   }
-  setup.steering.emplace();
-  setup.steering->avoidance = d.avoidance;
-  const bool tracked = !d.trajectories.empty() && std::filesystem::exists(d.trajectories);
-  const std::vector<crowd::PathSource> sources =
-      tracked ? walkingSources(d.trajectories) : std::vector<crowd::PathSource>{};
-  if (!sources.empty()) {
-    setup.steering->paths = corridorPaths(d, placed, speeds, sources);
-    logInfo(concat("corridor: ", setup.crowd.size(), " agents; walkers follow the path vectors of ",
-                   sources.size(), " tracked people of ", d.trajectories));
-  } else {
-    logWarning(concat("corridor: ", d.trajectories.empty() ? std::string("no tracked set")
-                                                            : d.trajectories,
-                      tracked ? " has nobody walking 3 m or more" : " is absent",
-                      "; walkers head for the far end by goals instead of path vectors"));
-    setup.steering->goals = corridorGoals(d, setup.crowd, rootSpeed, setup.crowd.clipSet);
-  }
+  addCorridorSteering(d, placed, speeds, rootSpeed, setup);
   addCorridorWalls(d, setup);
   return setup;
 }

@@ -2,11 +2,11 @@
 // The storyboard paper's own experiment as a scene: a subway corridor (two long walls, both
 // ends open) filled with a storyboard quilted to its size — people walking both ways, hurrying,
 // standing and talking in groups. Walkers follow the path vectors of real tracked people
-// (docs/design.md, "Storyboard crowds"): each walker takes one person's per-second vectors, turned so
-// that person's overall direction points along the corridor to the end the walker's glyph
-// faces, scaled to its clip pair's speeds, repeated until it is past that end, folded at the
-// walls (the lateral drift is kept, reflected back into the corridor) and held at a spot past
-// the end, inside the walls. Avoidance of each other and of the walls does the rest. Without the tracked set
+// (docs/design.md, "Storyboard crowds"): each walker takes one person's per-second vectors, turned
+// so that person's overall direction points along the corridor to the end the walker's glyph faces,
+// scaled to its clip pair's speeds, repeated until it is past that end, folded at the walls (the
+// lateral drift is kept, reflected back into the corridor) and held at a spot past the end, inside
+// the walls. Avoidance of each other and of the walls does the rest. Without the tracked set
 // walkers head for that end by goals instead. The sample storyboard is made in code
 // (storyboard/example.h), so the scene needs no file of its own.
 #include <cstdint>

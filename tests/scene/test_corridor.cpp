@@ -66,8 +66,7 @@ size_t atFarEnd(std::span<const glm::vec4> placement, std::span<const int> dirs,
 class TallyObserver : public crowd::StepObserver {
  public:
   explicit TallyObserver(Tally& tally) : tally_(tally) {}
-  void observe(uint64_t, std::span<const glm::vec4> placement,
-               std::span<const uint8_t>) override {
+  void observe(uint64_t, std::span<const glm::vec4> placement, std::span<const uint8_t>) override {
     tally_.add(placement);
   }
 
@@ -124,9 +123,9 @@ CorridorRun runCorridor(float length, double seconds) {
   }
   run.gpuAtEnd = atFarEnd(run.gpu.previous, dirs, 0.5f * d.length);
   MESSAGE("corridor ", length, " x ", d.width, " m (walls from x = ", span.x, " to ", span.y,
-          " m): ", run.agents, " agents (", run.walkers,
-          " walkers); after ", seconds, " s at the far end: twin ", run.twinAtEnd, ", GPU ",
-          run.gpuAtEnd, "; wall crossings twin ", run.twin.violations.crossings, ", GPU ",
+          " m): ", run.agents, " agents (", run.walkers, " walkers); after ", seconds,
+          " s at the far end: twin ", run.twinAtEnd, ", GPU ", run.gpuAtEnd,
+          "; wall crossings twin ", run.twin.violations.crossings, ", GPU ",
           run.gpu.violations.crossings, "; closer than the radius twin ",
           run.twin.violations.tooClose, ", GPU ", run.gpu.violations.tooClose,
           "; agent-steps outside twin ", run.twin.outside, ", GPU ", run.gpu.outside);
