@@ -41,4 +41,21 @@ bool collides(vec2 x, vec2 v, float horizon, float diameter2) {
   return xv < 0.0 && hit;
 }
 
+// A neighbour's weight in the local density ahead (crowd_types.h): (1 − d²/R²)² in fixed point
+// for a neighbour in the half disc ahead (x · dir < 0, x = own position − its position, dir the
+// preferred velocity), 0 at and beyond R, behind and for an agent at the very same place.
+uint densityWeight(vec2 x, float dist2, vec2 dir, float invRadius2) {
+  float t = max(1.0 - dist2 * invRadius2, 0.0);
+  return dist2 > 0.0 && dot(x, dir) < 0.0 ? uint(t * t * kDensityScale + 0.5) : 0u;
+}
+
+// Weidmann's speed fraction at the density of the summed weights (1 when the rule is off), in
+// steps of 1/1024: exp differs by an ulp between lavapipe and the C library, and unrounded that
+// ulp would grow into different courses of the rule on the GPU and in the CPU twin.
+float densitySpeedFactor(uint weights, float norm) {
+  float rho = float(weights) * (norm / kDensityScale);
+  float f = rho > 0.0 ? 1.0 - exp(-kWeidmannGamma * (1.0 / rho - 1.0 / kWeidmannMaxDensity)) : 1.0;
+  return clamp(floor(f * 1024.0 + 0.5) * (1.0 / 1024.0), kDensityMinSpeed, 1.0);
+}
+
 #endif

@@ -71,6 +71,7 @@ SteerPush gPush;
 bool gBlocked, gKeepBlocked, gAgentBlocked;  // the course blocked (by anything, by an agent)
 uint gDrawBlocked;
 ivec2 gForce;
+uint gDensity;  // kernel weights of the neighbours within the density radius (fixed point)
 
 // Karamouzas, Skinner & Guy 2014: E = k τ^-2 e^(-τ/τ0) over the time to collision τ of two
 // discs; the force on agent i is −∇E = k e^(-τ/τ0) τ^-2 (2/τ + 1/τ0) (x + τ v) / √D, with x, v
@@ -128,9 +129,12 @@ uint slotOf(uint t, uint runBegin[kRuns], uint runLength[kRuns]) {
 // ttcForce tests itself). Candidates at x = 0, the lane itself included, change nothing (no
 // TTC force there, and the rule's courses only collide while approaching). A few operations,
 // against ttcForce's exp, sqrt and divisions or the rule's 2 + kRuleDraws course tests.
+// Every candidate also adds its density weight here (the density radius is within sensing, so a
+// lane's union holds all it needs; only for the lanes of the round).
 bool screened(vec4 other) {
   vec2 x = gPos - other.xy;
   float dist2 = dot(x, x);
+  gDensity += gMine ? densityWeight(x, dist2, gVPref, gPush.densityInvRadius2) : 0u;
   bool near = dist2 < gSensing2;
   if (kPolicy == kSteerPolicyRule) return near && dist2 > 0.0;
   vec2 v = gVCur - other.zw;
@@ -339,6 +343,7 @@ void main() {
   gAgentBlocked = false;
   gDrawBlocked = 0u;
   gForce = ivec2(0);
+  gDensity = 0u;
 
   // The rule tests courses: towards the waypoint, on along the current heading, and
   // kRuleDraws random headings within the gaze around the waypoint's direction.
@@ -358,6 +363,8 @@ void main() {
     return;
   }
 
+  // The speed the local density allows (Weidmann); the policies' courses keep their directions.
+  float cap = goal.z * densitySpeedFactor(gDensity, gPush.densityNorm);
   vec2 v = gVPref;
   uint flags = 0u;
   if (kPolicy == kSteerPolicyRule && gBlocked) {
@@ -389,10 +396,14 @@ void main() {
     vec2 avoid = vec2(gForce) * (1.0 / kForceScale);
     float avoidLength = length(avoid);
     if (avoidLength > gPush.ttcMaxForce) avoid *= gPush.ttcMaxForce / avoidLength;
-    v = gVCur + ((gVPref - gVCur) / gPush.ttcXi + avoid) * gPush.dt;
+    vec2 pref = prefSpeed > cap ? gVPref * (cap / prefSpeed) : gVPref;
+    v = gVCur + ((pref - gVCur) / gPush.ttcXi + avoid) * gPush.dt;
     float speed = length(v);
-    if (speed > goal.z) v *= goal.z / speed;
+    if (speed > goal.z) v *= goal.z / speed;  // avoidance may still use the full speed
   }
+  // The rule's courses all run at the preferred speed (or stand): scaled down together, and
+  // left alone where the density allows it (no rounding of a free agent's course).
+  if (kPolicy == kSteerPolicyRule && prefSpeed > cap) v *= cap / prefSpeed;
 
   float speed = length(v);
   if (speed > 1e-3) placement[i].w = atan(v.x, v.y);

@@ -49,6 +49,19 @@ const uint kPathHoldsEnd = 0x80000000u;  // path source range bit: stay at the l
 const float kForceScale = 65536.0;
 const float kForceTermCap = 64.0;
 
+// Density-dependent walking speed (docs/design.md, "Density slows walkers"): each agent's local
+// density ahead is a kernel sum over the neighbours within R in the half disc it heads into,
+// w = (1 − d²/R²)², normalised by 6 / (π R²) (the kernel's integral over the half disc) and
+// summed in fixed point (1/kDensityScale per unit of weight) so the order neighbours come in
+// does not matter. Only the space ahead counts: people adapt to the headway in front of them,
+// and the front of a queue, with nobody ahead, walks off. Its speed is capped at the preferred
+// speed times Weidmann's (1993) fundamental diagram v(ρ)/v0 = 1 − exp(−γ (1/ρ − 1/ρmax)),
+// floored at kDensityMinSpeed so a jam still creeps forward instead of locking for ever.
+const float kDensityScale = 65536.0;
+const float kWeidmannGamma = 1.913;      // m⁻²
+const float kWeidmannMaxDensity = 5.4;   // persons/m², where the diagram reaches 0
+const float kDensityMinSpeed = 0.1;      // fraction of the preferred speed
+
 // Push constants of every grid pass (count, scan, scatter).
 THRONG_CROWD_STRUCT(GridPush) {
   uint agentCount;
@@ -77,13 +90,13 @@ THRONG_CROWD_STRUCT(SteerPush) {
   float lookahead;       // rule: seconds ahead the overlap is tested
   float gazeAngle;       // rule: full width of the random turn (radians)
   float cosHalfGaze;     // rule: cos(gazeAngle / 2), the cone a kept heading must stay in
-  float ttcK;            // TTC: k (m²/s²·s^m), tau0 (s), relaxation xi (s), force cap (m/s²)
-  float ttcTau0;
+  float ttcK;            // TTC: k (m²/s²·s^m), relaxation xi (s), force cap (m/s²)
+  float densityInvRadius2;  // density-dependent speed: 1 / R² of the kernel (0: off)
   float ttcXi;
   float ttcMaxForce;
   float ttcInvTau0;      // 1 / tau0
   float invCellZ;
-  float pad1;
+  float densityNorm;     // persons/m² per unit of kernel weight: 6 / (π R²) (0: off)
   // Speed → w (motion.z) per clip pair: agents [setEnd[k−1], setEnd[k]) use the root speeds
   // setSlow[k], setFast[k] (w = 0 when fast <= slow is left alone: motion.z unchanged).
   uvec4 setEnd;

@@ -48,6 +48,9 @@ std::vector<std::string> validateParams(const AvoidanceParams& p) {
     problems.push_back(concat(
         "TTC force cap ", p.ttcMaxForce, " m/s^2 is above ", 0.5f * gpu_types::kForceTermCap,
         " (the fixed-point sum clamps each neighbour's term at ", gpu_types::kForceTermCap, ")"));
+  if (!(p.densityRadius >= 0.0f && p.densityRadius <= p.sensing))
+    problems.push_back(concat("density radius must lie in [0, sensing distance ", p.sensing,
+                              "] m, got ", p.densityRadius));
   if (!(p.ttcK >= 0.0f)) problems.push_back(concat("TTC k must be >= 0, got ", p.ttcK));
   if (!(p.gazeAngle >= 0.0f && p.gazeAngle <= 6.2832f))
     problems.push_back(concat("gaze angle must lie in [0, 2 pi] radians, got ", p.gazeAngle));
@@ -227,6 +230,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
   const float diameter2 = 4.0f * p.radius * p.radius;
   const float sensing2 = p.sensing * p.sensing;
   const float cosHalfGaze = std::cos(0.5f * p.gazeAngle);
+  const float densityInvRadius2 = densityPush(p).x, densityNorm = densityPush(p).y;
   const std::array<ClipSpeeds, 4> speeds = clipSpeedTable(frame);
   // Every agent reads only the grid's copies of the others, so the order of updates is free.
   for (size_t i = 0; i < n; ++i) {
@@ -256,6 +260,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
     bool blocked = false, keepBlocked = false, agentBlocked = false;
     uint32_t drawBlocked = 0;
     glm::ivec2 force(0);
+    uint32_t density = 0;
     if (p.policy != SteerPolicy::None) {
       glm::ivec2 home = cellCoord(pos, grid.invCellSize);
       for (int dz = -range.y; dz <= range.y; ++dz) {
@@ -267,6 +272,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
             glm::vec2 x = pos - glm::vec2(other.x, other.y);
             float dist2 = glm::dot(x, x);
             if (dist2 >= sensing2) continue;
+            density += densityWeight(x, dist2, vPref, densityInvRadius2);
             if (rule) {
               glm::vec2 theirs(other.z, other.w);
               if (collides(x, vPref - theirs, p.lookahead, diameter2))
@@ -314,6 +320,7 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
       if (p.policy == SteerPolicy::Ttc)
         force += toFixed(wallTtcForce(p, vCur, firstTau, firstNormal));
     }
+    const float cap = goal.z * densitySpeedFactor(density, densityNorm);
     glm::vec2 v = vPref;
     uint32_t flags = 0;
     if (rule && blocked) {
@@ -341,10 +348,12 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
       glm::vec2 avoid = glm::vec2(force) * (1.0f / gpu_types::kForceScale);
       float avoidLength = glm::length(avoid);
       if (avoidLength > p.ttcMaxForce) avoid *= p.ttcMaxForce / avoidLength;
-      v = vCur + ((vPref - vCur) / p.ttcXi + avoid) * frame.dt;
-      float speed = glm::length(v);
-      if (speed > goal.z) v *= goal.z / speed;
+      const glm::vec2 pref = prefSpeed > cap ? vPref * (cap / prefSpeed) : vPref;
+      v = vCur + ((pref - vCur) / p.ttcXi + avoid) * frame.dt;
+      const float fast = glm::length(v);
+      if (fast > goal.z) v *= goal.z / fast;  // avoidance may still use the full speed
     }
+    if (rule && prefSpeed > cap) v *= cap / prefSpeed;  // as the shader: the courses together
     float speed = glm::length(v);
     if (speed > 1e-3f) place.w = std::atan2(v.x, v.y);
     placement[i] = place;
@@ -356,6 +365,27 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
       motion[i] = gpu_types::withTargetSpeedWeight(
           motion[i], std::clamp((speed - set.slow) / (set.fast - set.slow), 0.0f, 1.0f));
   }
+}
+
+glm::vec2 densityPush(const AvoidanceParams& p) {
+  if (!(p.densityRadius > 0.0f)) return glm::vec2(0.0f);
+  const float r2 = p.densityRadius * p.densityRadius;
+  return {1.0f / r2, 6.0f / (3.14159265f * r2)};  // the half disc ahead
+}
+
+uint32_t densityWeight(glm::vec2 x, float dist2, glm::vec2 dir, float invRadius2) {
+  const float t = std::max(1.0f - dist2 * invRadius2, 0.0f);
+  return dist2 > 0.0f && glm::dot(x, dir) < 0.0f ? uint32_t(t * t * gpu_types::kDensityScale + 0.5f)
+                                                 : 0u;
+}
+
+float densitySpeedFactor(uint32_t weights, float norm) {
+  const float rho = float(weights) * (norm / gpu_types::kDensityScale);
+  const float f = rho > 0.0f ? 1.0f - std::exp(-gpu_types::kWeidmannGamma *
+                                               (1.0f / rho - 1.0f / gpu_types::kWeidmannMaxDensity))
+                             : 1.0f;
+  return std::clamp(std::floor(f * 1024.0f + 0.5f) * (1.0f / 1024.0f), gpu_types::kDensityMinSpeed,
+                    1.0f);  // as the shader: steps of 1/1024, so an ulp of exp changes nothing
 }
 
 void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer,

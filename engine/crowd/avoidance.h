@@ -16,6 +16,9 @@
 //     interactions"): an anticipatory force from the time to collision, plus relaxation
 //     towards the waypoint velocity. Forces are summed in fixed point (crowd_types.h), so
 //     the order neighbours are visited in does not matter.
+// Under both policies the local density slows walkers (Weidmann's fundamental diagram, on by
+// default; crowd_types.h): without it agents stream through a bottleneck several abreast at
+// full speed, 2–3× the flow people manage.
 // The output of a step is the heading (placement.w) and velocity/speed (steer) each agent
 // takes, and its speed weight (motion.z, taken up by the root-motion pass at the cycle end).
 // This file is the CPU twin; avoidance_jobs.h records the same passes on the GPU.
@@ -53,6 +56,9 @@ struct AvoidanceParams {
   float ttcTau0 = 3.0f;
   float ttcXi = 0.54f;
   float ttcMaxForce = 20.0f;  // cap of the avoidance acceleration (m/s²)
+  // Density-dependent speed (both policies; crowd_types.h): the kernel radius R of the local
+  // density (m, at most the sensing distance); 0 turns it off.
+  float densityRadius = 1.5f;
   uint32_t seed = 1;
 };
 // Problems with the parameters (empty when valid).
@@ -123,6 +129,13 @@ void steerCpu(const Grid& grid, const AvoidanceParams& params, const SteerFrame&
               std::span<glm::vec4> placement, std::span<glm::vec4> motion,
               std::span<const glm::vec4> goals, std::span<glm::vec4> steer,
               const WallGrid* walls = nullptr);
+// The density rule's push constants (1 / R², 6 / (π R²)), zero when it is off, and the helpers
+// of shaders/avoidance_common.glsl: the fixed-point kernel weight of a neighbour at x = own
+// position − its position (dist2 = |x|²) for an agent heading along dir, and Weidmann's speed
+// fraction for a sum of weights.
+glm::vec2 densityPush(const AvoidanceParams& params);
+uint32_t densityWeight(glm::vec2 x, float dist2, glm::vec2 dir, float invRadius2);
+float densitySpeedFactor(uint32_t weights, float norm);
 // position += velocity · dt for active agents (the kinematic integration of `throng crowd`).
 void advanceCpu(std::span<glm::vec4> placement, std::span<const glm::vec4> steer,
                 std::span<const glm::vec4> goals, float dt);

