@@ -62,6 +62,12 @@ const uint kWallBindingInfo = 2u;      // uniform WallGridInfo
 const uint kWallBindingSegments = 3u;  // texels
 const uint kWallBindingStarts = 4u;    // texels
 const uint kWallBindingIndices = 5u;   // texels
+const uint kWallBindingSteer = 6u;     // texels: the moving form's velocities (steer)
+const uint kWallBindingGoals = 7u;     // texels: the moving form's goals (inactive: no move)
+const uint kWallBindingClearance = 8u; // texels: per wall-grid cell, its distance to the walls
+// Its specialization constant: 1, the agents move by steer · dt here (the kinematic advance and
+// the constraint in one pass, from placement); 0, placement is constrained from `previous`.
+const uint kWallConstantAdvance = 0u;
 
 // path_goals.comp: the path-vector waypoints.
 const uint kGoalsBindingAgentStart = 0u;

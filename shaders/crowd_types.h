@@ -129,6 +129,10 @@ THRONG_CROWD_STRUCT(WallPush) {
   uint count;
   float radius;   // safe radius kept from every segment (plus kWallSkin)
   float maxMove;  // reach − radius: longer moves are shortened (the cell lists end at reach)
+  float dt;       // the moving form: seconds of the step
+  float pad0;
+  float pad1;
+  float pad2;
 };
 
 // Push constants of the goal pass (path-vector waypoints for one simulated second).

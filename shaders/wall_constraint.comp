@@ -7,17 +7,24 @@
 // a slide that meets another wall (a corner) slides again, and after kWallContacts contacts the
 // agent stays at the last one, a safe point. Thin walls need no thickness: the capsule of radius
 // r around the segment is what the move may not enter. CPU twin: crowd::constrainMove.
+// The moving form (kAdvance = 1) is the kinematic advance and the constraint in one pass: the
+// move is from placement to placement + steer · dt (twin: advanceCpu, then constrainMove), which
+// spares the saved copy of placement, a pass and two barriers per step.
 #include "crowd_types.h"
 #include "crowd_bindings.h"
 #include "avoidance_walls.glsl"
 
 layout(local_size_x = 64) in;
+layout(constant_id = kWallConstantAdvance) const uint kAdvance = 0u;
 layout(std430, binding = kWallBindingPlacement) buffer Placement { vec4 placement[]; };
 layout(binding = kWallBindingPrevious) uniform samplerBuffer previousTexels;
 layout(std140, binding = kWallBindingInfo) uniform WallInfo { WallGridInfo wallInfo; };
 layout(binding = kWallBindingSegments) uniform samplerBuffer wallSegments;
 layout(binding = kWallBindingStarts) uniform usamplerBuffer wallStarts;
 layout(binding = kWallBindingIndices) uniform usamplerBuffer wallIndices;
+layout(binding = kWallBindingSteer) uniform samplerBuffer steerTexels;
+layout(binding = kWallBindingGoals) uniform samplerBuffer goalTexels;
+layout(binding = kWallBindingClearance) uniform samplerBuffer clearanceTexels;
 layout(push_constant) uniform Push { WallPush push; };
 
 // Where the move from `from` to `to` ends.
@@ -28,11 +35,13 @@ vec2 constrainMove(vec2 from, vec2 to, WallPush pc, WallGridInfo info) {
   if (shortened) m *= pc.maxMove / len;
   uint cell = wallCell(from, info);
   if (cell == 0xFFFFFFFFu) return shortened ? from + m : to;
-  uint begin = texelFetch(wallStarts, int(cell)).x;
-  uint end = texelFetch(wallStarts, int(cell + 1u)).x;
   float r = pc.radius + kWallSkin;
-  // Segments farther than r + |m| from the start cannot be touched by any slide of this move.
+  // Segments farther than r + |m| from the start cannot be touched by any slide of this move;
+  // where the whole cell is that far from every wall (most agents), none is read at all.
   float screen = r + length(m);
+  bool clear = texelFetch(clearanceTexels, int(cell)).x > screen;
+  uint begin = clear ? 0u : texelFetch(wallStarts, int(cell)).x;
+  uint end = clear ? 0u : texelFetch(wallStarts, int(cell + 1u)).x;
   vec2 p = from;
   for (uint contact = 0u; contact < kWallContacts; ++contact) {
     float first = kNoWallHit;
@@ -64,6 +73,14 @@ void main() {
   if (n >= pc.count) return;
   uint i = pc.first + n;
   vec4 place = placement[i];
-  vec2 to = constrainMove(texelFetch(previousTexels, int(i)).xz, place.xz, pc, info);
-  if (to != place.xz) placement[i] = vec4(to.x, place.y, to.y, place.w);
+  vec2 from = place.xz, to = place.xz;
+  if (kAdvance != 0u) {
+    if (texelFetch(goalTexels, int(i)).w == 0.0) return;  // inactive: stays
+    vec2 v = texelFetch(steerTexels, int(i)).xy;
+    to = vec2(place.x + v.x * pc.dt, place.z + v.y * pc.dt);  // as avoidance_advance.comp
+  } else {
+    from = texelFetch(previousTexels, int(i)).xz;
+  }
+  vec2 end = constrainMove(from, to, pc, info);
+  if (kAdvance != 0u || end != place.xz) placement[i] = vec4(end.x, place.y, end.y, place.w);
 }

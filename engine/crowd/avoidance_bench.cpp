@@ -103,11 +103,9 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
   const std::vector<glm::vec4> startPlacement = crowd.placement, startSteer = steer;
   std::optional<WallGrid> wallGrid;
   std::unique_ptr<WallBuffers> wallBuffers;
-  SavedPositions previous;
   if (walls) {
     wallGrid = binWallsFor(benchBoxes(half), params);
     wallBuffers = std::make_unique<WallBuffers>(uploadWalls(context, *wallGrid));
-    previous = makeSavedPositions(context, agents);
   }
   AvoidancePrograms programs(context);
   CrowdBuffers buffers = uploadCrowd(context, crowd);
@@ -123,7 +121,8 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     SteerFrame frame = benchFrame(s);
     GridJob gridJob{&buffers, &agentBuffers, &grid, &timestamps};
     AvoidanceJob avoid{&buffers, &agentBuffers, &grid, params, frame, wallBuffers.get()};
-    AdvanceJob advance{&buffers, &agentBuffers, frame.dt};
+    // With walls the advance constrains the move in the same pass (as `throng crowd` runs).
+    AdvanceJob advance{&buffers, &agentBuffers, frame.dt, wallBuffers.get(), params.radius};
     timestamps.reset();
     gpu::beginCommands(cmd);
     timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);  // 0
@@ -132,13 +131,7 @@ AvoidanceTiming benchmarkAvoidance(const gpu::Context& context, uint32_t agents,
     avoid.record(cmd, programs);
     timestamps.write(cmd);  // 4
     gpu::computeToComputeBarrier(cmd);
-    if (walls) recordSavePositions(cmd, buffers, previous, 0, agents);
     advance.record(cmd, programs);
-    if (walls) {
-      gpu::computeToComputeBarrier(cmd);
-      WallConstraintJob{&buffers, &previous, wallBuffers.get(), params.radius}.record(cmd,
-                                                                                      programs);
-    }
     timestamps.write(cmd);  // 5
     gpu::endCommands(cmd);
     gpu::submit(context, cmd, fence.get());

@@ -1,5 +1,7 @@
 #include "crowd/avoidance_jobs.h"
 
+#include <array>
+
 #include <algorithm>
 #include <cmath>
 
@@ -104,6 +106,7 @@ AvoidancePrograms::AvoidancePrograms(const gpu::Context& context)
       advance(context, "avoidance_advance.comp"),
       goals(context, "path_goals.comp"),
       wallConstraint(context, "wall_constraint.comp"),
+      wallAdvance(context, "wall_constraint.comp", std::array<uint32_t, 1>{1u}),
       context_(&context),
       chunk_(subgroupChunk(context)) {}
 
@@ -197,6 +200,11 @@ WallBuffers uploadWalls(const gpu::Context& context, const WallGrid& walls) {
                                               gpu::MemoryUse::DeviceLocal, texels);
   b.indices =
       gpu::makeStorageBuffer<uint32_t>(context, walls.indices, gpu::MemoryUse::DeviceLocal, texels);
+  const std::vector<float> noClearance = {0.0f};
+  b.clearance = gpu::makeStorageBuffer<float>(
+      context, walls.clearance.empty() ? noClearance : walls.clearance, gpu::MemoryUse::DeviceLocal,
+      texels);
+  b.clearanceTexels = gpu::makeBufferView(context, b.clearance, VK_FORMAT_R32_SFLOAT);
   b.segmentTexels = gpu::makeBufferView(context, b.segments, VK_FORMAT_R32G32B32A32_SFLOAT);
   b.startTexels = gpu::makeBufferView(context, b.starts, VK_FORMAT_R32_UINT);
   b.indexTexels = gpu::makeBufferView(context, b.indices, VK_FORMAT_R32_UINT);
@@ -284,8 +292,8 @@ std::vector<std::string> AvoidanceJob::validate() const {
   if (walls && !(walls->reach >= params.sensing))
     problems.push_back(concat("the walls were binned to reach ", walls->reach,
                               " m, less than the sensing distance ", params.sensing, " m"));
-  if (walls &&
-      (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->indexTexels))
+  if (walls && (!walls->info || !walls->segmentTexels || !walls->startTexels ||
+                !walls->indexTexels || !walls->clearanceTexels))
     problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   return problems;
 }
@@ -342,11 +350,23 @@ std::vector<std::string> AdvanceJob::validate() const {
   std::vector<std::string> problems;
   checkCrowdAndAgents(problems, crowd, agents);
   if (!(dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", dt));
+  if (walls && (!walls->info || !walls->segmentTexels || !walls->startTexels ||
+                !walls->indexTexels || !walls->clearanceTexels))
+    problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
+  if (walls && !(radius > 0.0f && walls->reach > radius))
+    problems.push_back(concat("radius must be positive and below the walls' reach ", walls->reach,
+                              " m, got ", radius));
+  if (walls && agents && (!agents->steerTexels || !agents->goalTexels))
+    problems.push_back("texel views of goals or steer are missing");
   return problems;
 }
 
 void AdvanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
   gpu::throwIfInvalid("AdvanceJob", validate());
+  if (walls) {
+    recordWalled(cmd, programs);
+    return;
+  }
   AdvancePush push{};
   push.agentCount = crowd->count;
   push.dt = dt;
@@ -355,6 +375,27 @@ void AdvanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs) 
       gpu::storageBinding(gpu_types::kAdvanceBindingSteer, agents->steer),
       gpu::storageBinding(gpu_types::kAdvanceBindingGoals, agents->goals)};
   gpu::dispatch(cmd, programs.advance, bindings, push, crowd->count);
+}
+
+void AdvanceJob::recordWalled(VkCommandBuffer cmd, const AvoidancePrograms& programs) const {
+  WallPush push{};
+  push.count = crowd->count;
+  push.radius = radius;
+  push.maxMove = walls->reach - radius;
+  push.dt = dt;
+  if (push.count == 0) return;
+  // `previous` is not read by the moving form; any texel view of the same format stands in.
+  const gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kWallBindingPlacement, crowd->placement),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingPrevious, agents->steerTexels),
+      gpu::uniformBinding(gpu_types::kWallBindingInfo, walls->info),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingSegments, walls->segmentTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingStarts, walls->startTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingIndices, walls->indexTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingSteer, agents->steerTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingGoals, agents->goalTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingClearance, walls->clearanceTexels)};
+  gpu::dispatch(cmd, programs.wallAdvance, bindings, push, push.count);
 }
 
 uint32_t WallConstraintJob::agents() const {
@@ -376,7 +417,8 @@ std::vector<std::string> WallConstraintJob::validate() const {
   if (end > previous->capacity || !previous->texels)
     problems.push_back(concat("the saved positions hold ", previous->capacity,
                               " agents, characters up to ", end, " are constrained"));
-  if (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->indexTexels)
+  if (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->indexTexels ||
+      !walls->clearanceTexels)
     problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   if (!(radius > 0.0f) || !std::isfinite(radius))
     problems.push_back(concat("radius must be positive, got ", radius));
@@ -400,7 +442,11 @@ void WallConstraintJob::record(VkCommandBuffer cmd, const AvoidancePrograms& pro
       gpu::uniformBinding(gpu_types::kWallBindingInfo, walls->info),
       gpu::uniformTexelBinding(gpu_types::kWallBindingSegments, walls->segmentTexels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingStarts, walls->startTexels),
-      gpu::uniformTexelBinding(gpu_types::kWallBindingIndices, walls->indexTexels)};
+      gpu::uniformTexelBinding(gpu_types::kWallBindingIndices, walls->indexTexels),
+      // Not read by the constraining form; texel views of the same format stand in.
+      gpu::uniformTexelBinding(gpu_types::kWallBindingSteer, previous->texels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingGoals, previous->texels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingClearance, walls->clearanceTexels)};
   gpu::dispatch(cmd, programs.wallConstraint, bindings, push, push.count);
 }
 

@@ -29,6 +29,7 @@ class AvoidancePrograms {
   explicit AvoidancePrograms(const gpu::Context& context);
   ~AvoidancePrograms();
   gpu::ComputeProgram count, scan, scatter, advance, goals, wallConstraint;
+  gpu::ComputeProgram wallAdvance;  // wall_constraint.comp in its moving form
   const gpu::ComputeProgram& steer(SteerPolicy policy, glm::ivec2 range, bool walls = false) const;
   uint32_t chunk() const { return chunk_; }  // candidates shared per subgroup round
   // Empty walls, bound where a pass runs without walls (every declared binding must be given).
@@ -45,8 +46,8 @@ class AvoidancePrograms {
 // A WallGrid on the GPU: its frame as a uniform block, segments (RGBA32F), starts and indices
 // (R32UI) as texels. Uploaded once: walls do not move.
 struct WallBuffers {
-  gpu::Buffer info, segments, starts, indices;
-  gpu::Handle<VkBufferView> segmentTexels, startTexels, indexTexels;
+  gpu::Buffer info, segments, starts, indices, clearance;
+  gpu::Handle<VkBufferView> segmentTexels, startTexels, indexTexels, clearanceTexels;
   float reach = 0.0f;  // the grid's lists hold every segment within this of their cell
   uint32_t segmentCount = 0;
 };
@@ -119,14 +120,21 @@ struct AvoidanceJob {
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
 };
 
-// position += velocity · dt for active agents (twin: advanceCpu).
+// position += velocity · dt for active agents (twin: advanceCpu). With walls, the move is
+// constrained in the same pass as WallConstraintJob constrains a saved move (twin: advanceCpu,
+// then wallConstraintCpu): no saved positions and no second pass.
 struct AdvanceJob {
   const CrowdBuffers* crowd = nullptr;   // input/output: placement
   const SteerBuffers* agents = nullptr;  // input: steer, goals
   float dt = 0.0f;
+  const WallBuffers* walls = nullptr;  // optional
+  float radius = 0.3f;                 // with walls: the safe radius kept from them
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
+
+ private:
+  void recordWalled(VkCommandBuffer cmd, const AvoidancePrograms& programs) const;
 };
 
 // The hard guarantee of static walls (shaders/wall_constraint.comp; twin: wallConstraintCpu):

@@ -15,6 +15,6 @@ static_assert(sizeof(SteerPush) == 128,
               "SteerPush must match the GLSL push block (at most 128 bytes)");
 static_assert(sizeof(AdvancePush) == 16, "AdvancePush must match the GLSL push block");
 static_assert(sizeof(WallGridInfo) == 32, "WallGridInfo must match the GLSL uniform block");
-static_assert(sizeof(WallPush) == 16, "WallPush must match the GLSL push block");
+static_assert(sizeof(WallPush) == 32, "WallPush must match the GLSL push block");
 static_assert(sizeof(GoalPush) == 16, "GoalPush must match the GLSL push block");
 }  // namespace throng::crowd

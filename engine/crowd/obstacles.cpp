@@ -107,6 +107,26 @@ void forCellsNear(const WallGrid& g, const Segment& s, Visit visit) {
     }
 }
 
+bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b);  // below
+
+// The distance between segment s and the cell [lo, hi] (0 where they meet), less a margin for
+// the rounding of the cell's corners and of the shaders' own distances.
+float cellDistance(const Segment& s, glm::vec2 lo, glm::vec2 hi) {
+  auto inside = [&](glm::vec2 p) {
+    return glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi));
+  };
+  if (inside(s.a) || inside(s.b)) return 0.0f;
+  const glm::vec2 corners[] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+  float d = kNoWallHit;
+  for (int k = 0; k < 4; ++k) {
+    const glm::vec2 c = corners[k], e = corners[(k + 1) % 4];
+    if (segmentsCross(s.a, s.b, c, e)) return 0.0f;
+    d = std::min(d, glm::length(c - closestOnSegment(c, s.a, s.b)));
+  }
+  for (glm::vec2 p : {s.a, s.b}) d = std::min(d, glm::length(p - glm::clamp(p, lo, hi)));
+  return std::max(d - 1e-3f, 0.0f);
+}
+
 }  // namespace
 
 WallGrid binObstacles(const Obstacles& o, float cellSize, float reach, size_t maxEntries) {
@@ -146,8 +166,15 @@ WallGrid binObstacles(const Obstacles& o, float cellSize, float reach, size_t ma
   for (size_t c = 0; c < counts.size(); ++c) g.starts[c + 1] = g.starts[c] + counts[c];
   g.indices.resize(entries);
   std::vector<uint32_t> cursor(g.starts.begin(), g.starts.end() - 1);
+  g.clearance.assign(counts.size(), reach);
   for (size_t k = 0; k < o.segments.size(); ++k)
-    forCellsNear(g, o.segments[k], [&](uint32_t cell) { g.indices[cursor[cell]++] = uint32_t(k); });
+    forCellsNear(g, o.segments[k], [&](uint32_t cell) {
+      g.indices[cursor[cell]++] = uint32_t(k);
+      const glm::vec2 lo =
+          g.origin + glm::vec2(float(cell % g.columns), float(cell / g.columns)) * g.cellSize;
+      g.clearance[cell] =
+          std::min(g.clearance[cell], cellDistance(o.segments[k], lo, lo + g.cellSize));
+    });
   return g;
 }
 
@@ -214,6 +241,8 @@ glm::vec2 constrainMove(const WallGrid& walls, glm::vec2 from, glm::vec2 to, flo
   if (cell == UINT32_MAX) return shortened ? from + m : to;
   const float r = radius + kWallSkin;
   const float screen = r + glm::length(m);  // no slide of this move reaches farther segments
+  if (cell < walls.clearance.size() && walls.clearance[cell] > screen)  // as the shader
+    return shortened ? from + m : to;
   glm::vec2 p = from;
   for (int contact = 0; contact < 3; ++contact) {
     float first = kNoWallHit;

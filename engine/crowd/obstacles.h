@@ -62,8 +62,11 @@ struct WallGrid {
   float reach = 0.0f;
   uint32_t columns = 0, rows = 0;
   std::vector<Segment> segments;
-  std::vector<uint32_t> starts;        // per cell + 1: first entry of its list (prefix sums)
-  std::vector<uint32_t> indices;       // segment indices, by cell
+  std::vector<uint32_t> starts;   // per cell + 1: first entry of its list (prefix sums)
+  std::vector<uint32_t> indices;  // segment indices, by cell
+  // Per cell: its distance to the nearest listed segment (reach where none is listed), so the
+  // constraint skips a cell's list when its move cannot come that close.
+  std::vector<float> clearance;
   uint32_t cellOf(glm::vec2 p) const;  // UINT32_MAX outside the grid
 };
 // Throws Error for invalid obstacles, a non-positive cell size or reach, or a binning that would

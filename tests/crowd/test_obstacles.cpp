@@ -120,6 +120,7 @@ struct GpuWalls {
   crowd::WallBuffers walls;
   crowd::SavedPositions previous;
   uint32_t n = 0;
+  bool fused = false;  // the advance constrains the move itself (no saved positions)
 
   GpuWalls(const Agents& a, const crowd::AvoidanceParams& p, const crowd::WallGrid& wallGrid)
       : params(p),
@@ -149,6 +150,10 @@ struct GpuWalls {
       gpu::computeToComputeBarrier(cmd);
       avoid.record(cmd, programs);
       gpu::computeToComputeBarrier(cmd);
+      if (fused) {
+        crowd::AdvanceJob{&crowd, &agents, 0.05f, &walls, params.radius}.record(cmd, programs);
+        return;
+      }
       crowd::recordSavePositions(cmd, crowd, previous, 0, n);
       advance.record(cmd, programs);
       gpu::computeToComputeBarrier(cmd);
@@ -237,6 +242,12 @@ TEST_CASE("walls: a point's cell lists every segment within reach (brute force)"
       bool listed = false;
       for (uint32_t e = g.starts[cell]; e < g.starts[cell + 1]; ++e) listed |= g.indices[e] == s;
       REQUIRE(listed);
+    }
+    // The cell's clearance is no farther than any listed segment is from a point in it.
+    if (cell == UINT32_MAX) continue;
+    for (uint32_t e = g.starts[cell]; e < g.starts[cell + 1]; ++e) {
+      const crowd::Segment& s = o.segments[g.indices[e]];
+      REQUIRE(g.clearance[cell] <= glm::length(p - crowd::closestOnSegment(p, s.a, s.b)));
     }
   }
   CHECK(near > 1000);  // the sample does test lists
@@ -342,6 +353,40 @@ TEST_CASE("walls: GPU vs CPU twin with walls, each policy") {
     MESSAGE(crowd::steerPolicyName(policy), ": max |GPU - CPU| position ", worst, " m");
     CHECK(worst <= 1e-4f);
   }
+  CHECK(test::gpuContext().validationMessageCount() == 0);
+}
+
+TEST_CASE("walls: the advance that constrains its own move matches the saved move + constraint") {
+  const crowd::Obstacles o = testWalls();
+  const Agents start = fieldAgents(o, 2000, 11);
+  crowd::AvoidanceParams params;
+  const crowd::WallGrid walls = binned(o, params);
+  GpuWalls saved(start, params, walls), fused(start, params, walls);
+  fused.fused = true;
+  Agents cpu = start;
+  std::vector<glm::vec4> previous;
+  float apart = 0.0f, fromTwin = 0.0f;
+  size_t moved = 0;
+  for (int s = 0; s < 30; ++s) {
+    fused.upload(cpu);  // both start every step from the twin's state
+    saved.upload(cpu);
+    fused.step(s);
+    saved.step(s);
+    const std::vector<glm::vec4> before = cpu.crowd.placement;
+    stepCpu(cpu, params, walls, s, previous);
+    const std::vector<glm::vec4> a = fused.placement(), b = saved.placement();
+    for (size_t i = 0; i < a.size(); ++i) {
+      apart = std::max(apart, glm::length(glm::vec3(a[i]) - glm::vec3(b[i])));
+      fromTwin =
+          std::max(fromTwin, glm::length(glm::vec3(a[i]) - glm::vec3(cpu.crowd.placement[i])));
+      moved += a[i] != before[i];
+    }
+  }
+  MESSAGE("fused vs saved move: ", apart, " m; vs the twin: ", fromTwin, " m; ", moved,
+          " agent-steps moved");
+  CHECK(apart == 0.0f);
+  CHECK(fromTwin <= 1e-4f);
+  CHECK(moved > 30000);
   CHECK(test::gpuContext().validationMessageCount() == 0);
 }
 
