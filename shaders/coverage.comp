@@ -1,10 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Coverage LOD pass, one invocation per character: its projected height picks a level (with
 // hysteresis, changing at a cycle end) whose joints the pose pass synthesizes and the renderer
-// draws; a sphere around the whole body tells whether any of it is on screen (the five part
-// spheres of the paper's eqs. 1–9, docs/design.md are still measured, for the areas output and the state's bits).
+// draws; a sphere around the whole body tells whether any of it is on screen. The five part
+// spheres of the paper's eqs. 1–9 (docs/design.md) are measured when the areas are asked for.
 // CPU twin: synth::coverageCharacter (engine/synth/coverage.cpp), mirrored operation for
 // operation (the math is in coverage_common.glsl).
 #include "coverage_types.h"
@@ -12,22 +13,20 @@
 #include "coverage_common.glsl"
 
 layout(local_size_x = 64) in;
+layout(constant_id = kCoverageConstantCharactersPerInvocation) const uint kPerInvocation = 1u;
 layout(std140, binding = kCoverageBindingParts) uniform Parts { CoverageParts parts; };
-layout(std430, binding = kCoverageBindingPlacement) readonly buffer Placement { vec4 placement[]; };
-layout(std430, binding = kCoverageBindingMotion) readonly buffer Motion { vec4 motion[]; };
+// Per-character inputs as texels and the masks as 64-bit words: lavapipe moves a storage-buffer
+// vector one component per lane in a loop (docs/design.md, "Decisions for CPU devices").
+layout(binding = kCoverageBindingPlacement) uniform samplerBuffer placementTexels;
+layout(binding = kCoverageBindingMotion) uniform samplerBuffer motionTexels;
 layout(std430, binding = kCoverageBindingJoints) readonly buffer Joints { JointMatrix joints[]; };  // the chunk's characters
-layout(std430, binding = kCoverageBindingMasks) buffer Masks { CoverageMask masks[]; };           // global index, in/out
+layout(std430, binding = kCoverageBindingMasks) buffer Masks { u64vec2 maskWords[]; };  // CoverageMask, global index, in/out
 layout(std430, binding = kCoverageBindingAreas) writeonly buffer Areas { float areas[]; };        // global index × 5
 layout(push_constant) uniform Push { CoveragePush push; };
 
-void main() {
-  uint local = gl_GlobalInvocationID.x;
-  if (local >= push.characterCount) return;
-  uint i = push.firstCharacter + local;
-  vec4 place = placement[i];
-  vec4 m = motion[i];
-  float scale = characterScale(m);
-  CoverageMask previous = masks[i];
+// The five part spheres' areas (areas output) and on-screen bits (state bits 0..4). The level
+// follows the projected height alone, so the frame's pass skips them; tests and figures ask.
+uint measureParts(uint i, uint local, vec4 place, float scale, CoverageMask previous) {
   bool readJoints = (push.flags & kCoverageReadJoints) != 0u;
   float c = cos(place.w);
   float s = sin(place.w);
@@ -41,13 +40,40 @@ void main() {
                       ? jointCentre(joints[local * push.jointCount + part.joint], part.bonePoint)
                       : estimatedCentre(part, place.xyz, c, s, scale);
     float area = sphereCoverage(push.view, push.viewport, push.frustum, centre, part.centre.w * scale);
-    if ((push.flags & kCoverageWriteAreas) != 0u) areas[i * kCoveragePartCount + k] = area;
+    areas[i * kCoveragePartCount + k] = area;
     if (area > 0.0) onScreen |= 1u << k;
   }
-  float h = projectedHeight(push.view, push.viewport, place.xyz, parts.body.x * scale);
-  bool visible = bodyOnScreen(push.view, push.viewport, push.frustum, place.xyz, parts.body.x * scale);
-  uvec2 levelState = nextLevel(parts, previous, m, h, visible);
-  CoverageLevel level = parts.levels[levelState.x];
-  uvec2 synthesized = visible ? uvec2(level.synthLo, level.synthHi) : uvec2(parts.baseLo, parts.baseHi);
-  masks[i] = CoverageMask(synthesized.x, synthesized.y, levelState.x, levelState.y | onScreen);
+  return onScreen;
+}
+
+void coverCharacter(uint local) {
+  uint i = push.firstCharacter + local;
+  vec4 place = texelFetch(placementTexels, int(i));
+  vec4 m = texelFetch(motionTexels, int(i));
+  float scale = characterScale(m);
+  u64vec2 words = maskWords[i];
+  uvec2 lohi = unpackUint2x32(words.x), levelState = unpackUint2x32(words.y);
+  CoverageMask previous = CoverageMask(lohi.x, lohi.y, levelState.x, levelState.y);
+  float height = parts.body.x * scale;
+  vec3 middle = cameraSpace(push.view, place.xyz + vec3(0.0, 0.5 * height, 0.0));
+  float h = projectedHeight(push.viewport, middle, height);
+  bool visible = bodyOnScreen(push.viewport, push.frustum, middle, height);
+  uint onScreen = (push.flags & kCoverageWriteAreas) != 0u ? measureParts(i, local, place, scale, previous) : 0u;
+  levelState = nextLevel(parts.body, levelHeights(parts.levels[1], parts.levels[2]), previous, m, h, visible);
+  uvec2 synthesized = uvec2(parts.baseLo, parts.baseHi);
+  if (visible && levelState.x == kLevelNear) synthesized = uvec2(parts.levels[2].synthLo, parts.levels[2].synthHi);
+  if (visible && levelState.x == kLevelMid) synthesized = uvec2(parts.levels[1].synthLo, parts.levels[1].synthHi);
+  if (visible && levelState.x == kLevelFar) synthesized = uvec2(parts.levels[0].synthLo, parts.levels[0].synthHi);
+  maskWords[i] = u64vec2(packUint2x32(synthesized), packUint2x32(uvec2(levelState.x, levelState.y | onScreen)));
+}
+
+// kPerInvocation characters each, strided (see root_motion.comp).
+void main() {
+  uint stride = (push.characterCount + kPerInvocation - 1u) / kPerInvocation;
+  if (gl_GlobalInvocationID.x >= stride) return;
+  for (uint k = 0u; k < kPerInvocation; ++k) {
+    uint local = gl_GlobalInvocationID.x + k * stride;
+    if (local >= push.characterCount) break;
+    coverCharacter(local);
+  }
 }

@@ -38,49 +38,74 @@ vec3 jointCentre(JointMatrix a, float bonePoint) {
   return vec3(a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w, a.row2.y * bonePoint + a.row2.w);
 }
 
-// The character's standing height on screen in pixels: f·H/z at the depth of its middle; a
-// character whose middle is nearer than half its height (or behind the camera) counts as huge.
-float projectedHeight(mat4 view, vec4 viewport, vec3 origin, float height) {
-  vec4 v = view * vec4(origin + vec3(0.0, 0.5 * height, 0.0), 1.0);
-  float z = -v.z;
-  return z > 0.5 * height ? viewport.z * height / z : 1.0e9;
+// World → camera space looking down +z.
+vec3 cameraSpace(mat4 view, vec3 world) {
+  vec4 v = view * vec4(world, 1.0);
+  return vec3(v.x, v.y, -v.z);
 }
 
-// Whether any of a character standing at `origin`, `height` tall, can be on screen: a sphere
-// around its middle reaching 0.8 of its height (raised arms, long strides) meets the frustum.
-bool bodyOnScreen(mat4 view, vec4 viewport, vec4 frustum, vec3 origin, float height) {
-  return sphereCoverage(view, viewport, frustum, origin + vec3(0.0, 0.5 * height, 0.0), 0.8 * height) > 0.0;
+// Whether a sphere at camera-space `o` meets the view frustum: the same case analysis as
+// sphereCoverage without the area (its area is > 0 exactly when this holds).
+bool sphereInFrustum(vec4 viewport, vec4 frustum, vec3 o, float radius) {
+  if (dot(o, o) <= radius * radius) return true;
+  if (o.z + radius <= viewport.w) return false;
+  if (abs(o.x) * frustum.x - o.z * frustum.y > radius) return false;
+  if (abs(o.y) * frustum.z - o.z * frustum.w > radius) return false;
+  return true;
+}
+
+// The character's standing height on screen in pixels: f·H/z at the depth z of its middle
+// (camera space); a character whose middle is nearer than half its height (or behind the
+// camera) counts as huge.
+float projectedHeight(vec4 viewport, vec3 middle, float height) {
+  return middle.z > 0.5 * height ? viewport.z * height / middle.z : 1.0e9;
+}
+
+// Whether any of a character `height` tall whose middle is at camera-space `middle` can be on
+// screen: a sphere around its middle reaching 0.8 of its height (raised arms, long strides)
+// meets the frustum.
+bool bodyOnScreen(vec4 viewport, vec4 frustum, vec3 middle, float height) {
+  return sphereInFrustum(viewport, frustum, middle, 0.8 * height);
 }
 
 // The level for projected height h, starting from `level`: up while h reaches the next level's
 // entry height, down while h is under the level's leaving height (hysteresis between them).
-uint levelForHeight(CoverageParts parts, uint level, float h) {
-  while (level + 1u < kLevelCount && h >= parts.levels[level + 1u].enterHeight) level = level + 1u;
-  while (level > 0u && h < parts.levels[level].leaveHeight) level = level - 1u;
+// heights: entry heights of levels 1 and 2, then their leaving heights (levelHeights). Written
+// out for the three levels: a per-lane index into a uniform buffer (or a whole uniform struct
+// passed by value) costs a gather per lane on lavapipe.
+uint levelForHeight(vec4 heights, uint level, float h) {
+  if (level == 0u && h >= heights.x) level = 1u;
+  if (level == 1u && h >= heights.y) level = 2u;
+  if (level == 2u && h < heights.w) level = 1u;
+  if (level == 1u && h < heights.z) level = 0u;
   return level;
+}
+
+vec4 levelHeights(CoverageLevel mid, CoverageLevel near) {
+  return vec4(mid.enterHeight, near.enterHeight, mid.leaveHeight, near.leaveHeight);
 }
 
 // Level, timer and phase from last frame's state: the level follows the height, but a visible
 // character changes level only at the end of a walk cycle (the phase wraps) and at least
 // body.y seconds after its last change; a character off screen changes at once (nothing
 // pops), still at most once per body.y seconds. The time since the last change comes from the
-// phase advance and the blended cycle duration.
-uvec2 nextLevel(CoverageParts parts, CoverageMask previous, vec4 motion, float h, bool visible) {
+// phase advance and the blended cycle duration. body: CoverageParts.body.
+uvec2 nextLevel(vec4 body, vec4 heights, CoverageMask previous, vec4 motion, float h, bool visible) {
   uint state = previous.state;
   bool initialized = (state & kStateInitialized) != 0u;
   float previousPhase = float(state >> kStatePhaseShift) / 65535.0;
   float advance = cyclePhase(motion) - previousPhase;
   bool wrapped = advance < 0.0;
   if (wrapped) advance = advance + 1.0;
-  float cycleSeconds = parts.body.z * (1.0 - speedWeight(motion)) + parts.body.w * speedWeight(motion);
+  float cycleSeconds = body.z * (1.0 - speedWeight(motion)) + body.w * speedWeight(motion);
   uint timer = min(((state >> kStateTimerShift) & kStateTimerMax) + uint(advance * cycleSeconds * kStateTimerUnits),
                    kStateTimerMax);
   uint level = initialized ? min(previous.level, kLevelCount - 1u) : kLevelFar;
-  uint target = levelForHeight(parts, level, h);
+  uint target = levelForHeight(heights, level, h);
   if (!initialized) {
     level = target;
     timer = 0u;
-  } else if (target != level && float(timer) >= parts.body.y * kStateTimerUnits && (wrapped || !visible)) {
+  } else if (target != level && float(timer) >= body.y * kStateTimerUnits && (wrapped || !visible)) {
     level = target;
     timer = 0u;
   }

@@ -20,7 +20,7 @@ const uint kCoveragePartCount = 5u;
 
 // CoveragePush.flags
 const uint kCoverageReadJoints = 1u;  // sphere centres from the joint matrices (else estimated)
-const uint kCoverageWriteAreas = 2u;  // fill the optional areas buffer
+const uint kCoverageWriteAreas = 2u;  // measure the five part spheres: areas and state bits
 
 // Levels written per character (also the Fig. 8 tint), chosen from its projected height.
 const uint kLevelFar = 0u;   // four limbs to the wrists and ankles; spine and neck one bone each
@@ -29,7 +29,8 @@ const uint kLevelNear = 2u;  // every joint
 const uint kLevelCount = 3u;
 
 // CoverageMask.state: what the pass keeps from frame to frame.
-const uint kStatePartBits = 31u;       // bits 0..4: parts whose sphere is on screen (area > 0)
+const uint kStatePartBits = 31u;       // bits 0..4: parts whose sphere is on screen (area > 0),
+                                       //   when measured (kCoverageWriteAreas), else 0
 const uint kStateInitialized = 32u;    // bit 5: `level` was chosen by this pass
 const uint kStateTimerShift = 6u;      // bits 6..15: time since the level changed, 1/256 s units,
 const uint kStateTimerMax = 1023u;     //   saturating at 4 s

@@ -15,15 +15,29 @@ layout(local_size_x = 64) in;
 // The motion texels like the pose pass reads them (motion_texels.glsl): on lavapipe a texelFetch
 // goes through the whole sampler path.
 layout(constant_id = kRootMotionConstantJointCount) const int kJointCount = 1;
+layout(constant_id = kRootMotionConstantCharactersPerInvocation) const uint kPerInvocation = 1u;
 #include "motion_texels.glsl"
-layout(std430, binding = kRootMotionBindingPlacement) buffer Placement { vec4 placement[]; };
-layout(std430, binding = kRootMotionBindingMotion) buffer Motion { vec4 motion[]; };
+// Read and written as 64-bit words: lavapipe moves a storage-buffer vector one component per lane
+// in a loop (docs/design.md, "Decisions for CPU devices"). Not through texel views: a pass that
+// reads a buffer through one descriptor and writes it through another is a hazard.
+layout(std430, binding = kRootMotionBindingPlacement) buffer Placement { u64vec2 placementWords[]; };
+layout(std430, binding = kRootMotionBindingMotion) buffer Motion { u64vec2 motionWords[]; };
+
+vec4 vec4OfWords(u64vec2 w) {
+  return vec4(uintBitsToFloat(unpackUint2x32(w.x)), uintBitsToFloat(unpackUint2x32(w.y)));
+}
+u64vec2 wordsOfVec4(vec4 v) {
+  return u64vec2(packUint2x32(floatBitsToUint(v.xy)), packUint2x32(floatBitsToUint(v.zw)));
+}
 layout(push_constant) uniform Push { RootMotionPush push; };
 
 // Root position at row k ≥ 0 counted on from the cycle start (k ≥ F continues into the next
 // cycle, moved on by the cycle's travel).
 vec3 rootRow(bool fast, uint frames, vec3 cycleTravel, int k) {
-  int cycles = k / int(frames);
+  // k / frames by a float division: lavapipe has no vector integer division and would divide
+  // lane by lane. Exact here: k and frames are small whole numbers (far below 2^20), so the
+  // correctly rounded quotient never crosses an integer that the true one does not reach.
+  int cycles = int(floor(float(k) / float(frames)));
   int frame = k - cycles * int(frames);
   int texel = frame * 2 * kJointCount + 1;
   return (fast ? fastTexel(texel) : slowTexel(texel)).xyz + float(cycles) * cycleTravel;
@@ -37,11 +51,9 @@ vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, float u) {
   return rootRow(fast, frames, cycleTravel, k) * (1.0 - t) + rootRow(fast, frames, cycleTravel, k + 1) * t;
 }
 
-void main() {
-  if (gl_GlobalInvocationID.x >= push.characterCount) return;
-  uint i = push.firstCharacter + gl_GlobalInvocationID.x;
-  vec4 place = placement[i];
-  vec4 m = motion[i];
+void moveCharacter(uint i) {
+  vec4 place = vec4OfWords(placementWords[i]);
+  vec4 m = vec4OfWords(motionWords[i]);
   float w = speedWeight(m);
   float duration = push.slowDuration * (1.0 - w) + push.fastDuration * w;
   float phase0 = cyclePhase(m);
@@ -63,6 +75,18 @@ void main() {
   float wraps = floor(phase1);
   m = withCyclePhase(m, phase1 - wraps);
   if (wraps > 0.0) m = withSpeedWeight(m, targetSpeedWeight(m));
-  placement[i] = place;
-  motion[i] = m;
+  placementWords[i] = wordsOfVec4(place);
+  motionWords[i] = wordsOfVec4(m);
+}
+
+// kPerInvocation characters each, strided so that neighbouring lanes take neighbouring
+// characters (synth::charactersPerInvocation says why).
+void main() {
+  uint stride = (push.characterCount + kPerInvocation - 1u) / kPerInvocation;
+  if (gl_GlobalInvocationID.x >= stride) return;
+  for (uint k = 0u; k < kPerInvocation; ++k) {
+    uint local = gl_GlobalInvocationID.x + k * stride;
+    if (local >= push.characterCount) break;
+    moveCharacter(push.firstCharacter + local);
+  }
 }

@@ -24,9 +24,11 @@ const uint kTexelsConstantUniformTexels = 582u;
 const uint kTexelsConstantInUniform = 583u;
 
 // root_motion.comp: each character's phase, speed weight and root (the paper's eq. 10).
-const uint kRootMotionBindingPlacement = 2u;
-const uint kRootMotionBindingMotion = 3u;
+const uint kRootMotionBindingPlacement = 2u;  // vec4 per character as two 64-bit words
+const uint kRootMotionBindingMotion = 3u;     // vec4 per character as two 64-bit words
 const uint kRootMotionConstantJointCount = 0u;  // the texel row width
+// Characters per invocation (synth::charactersPerInvocation), past the texel constants.
+const uint kRootMotionConstantCharactersPerInvocation = 584u;
 
 // synth_pose.comp: blend, hierarchy and draw matrices per character.
 const uint kPoseBindingRadius = 2u;
@@ -62,9 +64,10 @@ const uint kPoseCachedBindingMasks = 11u;
 const uint kPoseCachedConstantJointCount = 0u;
 
 // cache_lookup.comp: the speed-weight buckets requested this frame.
-const uint kCacheLookupBindingMotion = 0u;
+const uint kCacheLookupBindingMotion = 0u;  // uniform texel buffer
 const uint kCacheLookupBindingCounters = 1u;
 const uint kCacheLookupBindingRequested = 2u;
+const uint kCacheLookupConstantCharactersPerInvocation = 0u;
 
 // cache_insert.comp: FIFO slots for the missing buckets, the fill's indirect dispatch.
 const uint kCacheInsertBindingCounters = 1u;
@@ -83,11 +86,12 @@ const uint kCacheFillBindingFreshSlots = 8u;
 const uint kCacheFillBindingCacheData = 10u;
 
 // cache_classify.comp: cached characters' pose source, the others into the pose lists.
-const uint kCacheClassifyBindingMotion = 0u;
+const uint kCacheClassifyBindingMotion = 0u;  // uniform texel buffer
 const uint kCacheClassifyBindingBucketSlot = 3u;
 const uint kCacheClassifyBindingCharacterList = 6u;
 const uint kCacheClassifyBindingListCounts = 7u;
 const uint kCacheClassifyBindingPoseSource = 9u;
+const uint kCacheClassifyConstantCharactersPerInvocation = 0u;
 
 // cache_dispatch_args.comp: the list counts as indirect dispatch sizes.
 const uint kCacheArgsBindingListCounts = 7u;
@@ -95,11 +99,12 @@ const uint kCacheArgsBindingDispatchArgs = 8u;
 
 // coverage.comp: the body parts' screen coverage and each character's LOD mask.
 const uint kCoverageBindingParts = 0u;  // uniform
-const uint kCoverageBindingPlacement = 1u;
-const uint kCoverageBindingMotion = 2u;
+const uint kCoverageBindingPlacement = 1u;  // uniform texel buffer
+const uint kCoverageBindingMotion = 2u;     // uniform texel buffer
 const uint kCoverageBindingJoints = 3u;
-const uint kCoverageBindingMasks = 4u;
+const uint kCoverageBindingMasks = 4u;  // CoverageMask as two 64-bit words
 const uint kCoverageBindingAreas = 5u;
+const uint kCoverageConstantCharactersPerInvocation = 0u;
 
 // texel_readback.comp (tests/synth): a motion texture and the parents, copied out.
 const uint kTexelReadbackBindingTexture = 0u;  // combined image sampler

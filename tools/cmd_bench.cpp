@@ -42,7 +42,19 @@ struct BenchOptions {
   std::string experiments;  // directory for the paper's experiments (CSV + PNG); empty: skip
   std::string cloth;        // .tsc for the caped-crowd row; empty: the row is skipped (said so)
   bool clothOnly = false;   // only the caped-crowd row (seconds instead of a minute)
+  // Which kinds of row run (kRowKinds); empty: all.
+  std::vector<std::string> rows;
+  std::vector<uint32_t> frameCounts{100000, 1000000};  // the whole-frame rows
+  bool wants(const std::string& kind) const {
+    return rows.empty() || std::find(rows.begin(), rows.end(), kind) != rows.end();
+  }
 };
+
+// gpu: full GPU synthesis; lod; lod+cache; cpu: the CPU twin; clip-sets: four clip sets against
+// one; render: synthesis + render of --render-characters; frame: whole frames of
+// --frame-characters with LOD + cache, wide and street camera.
+const std::vector<std::string> kRowKinds{"gpu",       "lod",    "lod+cache", "cpu",
+                                         "clip-sets", "render", "frame"};
 
 struct Row {
   std::string variant;
@@ -50,7 +62,19 @@ struct Row {
   double synthesisMs = 0.0;
   double renderMs = 0.0;  // 0 when the variant does not render
   int frames = 0;
+  std::optional<SynthesisPassTimes> passes;  // GPU synthesis rows: median of each pass
 };
+
+SynthesisPassTimes medianPasses(const std::vector<SynthesisPassTimes>& frames) {
+  auto of = [&](double SynthesisPassTimes::*field) {
+    std::vector<double> v;
+    for (const SynthesisPassTimes& t : frames) v.push_back(t.*field);
+    return median(v);
+  };
+  return {of(&SynthesisPassTimes::total), of(&SynthesisPassTimes::rootMotion),
+          of(&SynthesisPassTimes::coverage), of(&SynthesisPassTimes::cache),
+          of(&SynthesisPassTimes::pose)};
+}
 
 constexpr float kDt = 1.0f / 30.0f;
 
@@ -79,15 +103,18 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
       synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
   SynthesisTimer timer(context);
   std::vector<double> ms;
+  std::vector<SynthesisPassTimes> passes;
   for (int f = 0; f < o.warmup + o.frames; ++f) {
     double frameMs =
         timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
-    if (f >= o.warmup) ms.push_back(frameMs);
+    if (f < o.warmup) continue;
+    ms.push_back(frameMs);
+    passes.push_back(timer.lastPasses());
   }
   const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache"};
   if (cache.enabled && synth::readCacheStats(synth).bytesUsed > cache.budgetBytes)
     fail("motion cache exceeded its budget");
-  return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames};
+  return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames, medianPasses(passes)};
 }
 
 Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads,
@@ -108,11 +135,14 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
           frames};
 }
 
+// Synthesis and render of `characters` at --size through the scene's frame, seen by the named
+// camera preset framed around the crowd.
 Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
-                const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant) {
+                const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant,
+                uint32_t characters, const std::string& cameraName = "wide") {
   Size size = parseSize(o.size);
   crowd::ScenarioOptions scenario;
-  scenario.characters = o.renderCharacters;
+  scenario.characters = characters;
   scenario.seed = 42;
   crowd::Crowd crowd = crowd::makeScenario(scenario);
   synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
@@ -126,7 +156,7 @@ Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
   scene::FrameSettings settings;
-  settings.camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  settings.camera = render::cameraPreset(cameraName, crowd::scenarioExtent(scenario));
   settings.targets = render::offscreenFrameTargets(target);
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
@@ -150,7 +180,8 @@ Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
     renderMs.push_back(t.renderMs);
   }
   const char* names[] = {"gpu-synthesis+render-", "gpu-lod+render-", "gpu-lod+cache+render-"};
-  return {concat(names[static_cast<int>(variant)], o.size), o.renderCharacters, median(synthMs),
+  const std::string camera = cameraName == "wide" ? "" : cameraName + "-";
+  return {concat(names[static_cast<int>(variant)], camera, o.size), characters, median(synthMs),
           median(renderMs), o.frames};
 }
 
@@ -230,12 +261,15 @@ void runBench(BenchOptions& o) {
     o.warmup = 1;
     o.renderCharacters = 1000;
     o.clipSetCharacters = 1000;
+    o.frameCounts = {1000};
     o.size = "320x180";
   }
   if (o.frames < 1 || o.warmup < 0) fail("--frames must be >= 1 and --warmup >= 0");
   if (o.clothOnly && o.cloth.empty()) fail("--cloth-only needs --cloth FILE.tsc");
   for (uint32_t n : o.counts)
     if (n == 0 || n > 4000000) fail("--characters: each count must be 1..4000000, got ", n);
+  for (uint32_t n : o.frameCounts)
+    if (n == 0 || n > 4000000) fail("--frame-characters: each count must be 1..4000000, got ", n);
   parseSize(o.size);
   if (!o.cloth.empty()) secondary::readClothDatabase(o.cloth);  // a bad file fails before any row
   if (!o.json.empty()) ensureWritableDirectory(std::filesystem::absolute(o.json).parent_path());
@@ -254,24 +288,39 @@ void runBench(BenchOptions& o) {
     rows.push_back(r);
     std::printf("%-34s %9u %14.3f %12.3f\n", r.variant.c_str(), r.characters, r.synthesisMs,
                 r.renderMs);
+    if (r.passes)
+      std::printf("  passes: root motion %.3f, coverage %.3f, cache %.3f, pose %.3f ms\n",
+                  r.passes->rootMotion, r.passes->coverage, r.passes->cache, r.passes->pose);
+    if (r.renderMs > 0.0)
+      std::printf("  whole frame (synthesis + render): %.2f ms\n", r.synthesisMs + r.renderMs);
     std::fflush(stdout);
   };
   std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
   std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
   // A bar with the ETA over the rows on a terminal (stderr; the table stays on stdout).
   const std::vector<uint32_t> counts = o.clothOnly ? std::vector<uint32_t>{} : o.counts;
-  Progress progress("bench", static_cast<long long>(counts.size()) * (threads > 1 ? 5 : 4) +
-                                 (o.clothOnly ? 0 : 3) + (o.cloth.empty() ? 0 : 1));
+  const bool others = !o.clothOnly;
+  const long long perCount = (o.wants("gpu") ? 1 : 0) + (o.wants("lod") ? 1 : 0) +
+                             (o.wants("lod+cache") ? 1 : 0) +
+                             (o.wants("cpu") ? (threads > 1 ? 2 : 1) : 0);
+  Progress progress(
+      "bench",
+      static_cast<long long>(counts.size()) * perCount + (others && o.wants("clip-sets") ? 1 : 0) +
+          (others && o.wants("render") ? 2 : 0) +
+          (others && o.wants("frame") ? 2 * static_cast<long long>(o.frameCounts.size()) : 0) +
+          (o.cloth.empty() ? 0 : 1));
   long long stagesDone = 0;
   auto next = [&](const std::string& name) { progress.stage(stagesDone++, name); };
+  const anim::Skeleton& skeleton = clips.slow.skeleton;
   for (uint32_t n : counts) {
-    next(concat("GPU synthesis, ", n, " characters"));
-    report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Full));
-    next(concat("GPU synthesis with LOD, ", n, " characters"));
-    report(benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::Lod));
-    next(concat("GPU synthesis with LOD and cache, ", n, " characters"));
-    report(
-        benchGpuSynthesis(context, programs, pair, clips.slow.skeleton, n, o, Variant::LodCache));
+    const std::pair<const char*, Variant> gpuRows[] = {
+        {"gpu", Variant::Full}, {"lod", Variant::Lod}, {"lod+cache", Variant::LodCache}};
+    for (const auto& [kind, variant] : gpuRows) {
+      if (!o.wants(kind)) continue;
+      next(concat("GPU synthesis (", kind, "), ", n, " characters"));
+      report(benchGpuSynthesis(context, programs, pair, skeleton, n, o, variant));
+    }
+    if (!o.wants("cpu")) continue;
     next(concat("CPU twin, 1 thread, ", n, " characters"));
     report(benchCpuSynthesis(pair, n, 1, o));
     if (threads > 1) {
@@ -279,7 +328,7 @@ void runBench(BenchOptions& o) {
       report(benchCpuSynthesis(pair, n, threads, o));
     }
   }
-  if (!o.clothOnly) {
+  if (others && o.wants("clip-sets")) {
     next("four clip sets against one");
     const ClipSetBenchResult sets = benchClipSets(context, o.clipSetCharacters, o.frames, o.warmup);
     report(
@@ -289,10 +338,18 @@ void runBench(BenchOptions& o) {
     std::printf(
         "  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
         sets.ratioMedian, sets.ratioMin, sets.ratioMax);
+  }
+  if (others && o.wants("render")) {
     next("synthesis and render");
-    report(benchRender(context, pair, clips.slow.skeleton, o, Variant::Full));
+    report(benchRender(context, pair, skeleton, o, Variant::Full, o.renderCharacters));
     next("synthesis and render with LOD and cache");
-    report(benchRender(context, pair, clips.slow.skeleton, o, Variant::LodCache));
+    report(benchRender(context, pair, skeleton, o, Variant::LodCache, o.renderCharacters));
+  }
+  for (uint32_t n : others&& o.wants("frame") ? o.frameCounts : std::vector<uint32_t>{}) {
+    for (const char* camera : {"wide", "street"}) {
+      next(concat("whole frame, ", n, " characters, ", camera, " camera"));
+      report(benchRender(context, pair, skeleton, o, Variant::LodCache, n, camera));
+    }
   }
   std::optional<ClothBenchResult> cloth;
   if (!o.cloth.empty()) {
@@ -336,11 +393,17 @@ void runBench(BenchOptions& o) {
   doc["cpu_threads"] = threads;
   doc["frames_measured"] = o.frames;
   for (const Row& r : rows) {
-    doc["results"].push_back({{"variant", r.variant},
-                              {"characters", r.characters},
-                              {"synthesis_ms_median", r.synthesisMs},
-                              {"render_ms_median", r.renderMs},
-                              {"frames", r.frames}});
+    nlohmann::json row = {{"variant", r.variant},
+                          {"characters", r.characters},
+                          {"synthesis_ms_median", r.synthesisMs},
+                          {"render_ms_median", r.renderMs},
+                          {"frames", r.frames}};
+    if (r.passes)
+      row["passes_ms_median"] = {{"root_motion", r.passes->rootMotion},
+                                 {"coverage", r.passes->coverage},
+                                 {"cache", r.passes->cache},
+                                 {"pose", r.passes->pose}};
+    doc["results"].push_back(row);
   }
   if (cloth)
     doc["cloth"] = clothJson(*cloth, ClothBenchOptions{}.targetMs);
@@ -369,6 +432,13 @@ void addBenchCommand(CLI::App& app) {
                   "Crowd size of the storyboard-crowd row (four clip sets against one)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 4000000u));
+  cmd->add_option("--frame-characters", options->frameCounts,
+                  "Crowd sizes of the whole-frame rows (LOD + cache, wide and street camera)")
+      ->capture_default_str();
+  cmd->add_option("--rows", options->rows,
+                  "Only these kinds of row: gpu, lod, lod+cache, cpu, clip-sets, render, frame "
+                  "(default: all)")
+      ->check(CLI::IsMember(kRowKinds));
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
   cmd->add_option(

@@ -3,7 +3,10 @@
 namespace throng::tools {
 
 SynthesisTimer::SynthesisTimer(const gpu::Context& context)
-    : context_(context), pool_(context), fence_(context), timestamps_(context, 2) {
+    : context_(context),
+      pool_(context),
+      fence_(context),
+      timestamps_(context, 2 + synth::kPosePassMarks) {
   cmd_ = pool_.allocate();
 }
 
@@ -21,14 +24,21 @@ double SynthesisTimer::frame(std::span<const synth::SynthPrograms* const> progra
   timestamps_.reset();
   gpu::beginCommands(cmd_);
   timestamps_.write(cmd_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-  synth::recordSynthesis(cmd_, programs, synth, dt, context_.info().maxStorageBufferRange, retarget,
-                         lodCamera);
+  synth::recordRootMotionPasses(cmd_, programs, synth, dt, retarget);
   timestamps_.write(cmd_);
+  synth::recordPosePasses(cmd_, programs, synth, context_.info().maxStorageBufferRange, lodCamera,
+                          &timestamps_);
   gpu::endCommands(cmd_);
   gpu::submit(context_, cmd_, fence_.get());
   fence_.wait();
   fence_.reset();
-  return timestamps_.millisecondsBetween(timestamps_.fetch(), 0, 1);
+  const std::vector<uint64_t> ticks = timestamps_.fetch();
+  auto between = [&](uint32_t from) {
+    return timestamps_.millisecondsBetween(ticks, from, from + 1);
+  };
+  last_ = {timestamps_.millisecondsBetween(ticks, 0, 4), between(0), between(1), between(2),
+           between(3)};
+  return last_.total;
 }
 
 }  // namespace throng::tools

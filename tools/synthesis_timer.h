@@ -8,6 +8,11 @@
 
 namespace throng::tools {
 
+// Milliseconds of one synthesis frame and of its passes (each pass over every group).
+struct SynthesisPassTimes {
+  double total = 0.0, rootMotion = 0.0, coverage = 0.0, cache = 0.0, pose = 0.0;
+};
+
 class SynthesisTimer {
  public:
   explicit SynthesisTimer(const gpu::Context& context);
@@ -20,6 +25,8 @@ class SynthesisTimer {
   double frame(std::span<const synth::SynthPrograms* const> programs,
                const synth::CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget = {},
                const synth::CoverageCamera* lodCamera = nullptr);
+  // The passes' times of the frame that the last call ran.
+  const SynthesisPassTimes& lastPasses() const { return last_; }
 
  private:
   const gpu::Context& context_;
@@ -27,6 +34,7 @@ class SynthesisTimer {
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   gpu::Fence fence_;
   gpu::TimestampPool timestamps_;
+  SynthesisPassTimes last_;
 };
 
 }  // namespace throng::tools

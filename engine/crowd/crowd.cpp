@@ -16,7 +16,10 @@ CrowdBuffers uploadCrowd(const gpu::Context& context, const Crowd& crowd) {
                                         VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
   buffers.placementTexels =
       gpu::makeBufferView(context, buffers.placement, VK_FORMAT_R32G32B32A32_SFLOAT);
-  buffers.motion = gpu::makeStorageBuffer<glm::vec4>(context, crowd.motion);
+  buffers.motion = gpu::makeStorageBuffer<glm::vec4>(
+      context, crowd.motion, gpu::MemoryUse::DeviceLocal, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT);
+  buffers.motionTexels =
+      gpu::makeBufferView(context, buffers.motion, VK_FORMAT_R32G32B32A32_SFLOAT);
   return buffers;
 }
 

@@ -26,8 +26,10 @@ struct Crowd {
 struct CrowdBuffers {
   gpu::Buffer placement;
   gpu::Buffer motion;
-  gpu::Handle<VkBufferView>
-      placementTexels;  // placement as RGBA32F texels (the grid build reads these)
+  // The same as RGBA32F texels: lavapipe gathers a texel fetch in vector loads but moves a
+  // storage-buffer vector one component per lane in a loop, so per-character passes read here.
+  gpu::Handle<VkBufferView> placementTexels;
+  gpu::Handle<VkBufferView> motionTexels;
   uint32_t count = 0;
 };
 CrowdBuffers uploadCrowd(const gpu::Context& context, const Crowd& crowd);

@@ -118,18 +118,32 @@ float sphereCoveragePixels(const CoveragePush& push, glm::vec3 worldCentre, floa
   return std::min(area, screen);
 }
 
-float projectedHeight(const CoveragePush& push, glm::vec3 origin, float height) {
-  const glm::vec4 v = push.view * glm::vec4(origin + glm::vec3(0.0f, 0.5f * height, 0.0f), 1.0f);
-  const float z = -v.z;
-  return z > 0.5f * height ? push.viewport.z * height / z : 1.0e9f;
+glm::vec3 cameraSpace(const CoveragePush& push, glm::vec3 world) {
+  const glm::vec4 v = push.view * glm::vec4(world, 1.0f);
+  return {v.x, v.y, -v.z};
+}
+
+bool sphereInFrustum(const CoveragePush& push, glm::vec3 o, float radius) {
+  if (glm::dot(o, o) <= radius * radius) return true;
+  if (o.z + radius <= push.viewport.w) return false;
+  if (std::abs(o.x) * push.frustum.x - o.z * push.frustum.y > radius) return false;
+  if (std::abs(o.y) * push.frustum.z - o.z * push.frustum.w > radius) return false;
+  return true;
+}
+
+float projectedHeight(const CoveragePush& push, glm::vec3 middle, float height) {
+  return middle.z > 0.5f * height ? push.viewport.z * height / middle.z : 1.0e9f;
 }
 
 namespace {
 
 // Mirrors levelForHeight and nextLevel in coverage_common.glsl.
+static_assert(kLevelCount == 3, "coverage_common.glsl writes the three levels out");
 uint32_t levelForHeight(const CoverageParts& parts, uint32_t level, float h) {
-  while (level + 1u < kLevelCount && h >= parts.levels[level + 1u].enterHeight) level = level + 1u;
-  while (level > 0u && h < parts.levels[level].leaveHeight) level = level - 1u;
+  if (level == 0u && h >= parts.levels[1].enterHeight) level = 1u;
+  if (level == 1u && h >= parts.levels[2].enterHeight) level = 2u;
+  if (level == 2u && h < parts.levels[2].leaveHeight) level = 1u;
+  if (level == 1u && h < parts.levels[1].leaveHeight) level = 0u;
   return level;
 }
 
@@ -162,13 +176,13 @@ std::pair<uint32_t, uint32_t> nextLevel(const CoverageParts& parts, const Covera
 
 }  // namespace
 
-CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts,
-                               glm::vec4 placement, glm::vec4 motion, const JointMatrix* joints,
-                               const CoverageMask& previous, float* areas) {
-  const uint64_t previousMask = maskBits(previous);
+namespace {
+
+// The five part spheres' areas and on-screen bits; mirrors measureParts in coverage.comp.
+uint32_t measureParts(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
+                      float scale, const JointMatrix* joints, uint64_t previousMask, float* areas) {
   const bool readJoints = (push.flags & kCoverageReadJoints) != 0u && joints != nullptr;
   const float c = std::cos(placement.w), s = std::sin(placement.w);
-  const float scale = gpu_types::characterScale(motion);
   uint32_t onScreen = 0;
   for (uint32_t k = 0; k < kCoveragePartCount; ++k) {
     const CoveragePart& part = parts.parts[k];
@@ -187,12 +201,25 @@ CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& pa
     if (areas) areas[k] = area;
     if (area > 0.0f) onScreen |= 1u << k;
   }
+  return onScreen;
+}
+
+}  // namespace
+
+CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts,
+                               glm::vec4 placement, glm::vec4 motion, const JointMatrix* joints,
+                               const CoverageMask& previous, float* areas) {
+  const float scale = gpu_types::characterScale(motion);
   const float height = parts.body.x * scale;
-  const float h = projectedHeight(push, glm::vec3(placement), height);
+  const glm::vec3 middle =
+      cameraSpace(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f));
+  const float h = projectedHeight(push, middle, height);
   // Mirrors bodyOnScreen in coverage_common.glsl.
-  const bool visible =
-      sphereCoveragePixels(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f),
-                           0.8f * height) > 0.0f;
+  const bool visible = sphereInFrustum(push, middle, 0.8f * height);
+  const uint32_t onScreen =
+      (push.flags & kCoverageWriteAreas) != 0u
+          ? measureParts(push, parts, placement, scale, joints, maskBits(previous), areas)
+          : 0u;
   const auto [level, state] = nextLevel(parts, previous, motion, h, visible);
   const CoverageLevel& chosen = parts.levels[level];
   CoverageMask out{};
@@ -233,6 +260,10 @@ std::vector<std::string> CoverageJob::validate() const {
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
   if (crowd && (!crowd->placement || !crowd->motion))
     problems.push_back("crowd buffers are not allocated");
+  if (crowd && (!crowd->placementTexels || !crowd->motionTexels))
+    problems.push_back(
+        "texel views of placement and motion are missing (make the buffers with "
+        "uploadCrowd)");
   if (!parts || !*parts) problems.push_back("input 'parts' (uniform CoverageParts) is missing");
   if (!masks || !*masks) problems.push_back("input/output 'masks' buffer is missing");
   if (jointCount < 1 || jointCount > 64)
@@ -279,8 +310,8 @@ void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program
   // Unused optional bindings get a stand-in buffer the shader never touches (flags say so).
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kCoverageBindingParts, *parts, 0, sizeof(CoverageParts)),
-      gpu::storageBinding(gpu_types::kCoverageBindingPlacement, crowd->placement),
-      gpu::storageBinding(gpu_types::kCoverageBindingMotion, crowd->motion),
+      gpu::uniformTexelBinding(gpu_types::kCoverageBindingPlacement, crowd->placementTexels.get()),
+      gpu::uniformTexelBinding(gpu_types::kCoverageBindingMotion, crowd->motionTexels.get()),
       readJoints ? gpu::storageBinding(gpu_types::kCoverageBindingJoints, *joints, jointsOffset,
                                        VkDeviceSize(count) * jointCount * sizeof(JointMatrix))
                  : gpu::storageBinding(gpu_types::kCoverageBindingJoints, crowd->placement),
@@ -288,11 +319,15 @@ void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program
       writeAreas ? gpu::storageBinding(gpu_types::kCoverageBindingAreas, *areas)
                  : gpu::storageBinding(gpu_types::kCoverageBindingAreas, *masks),
   };
-  gpu::dispatch(cmd, program, bindings, push, count);
+  gpu::dispatch(
+      cmd, program, bindings, push,
+      invocationsFor(program, gpu_types::kCoverageConstantCharactersPerInvocation, count));
 }
 
 gpu::ComputeProgram makeCoverageProgram(const gpu::Context& context) {
-  return gpu::ComputeProgram(context, "coverage.comp");
+  const uint32_t values[] = {charactersPerInvocation(context)};
+  static_assert(gpu_types::kCoverageConstantCharactersPerInvocation == 0);
+  return gpu::ComputeProgram(context, "coverage.comp", values);
 }
 
 }  // namespace throng::synth

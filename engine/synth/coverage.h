@@ -1,9 +1,10 @@
 #pragma once
 // Coverage LOD: per character, a level (far / mid / near, synth::levelJoints) chosen from
 // its projected height with hysteresis, changing only at a walk-cycle end and at most once a
-// second while on screen; five bounding spheres (elbows, mid-spine, knees; the paper's eqs. 1–9, docs/design.md)
-// tell whether any of it is on screen. Output per character: the 64-bit mask of joints to
-// synthesize, the level and the pass's state; optionally the five areas. CPU twin: coverageCpu.
+// second while on screen; five bounding spheres (elbows, mid-spine, knees; the paper's eqs. 1–9,
+// docs/design.md) tell whether any of it is on screen. Output per character: the 64-bit mask of
+// joints to synthesize, the level and the pass's state; optionally the five areas. CPU twin:
+// coverageCpu.
 #include <array>
 #include <span>
 #include <string>
@@ -72,12 +73,19 @@ CoveragePush makeCoveragePush(const CoverageCamera& camera, uint32_t jointCount,
 // edge keeps the detail it would have in the middle.
 float sphereCoveragePixels(const CoveragePush& push, glm::vec3 worldCentre, float radius);
 
-// f·H/z for a character standing at `origin`, H tall (metres): see coverage_common.glsl.
-float projectedHeight(const CoveragePush& push, glm::vec3 origin, float height);
+// World → camera space looking down +z.
+glm::vec3 cameraSpace(const CoveragePush& push, glm::vec3 world);
+// Whether a sphere at camera-space `o` meets the frustum: sphereCoveragePixels' cases without
+// the area (that area is > 0 exactly when this holds).
+bool sphereInFrustum(const CoveragePush& push, glm::vec3 o, float radius);
+// f·H/z for a character H tall (metres) whose middle is at camera-space `middle`: see
+// coverage_common.glsl.
+float projectedHeight(const CoveragePush& push, glm::vec3 middle, float height);
 
 // The CPU twin of coverage.comp for one character: `joints` are its J matrices (nullptr: the
 // centres are estimated from the placement); `previous` is last frame's mask, which says which
-// centre joints the pose pass wrote and holds the level state. `areas` (5 floats) may be nullptr.
+// centre joints the pose pass wrote and holds the level state. The five part spheres are
+// measured only when push.flags has kCoverageWriteAreas (into `areas`, 5 floats, if not null).
 CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts,
                                glm::vec4 placement, glm::vec4 motion, const JointMatrix* joints,
                                const CoverageMask& previous, float* areas);

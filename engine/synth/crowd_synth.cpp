@@ -194,12 +194,16 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
       push.dataBase = g.cache.dataBase;
       push.jointCount = synth.jointCount();
       gpu::Binding bindings[] = {
-          gpu::storageBinding(gpu_types::kCacheClassifyBindingMotion, synth.crowd.motion),
+          gpu::uniformTexelBinding(gpu_types::kCacheClassifyBindingMotion,
+                                   synth.crowd.motionTexels.get()),
           gpu::storageBinding(gpu_types::kCacheClassifyBindingBucketSlot, g.cache.bucketSlot),
           gpu::storageBinding(gpu_types::kCacheClassifyBindingCharacterList, synth.characterLists),
           gpu::storageBinding(gpu_types::kCacheClassifyBindingListCounts, synth.listCounts),
           gpu::storageBinding(gpu_types::kCacheClassifyBindingPoseSource, synth.poseSource)};
-      gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push, push.characterCount);
+      gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push,
+                    invocationsFor(programs[k]->cacheClassify,
+                                   gpu_types::kCacheClassifyConstantCharactersPerInvocation,
+                                   push.characterCount));
     }
   }
   gpu::computeToComputeBarrier(cmd);
@@ -256,13 +260,19 @@ void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* 
 
 void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                       const CrowdSynth& synth, VkDeviceSize maxBindingBytes,
-                      const CoverageCamera* lodCamera) {
+                      const CoverageCamera* lodCamera, gpu::TimestampPool* passMarks) {
   checkPrograms(programs, synth);
+  auto mark = [&] {
+    if (passMarks) passMarks->write(cmd);
+  };
   const bool lod = synth.lod && lodCamera;
   if (lod) recordCoverage(cmd, programs, synth, *lodCamera);
+  mark();
   const uint32_t chunk = poseChunk(synth, maxBindingBytes);
   if (synth.cached()) recordCacheClassify(cmd, programs, synth, chunk, chunkCount(synth, chunk));
+  mark();
   recordPose(cmd, programs, synth, chunk, lod);
+  mark();
   // The cache counters are read on the host after the frame.
   if (synth.cached())
     gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT);

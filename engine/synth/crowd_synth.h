@@ -8,6 +8,7 @@
 #include "anim/motion_texture.h"
 #include "crowd/crowd.h"
 #include "gpu/buffer.h"
+#include "gpu/timestamps.h"
 #include "synth/coverage.h"
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
@@ -91,7 +92,12 @@ void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* 
                             const anim::SpeedRetarget& retarget = {});
 void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                       const CrowdSynth& synth, VkDeviceSize maxBindingBytes,
-                      const CoverageCamera* lodCamera = nullptr);
+                      const CoverageCamera* lodCamera = nullptr,
+                      gpu::TimestampPool* passMarks = nullptr);
+// With `passMarks`, recordPosePasses writes three timestamps, after the coverage pass, after the
+// motion cache's passes and after the pose pass (each whether or not the pass ran), so a bench
+// can say where a frame's synthesis goes.
+constexpr uint32_t kPosePassMarks = 3;
 // The same for a crowd of one group.
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,
                      float dt, VkDeviceSize maxBindingBytes,

@@ -64,24 +64,37 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t 
 // Specialization constants of root_motion.comp: the joint count (the texel row width), and
 // where the texels are read, as for the pose pass.
 std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair,
-                                               uint32_t uniformCapacity) {
+                                               uint32_t uniformCapacity, uint32_t perInvocation) {
   std::vector<uint32_t> values = poseSpecialization(pair, uniformCapacity);
   values[gpu_types::kRootMotionConstantJointCount] = uint32_t(pair.jointCount());
+  values.resize(gpu_types::kRootMotionConstantCharactersPerInvocation + 1);
+  values[gpu_types::kRootMotionConstantCharactersPerInvocation] = perInvocation;
   return values;
+}
+
+// A per-character pass whose only constant is its characters per invocation.
+gpu::ComputeProgram perCharacterProgram(const gpu::Context& context, const char* shader,
+                                        uint32_t constantId) {
+  std::vector<uint32_t> values(constantId + 1, 0u);
+  values[constantId] = charactersPerInvocation(context);
+  return gpu::ComputeProgram(context, shader, values);
 }
 }  // namespace
 
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp",
-                 rootMotionSpecialization(pair, uniformTexelCapacity(context))),
+                 rootMotionSpecialization(pair, uniformTexelCapacity(context),
+                                          charactersPerInvocation(context))),
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       poseMasked(context, "synth_pose.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context), true)),
-      cacheLookup(context, "cache_lookup.comp"),
+      cacheLookup(perCharacterProgram(context, "cache_lookup.comp",
+                                      gpu_types::kCacheLookupConstantCharactersPerInvocation)),
       cacheInsert(context, "cache_insert.comp"),
       cacheFill(context, "cache_fill.comp",
                 poseSpecialization(pair, uniformTexelCapacity(context))),
-      cacheClassify(context, "cache_classify.comp"),
+      cacheClassify(perCharacterProgram(context, "cache_classify.comp",
+                                        gpu_types::kCacheClassifyConstantCharactersPerInvocation)),
       cacheArgs(context, "cache_dispatch_args.comp"),
       poseCached(context, "synth_pose_cached.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context))),
@@ -101,6 +114,8 @@ std::vector<std::string> CacheJob::validate() const {
   std::vector<std::string> problems;
   if (!motion) problems.push_back("input 'motion' (GPU motion textures) is missing");
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
+  if (crowd && !crowd->motionTexels)
+    problems.push_back("input 'crowd' has no texel view of motion (uploadCrowd)");
   if (!cache) problems.push_back("input/output 'cache' is missing");
   if (cache && !cache->options.enabled) problems.push_back("the cache is disabled");
   if (!data || !*data) problems.push_back("output 'data' (the cache entries) is missing");
@@ -144,10 +159,13 @@ void CacheJob::recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) 
   gpu::throwIfInvalid("CacheJob", validate());
   const CachePush push = cachePush(*this);
   gpu::Binding lookup[] = {
-      gpu::storageBinding(gpu_types::kCacheLookupBindingMotion, crowd->motion),
+      gpu::uniformTexelBinding(gpu_types::kCacheLookupBindingMotion, crowd->motionTexels.get()),
       gpu::storageBinding(gpu_types::kCacheLookupBindingCounters, cache->counters),
       gpu::storageBinding(gpu_types::kCacheLookupBindingRequested, cache->requested)};
-  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, push.characterCount);
+  gpu::dispatch(
+      cmd, programs.cacheLookup, lookup, push,
+      invocationsFor(programs.cacheLookup, gpu_types::kCacheLookupConstantCharactersPerInvocation,
+                     push.characterCount));
 }
 
 void CacheJob::recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const {
@@ -186,8 +204,9 @@ std::vector<std::string> RootMotionJob::validate() const {
   if (!motion) problems.push_back("input 'motion' (GPU motion textures) is missing");
   if (!clips) problems.push_back("input 'clips' (motion pair) is missing");
   if (!crowd) problems.push_back("input/output 'crowd' buffers are missing");
-  if (crowd && (!crowd->placement || !crowd->motion))
-    problems.push_back("crowd buffers are not allocated");
+  if (crowd &&
+      (!crowd->placement || !crowd->motion || !crowd->placementTexels || !crowd->motionTexels))
+    problems.push_back("crowd buffers or their texel views are not allocated (uploadCrowd)");
   if (!(dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", dt));
   if (crowd && (firstCharacter > crowd->count ||
                 (characterCount && characterCount > crowd->count - firstCharacter)))
@@ -229,7 +248,10 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
       gpu::storageBinding(gpu_types::kRootMotionBindingPlacement, crowd->placement),
       gpu::storageBinding(gpu_types::kRootMotionBindingMotion, crowd->motion),
   };
-  gpu::dispatch(cmd, programs.rootMotion, bindings, push, push.characterCount);
+  gpu::dispatch(
+      cmd, programs.rootMotion, bindings, push,
+      invocationsFor(programs.rootMotion, gpu_types::kRootMotionConstantCharactersPerInvocation,
+                     push.characterCount));
 }
 
 std::vector<std::string> PoseJob::validate() const {
