@@ -302,6 +302,9 @@ void steerCpu(const Grid& grid, const AvoidanceParams& p, const SteerFrame& fram
               force += toFixed(off * (p.ttcMaxForce * (1.0f / std::sqrt(d2) - 1.0f / p.radius)));
             continue;
           }
+          // Moving along or away from the closest point never touches the segment (the
+          // shader's screen; segmentHit would find no contact either).
+          if (!(glm::dot(vCur, off) < 0.0f)) continue;
           glm::vec2 normal;
           const float tau = segmentHit(pos, vCur, s.a, s.b, p.radius, normal);
           if (tau < firstTau) firstTau = tau, firstNormal = normal;
