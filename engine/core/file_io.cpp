@@ -104,4 +104,18 @@ void ensureWritableDirectory(const fs::path& dir) {
   if (!fs::is_directory(dir, ec)) fail(dir.string(), ": not a directory");
   if (::access(dir.c_str(), W_OK) != 0) fail(dir.string(), ": output directory is not writable");
 }
+std::filesystem::path sharedDataPath(const std::filesystem::path& relative) {
+  namespace fs = std::filesystem;
+  const fs::path fromWorkingDirectory = fs::path("..") / "shared" / "data" / relative;
+  if (fs::exists(fromWorkingDirectory)) return fromWorkingDirectory;
+  std::error_code error;
+  const fs::path executable = fs::read_symlink("/proc/self/exe", error);
+  if (error) return fromWorkingDirectory;
+  // build/bin/throng → the repository is two folders up, shared/ beside it.
+  const fs::path besideRepository =
+      executable.parent_path().parent_path().parent_path().parent_path() / "shared" / "data" /
+      relative;
+  return fs::exists(besideRepository) ? besideRepository : fromWorkingDirectory;
+}
+
 }  // namespace throng

@@ -26,4 +26,9 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& path,
 void commitTemporaryFile(const std::filesystem::path& temporary, const std::filesystem::path& path);
 // Throws Error unless `dir` exists (or can be created) and accepts a new file.
 void ensureWritableDirectory(const std::filesystem::path& dir);
+// `relative` inside the third-party data folder shared/data that lies beside the repository:
+// ../shared/data/<relative> from the working directory (the repository root) when it exists,
+// else the same beside the repository that holds this executable (build/bin/throng), so
+// commands find it from the build folder too; the first when neither exists.
+std::filesystem::path sharedDataPath(const std::filesystem::path& relative);
 }  // namespace throng

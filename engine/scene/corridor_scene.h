@@ -13,15 +13,15 @@
 #include <string>
 #include <vector>
 
+#include "core/file_io.h"
 #include "scene/scene.h"
 
 namespace throng::scene {
 
 // The tracked set walkers take their path vectors from unless told otherwise: UCY's zara01
-// sidewalk (93 % of its people walk along one axis, half each way), relative to the working
-// directory (the repository root, beside which ../shared/data lies).
-inline constexpr const char* kCorridorTrajectories =
-    "../shared/data/trajectories/sgan_format/crowds_zara01.txt";
+// sidewalk (93 % of its people walk along one axis, half each way), inside the shared data
+// folder beside the repository (core/file_io.h, sharedDataPath).
+inline constexpr const char* kCorridorTrajectories = "trajectories/sgan_format/crowds_zara01.txt";
 
 struct CorridorDescription {
   float length = 60.0f;   // metres along x, centred at the origin
@@ -32,7 +32,7 @@ struct CorridorDescription {
   crowd::AvoidanceParams avoidance;
   // Path vectors of these tracked people (crowd/trajectories.h); empty or absent: goals, with a
   // message saying so.
-  std::string trajectories = kCorridorTrajectories;
+  std::string trajectories = sharedDataPath(kCorridorTrajectories).string();
 };
 
 // About 500 agents in the default 60 × 15 m corridor (ten times as many in a 600 m one).
