@@ -52,6 +52,7 @@ void applySceneFile(SceneOptions& o) {
   if (f.behaviour == "corridor") {
     o.scenario.name = "corridor";
     o.corridorLength = f.corridorLength;
+    o.story.trajectories = f.corridorTrajectories;
   } else if (f.behaviour == "menge") {
     o.scenario.name = "menge";
     o.menge = f.menge;
@@ -91,6 +92,7 @@ scene::SceneFile sceneFileOf(const SceneOptions& o, float seconds) {
   if (o.corridor()) {
     f.behaviour = "corridor";
     f.corridorLength = o.corridorLength;
+    f.corridorTrajectories = o.story.trajectories;
   } else if (o.mengeScene()) {
     f.behaviour = "menge";
     f.menge = o.menge;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "cli_errors.h"
 #include "core/error.h"
@@ -19,7 +20,7 @@ void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
                      "Storyboard PNG: its agents make the crowd (the storyboard scene)");
   command.add_option("--trajectories", o.trajectories,
                      "Tracked people ('frame ped x y' text or ETH obsmat.txt) whose path vectors "
-                     "the agents follow");
+                     "the agents follow (storyboard and corridor scenes)");
   command.add_option(
       "--legend", o.legend,
       "Storyboard colour legend JSON (default: the default colours of docs/formats.md)");
@@ -226,6 +227,9 @@ void validateSceneOptions(SceneOptions& o) {
     validateStoryboardScene(o);
   } else if (o.corridor()) {
     scenePolicy(o.story.policy);
+    if (!o.story.storyboard.empty()) fail("--storyboard: the corridor quilts its own storyboard");
+    if (!o.story.trajectories.empty() && !std::filesystem::exists(o.story.trajectories))
+      fail("--trajectories: no such file: ", o.story.trajectories);
   } else {
     if (!o.story.storyboard.empty() || !o.story.trajectories.empty())
       fail("--storyboard and --trajectories make the storyboard scene, not '", o.scenario.name,

@@ -121,6 +121,7 @@ scene::SceneSetup makeSetupWithoutWalls(const SceneOptions& o, const anim::ClipP
     d.length = o.corridorLength;
     d.seed = o.scenario.seed;
     d.avoidance = sceneAvoidance(o);
+    if (!o.story.trajectories.empty()) d.trajectories = o.story.trajectories;
     return scene::corridorScene(d);
   }
   if (o.storyboard())

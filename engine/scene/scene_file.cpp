@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <initializer_list>
 
 #include "core/error.h"
@@ -214,6 +215,16 @@ void readOutput(const Reader& r, const Json& o, const std::string& at, SceneFile
   scene.seconds = float(r.number(o, at, "seconds", 1e-3, 3600.0, scene.seconds));
 }
 
+// The corridor behaviour's object: its length and the tracked set its walkers follow.
+void readCorridor(const Reader& r, const Json& c, const std::filesystem::path& base,
+                  SceneFile& scene) {
+  r.onlyKeys(c, "/corridor", {"length", "trajectories"});
+  scene.corridorLength = float(r.number(c, "/corridor", "length", 10.0, 2000.0, 60.0));
+  scene.corridorTrajectories = r.file(c, "/corridor", "trajectories", base);
+  if (!scene.corridorTrajectories.empty() && !std::filesystem::exists(scene.corridorTrajectories))
+    r.fail("/corridor/trajectories", concat("no such file: ", scene.corridorTrajectories));
+}
+
 void readGroups(const Reader& r, const Json& doc, const std::filesystem::path& base,
                 SceneFile& scene) {
   const Json& groups = doc.at("groups");
@@ -255,11 +266,7 @@ SceneFile parseSceneFile(std::string_view text, const std::string& source,
     if (doc.contains("groups") || doc.contains("storyboard"))
       r.fail(doc.contains("groups") ? "/groups" : "/storyboard",
              "the corridor's agents come from its own quilted storyboard");
-    if (doc.contains("corridor")) {
-      r.onlyKeys(doc.at("corridor"), "/corridor", {"length"});
-      scene.corridorLength =
-          float(r.number(doc.at("corridor"), "/corridor", "length", 10.0, 2000.0, 60.0));
-    }
+    if (doc.contains("corridor")) readCorridor(r, doc.at("corridor"), baseDir, scene);
   } else if (scene.behaviour == "menge") {
     scene.menge = r.file(doc, "", "menge", baseDir);
     if (scene.menge.empty()) r.fail("/behaviour", "the menge behaviour needs a menge project file");
@@ -360,6 +367,8 @@ std::string writeSceneFile(const SceneFile& s) {
   doc["behaviour"] = s.behaviour;
   if (s.behaviour == "corridor") {
     doc["corridor"] = {{"length", tidy(s.corridorLength)}};
+    if (!s.corridorTrajectories.empty())
+      doc["corridor"]["trajectories"] = absolute(s.corridorTrajectories);
   } else if (s.behaviour == "menge") {
     doc["menge"] = absolute(s.menge);
   } else if (s.behaviour == "storyboard") {

@@ -22,10 +22,11 @@ namespace throng::scene {
 
 struct SceneFile {
   uint64_t seed = 1;
-  std::string behaviour = "plain";  // plain, circle, storyboard, menge or corridor
-  std::string menge;                // the menge behaviour's project file (XML)
-  float corridorLength = 60.0f;     // the corridor behaviour's length (metres)
-  std::string walls;                // a walls file (docs/formats.md "Walls"; steered scenes)
+  std::string behaviour = "plain";   // plain, circle, storyboard, menge or corridor
+  std::string menge;                 // the menge behaviour's project file (XML)
+  float corridorLength = 60.0f;      // the corridor behaviour's length (metres)
+  std::string corridorTrajectories;  // its walkers' tracked set; empty: the built-in default
+  std::string walls;                 // a walls file (docs/formats.md "Walls"; steered scenes)
   std::vector<GroupDescription> groups;
   StoryboardSceneDescription storyboard;  // the storyboard behaviour's files and options
   std::string policy = "anticipatory";    // avoidance (circle and storyboard)

@@ -164,3 +164,28 @@ TEST_CASE("the committed example scenes are what `throng assets generate` writes
     CHECK_NOTHROW(scene::readSceneFile(path));
   }
 }
+
+TEST_CASE("scene file: the corridor's tracked set is a file beside the scene, checked to exist") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "throng_corridor_set";
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "people.txt") << "0 1 0.0 0.0\n"; }
+  const std::string text = R"({"schema": "throng.scene", "version": 1, "behaviour": "corridor",
+  "corridor": {"length": 80, "trajectories": "people.txt"}})";
+  const scene::SceneFile f = scene::parseSceneFile(text, "c.json", dir);
+  CHECK(f.corridorLength == 80.0f);
+  CHECK(std::filesystem::path(f.corridorTrajectories) == (dir / "people.txt").lexically_normal());
+  const scene::SceneFile back =
+      scene::parseSceneFile(scene::writeSceneFile(f), "c2.json", "/elsewhere");
+  CHECK(back.corridorTrajectories == f.corridorTrajectories);
+
+  try {
+    scene::parseSceneFile(edited(text, "people.txt", "nobody.txt"), "c.json", dir);
+    FAIL("a missing tracked set was accepted");
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    CHECK(what.find("c.json:2") != std::string::npos);
+    CHECK_MESSAGE(what.find("corridor.trajectories") != std::string::npos, what);
+    CHECK(what.find("nobody.txt") != std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
+}
