@@ -10,4 +10,4 @@ layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms fram
 layout(location = 0) in vec3 worldPosition;
 layout(location = 0) out vec4 color;
 
-void main() { color = groundColour(worldPosition, frame.eye.xyz); }
+void main() { color = groundColour(worldPosition, fwidth(worldPosition.xz), frame.eye.xyz); }

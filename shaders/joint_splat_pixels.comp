@@ -5,7 +5,8 @@
 // The far joints, step 2: one invocation per reserved pixel entry (joint_splat.comp) ray-casts
 // its sprite's ellipsoid through that pixel, so neighbouring lanes do equal work whatever the
 // sprites' sizes. A fixed number of workgroups strides over the entries, so the pass needs no
-// indirect arguments. CPU twin: render::splatJointsCpu.
+// indirect arguments. Each entry is left holding its pixel's index (kSplatNoSprite on a miss) for
+// joint_splat_resolve.comp. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -15,7 +16,7 @@ layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms fram
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
 #include "joint_splat_common.glsl"
 layout(std430, binding = kRenderBindingSprites) readonly buffer Sprites { SplatSprite sprites[]; };
-layout(std430, binding = kRenderBindingPixelOwners) readonly buffer Owners { uint owners[]; };
+layout(std430, binding = kRenderBindingPixelOwners) buffer Owners { uint owners[]; };
 layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { SplatCounters counters; };
 
 void main() {
@@ -25,8 +26,13 @@ void main() {
     uint owner = owners[entry];
     if (owner == kSplatNoSprite) continue;
     SplatSprite s = sprites[owner];
+    // The entry's row in the box by a float division: exact for boxes this small (fewer than
+    // 2^16 entries), and lavapipe divides integers one lane at a time.
     uint local = entry - s.box.w;
-    int x = int(s.box.x + local % s.box.z), y = int(s.box.y + local / s.box.z);
-    splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, s.tint.xyz);
+    uint row = uint((float(local) + 0.5) / float(s.box.z));
+    int x = int(s.box.x + local - row * s.box.z), y = int(s.box.y + row);
+    bool hit = splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, s.tint.xyz);
+    // The entry now names its pixel, or nothing where the ray missed, for the resolve.
+    owners[entry] = hit ? uint(y) * uint(frame.viewport.x) + uint(x) : kSplatNoSprite;
   }
 }

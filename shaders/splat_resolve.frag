@@ -1,11 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-// One full-screen pass writes the splatted joints and the ground (the ground quad ±eye.w metres
-// at y = 0, found by the pixel's ray) with their depth, the nearer of the two where both are
-// hit, so the depth test composites them with the near joints and walls drawn before it. One
-// pass instead of a ground draw and a resolve: on lavapipe each full-screen pass costs
-// milliseconds.
+// Writes the splatted joints into the frame with their depth, so the depth test composites them
+// with the ground, the walls and the near joints. With push.withGround 0 the ground is in the
+// target already (ground.comp's planes copied in). Otherwise this pass shades the ground too
+// (the quad ±eye.w metres at y = 0, found by the pixel's ray), the nearer of the two where both
+// are hit: one full-screen pass instead of a ground draw and a resolve.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -14,13 +14,21 @@
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { uint64_t visibility[]; };
 layout(location = 0) out vec4 color;
+layout(push_constant) uniform Push { uint withGround; } push;
 
 void main() {
+  if (push.withGround == 0u) {
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uint64_t v = visibility[pixel.y * uint(frame.viewport.x) + pixel.x];
+    if (v == 0xFFFFFFFFFFFFFFFFul) discard;
+    gl_FragDepth = uintBitsToFloat(uint(v >> 32));
+    color = unpackUnorm4x8(uint(v & 0xFFFFFFFFul));
+    return;
+  }
   vec3 eye = frame.eye.xyz;
-  vec3 dir = pixelRay(gl_FragCoord.xy, frame);
-  float t = dir.y < 0.0 ? -eye.y / dir.y : -1.0;
-  vec3 world = eye + t * dir;
-  vec4 ground = groundColour(world, eye);  // before any branch: derivatives
+  float t;
+  vec3 world = groundPoint(eye, pixelRay(gl_FragCoord.xy, frame), t);
+  vec4 ground = groundColour(world, fwidth(world.xz), eye);  // before any branch: derivatives
   vec4 clip = frame.viewProjection * vec4(world, 1.0);
   float groundDepth = clip.z / clip.w;
   bool groundHit = t > 0.0 && all(lessThanEqual(abs(world.xz), vec2(frame.eye.w))) &&

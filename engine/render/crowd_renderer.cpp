@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "gpu/commands.h"
 #include "render/joint_splat.h"
 #include "shaders/render_bindings.h"
 #include "synth/coverage.h"
@@ -82,6 +83,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   if (splatSupported_) {
     splat_ = makeSplatPrograms(context);
     splatLists_ = makeSplatLists(context);
+    groundPlanesProgram_ = gpu::ComputeProgram(context, "ground.comp");
     gpu::GraphicsPipelineDesc resolveDesc = groundDesc;
     resolveDesc.vertexShader = "splat_resolve.vert";
     resolveDesc.fragmentShader = "splat_resolve.frag";
@@ -174,9 +176,24 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
                               const DrawParams& params, uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
   passTimer_->mark(cmd, "before-pass");
-  const VkImage color = target.color, depth = target.depth;
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
+  groundCopied_ = splats(params) && target.transferDst && groundPlanesFor(cmd, params, frameSlot);
+  entriesResolved_ = groundCopied_ && !params.otherSplats;
+  if (entriesResolved_) {
+    resolveEntries(cmd, params, frameSlot);
+    copyPlanesIn(cmd, target, params, framePlanes_);
+  } else if (groundCopied_) {
+    copyPlanesIn(cmd, target, params, groundPlanes_);
+  } else {
+    clearTargets(cmd, target);
+  }
+  beginRendering(cmd, target, params, groundCopied_);
+  drawJoints(cmd, params, frameSlot);
+}
+
+void CrowdRenderer::clearTargets(VkCommandBuffer cmd, const FrameTargets& target) {
+  const VkImage color = target.color, depth = target.depth;
   gpu::transitionImage(cmd, color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
                        0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -186,17 +203,121 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
       VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+}
 
+bool CrowdRenderer::groundPlanesFor(VkCommandBuffer cmd, const DrawParams& params,
+                                    uint32_t frameSlot) {
+  std::vector<uint8_t> key(sizeof(FrameUniforms) + sizeof(VkClearColorValue));
+  const FrameUniforms frame = makeFrameUniforms(params);
+  std::memcpy(key.data(), &frame, sizeof(frame));
+  std::memcpy(key.data() + sizeof(frame), &params.clearColor, sizeof(VkClearColorValue));
+  if (groundPlanes_ && key == groundKey_) return true;
+  // A camera that moves every frame never pays for planes it would use once: they are made
+  // when the same view comes twice in a row.
+  const bool again = key == previousKey_;
+  previousKey_ = key;
+  if (!again) return false;
+  const VkDeviceSize planeBytes = VkDeviceSize(params.width) * params.height * 8u;
+  if (!groundPlanes_ || groundPlanes_.size() != planeBytes) {
+    if (groundPlanes_) {
+      retiredVisibility_.emplace_back(std::move(groundPlanes_), kFramesInFlight + 1);
+      retiredVisibility_.emplace_back(std::move(framePlanes_), kFramesInFlight + 1);
+    }
+    const VkBufferUsageFlags usage =
+        gpu::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    groundPlanes_ = gpu::Buffer(*context_, planeBytes, usage, gpu::MemoryUse::DeviceLocal);
+    framePlanes_ = gpu::Buffer(*context_, planeBytes, usage, gpu::MemoryUse::DeviceLocal);
+  }
+  // Earlier frames' copies read the planes.
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  groundKey_ = key;
+  gpu::Binding bindings[] = {
+      gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
+      gpu::storageBinding(gpu_types::kRenderBindingGroundPlanes, groundPlanes_)};
+  const VkClearColorValue& clear = params.clearColor;
+  const float clearColour[4] = {clear.float32[0], clear.float32[1], clear.float32[2],
+                                clear.float32[3]};
+  // A workgroup per 64 pixels of a row, at most 16384 (the shader strides over the rest).
+  const uint32_t groups = std::min((params.width + 63u) / 64u * params.height, 16384u);
+  gpu::dispatch(cmd, groundPlanesProgram_, bindings, clearColour, sizeof(clearColour),
+                groups * groundPlanesProgram_.localSizeX());
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  passTimer_->mark(cmd, "ground-planes");
+  return true;
+}
+
+void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, const DrawParams& params,
+                                   uint32_t frameSlot) {
+  if (!resolveDraw_)
+    resolveDraw_ =
+        gpu::Buffer(*context_, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                    gpu::MemoryUse::DeviceLocal);
+  // The previous frame's copy out of the planes and its indirect draw came first.
+  gpu::memoryBarrier(cmd,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                         VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT);
+  const VkBufferCopy whole{0, 0, framePlanes_.size()};
+  vkCmdCopyBuffer(cmd, groundPlanes_.get(), framePlanes_.get(), 1, &whole);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  gpu::Binding bindings[] = {
+      gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
+      gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_),
+      gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, splatLists_.pixelOwners),
+      gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, splatLists_.counters),
+      gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_),
+      gpu::storageBinding(gpu_types::kRenderBindingResolveDraw, resolveDraw_)};
+  gpu::dispatch(cmd, splat_.resolve, bindings, nullptr, 0,
+                gpu_types::kSplatPixelGroups * splat_.resolve.localSizeX());
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  passTimer_->mark(cmd, "splat-resolve");
+}
+
+void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target,
+                                 const DrawParams& params, const gpu::Buffer& planes) {
+  gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  gpu::transitionImage(cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  VkBufferImageCopy region{};
+  region.imageExtent = {params.width, params.height, 1};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  vkCmdCopyBufferToImage(cmd, planes.get(), target.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                         &region);
+  region.bufferOffset = VkDeviceSize(params.width) * params.height * 4u;
+  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+  vkCmdCopyBufferToImage(cmd, planes.get(), target.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                         &region);
+  gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                       VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  gpu::transitionImage(
+      cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
+      VK_ACCESS_TRANSFER_WRITE_BIT,
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+  passTimer_->mark(cmd, "planes-copy");
+}
+
+void CrowdRenderer::beginRendering(VkCommandBuffer cmd, const FrameTargets& target,
+                                   const DrawParams& params, bool load) {
   VkRenderingAttachmentInfoKHR colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
   colorAttachment.imageView = target.colorView;
   colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  colorAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colorAttachment.loadOp = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   colorAttachment.clearValue.color = params.clearColor;
   VkRenderingAttachmentInfoKHR depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
   depthAttachment.imageView = target.depthView;
   depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR;
-  depthAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depthAttachment.loadOp = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depthAttachment.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfoKHR rendering{VK_STRUCTURE_TYPE_RENDERING_INFO_KHR};
@@ -211,7 +332,6 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   VkRect2D scissor{{0, 0}, {params.width, params.height}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  drawJoints(cmd, params, frameSlot);
 }
 
 void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot) {
@@ -274,8 +394,13 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
     gpu::Binding resolveBindings[] = {
         gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
         gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_)};
-    resolve_.bind(cmd, resolveBindings, nullptr, 0);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
+    const uint32_t withGround = groundCopied_ ? 0u : 1u;
+    resolve_.bind(cmd, resolveBindings, &withGround, sizeof(withGround));
+    if (entriesResolved_) {
+      vkCmdDrawIndirect(cmd, resolveDraw_.get(), 0, 1, 16);  // empty unless the lists overflowed
+    } else {
+      vkCmdDraw(cmd, 3, 1, 0, 0);
+    }
     passTimer_->mark(cmd, "resolve");
   }
 }

@@ -33,7 +33,8 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapa
                                 uint32_t pixelCapacity) {
   const uint32_t capacities[] = {spriteCapacity, pixelCapacity};
   return {gpu::ComputeProgram(context, "joint_splat.comp", capacities),
-          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities)};
+          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities),
+          gpu::ComputeProgram(context, "joint_splat_resolve.comp", capacities)};
 }
 
 SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,

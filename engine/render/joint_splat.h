@@ -38,11 +38,12 @@ struct CachedPoseInputs {
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 
-// joint_splat.comp (a sprite per joint) and joint_splat_pixels.comp (an invocation per pixel),
-// specialized with the work lists' capacities.
+// joint_splat.comp (a sprite per joint), joint_splat_pixels.comp (an invocation per pixel) and
+// joint_splat_resolve.comp, specialized with the work lists' capacities.
 struct SplatPrograms {
   gpu::ComputeProgram joints;
   gpu::ComputeProgram pixels;
+  gpu::ComputeProgram resolve;  // joint_splat_resolve.comp (CrowdRenderer)
 };
 SplatPrograms makeSplatPrograms(const gpu::Context& context,
                                 uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,

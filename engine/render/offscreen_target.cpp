@@ -24,9 +24,12 @@ OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width,
   t.width = width;
   t.height = height;
   t.color = gpu::Image2D(context, width, height, kColorFormat,
-                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-  t.depth = gpu::Image2D(context, width, height, kDepthFormat,
-                         VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                             VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  t.depth =
+      gpu::Image2D(context, width, height, kDepthFormat,
+                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                   VK_IMAGE_ASPECT_DEPTH_BIT);
   t.readback = gpu::Buffer(context, VkDeviceSize(width) * height * 4,
                            VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::HostVisible);
   return t;
@@ -58,7 +61,8 @@ FrameTargets offscreenFrameTargets(const OffscreenTarget& target) {
           target.depth.view(),
           target.width,
           target.height,
-          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL};
+          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+          true};
 }
 
 }  // namespace throng::render

@@ -67,9 +67,11 @@ std::vector<std::string> DrawStage::validate() const {
 
 void DrawStage::record(VkCommandBuffer cmd) const {
   gpu::throwIfInvalid("DrawStage", validate());
-  const gpu::Buffer* visibility = renderer->recordSplat(cmd, params, frameSlot);
+  render::DrawParams drawParams = params;
+  drawParams.otherSplats = capes != nullptr;  // the capes splat into the visibility buffer too
+  const gpu::Buffer* visibility = renderer->recordSplat(cmd, drawParams, frameSlot);
   if (capes && visibility) capes->recordSplat(cmd, *visibility, frameSlot);
-  renderer->beginDraw(cmd, targets, params, frameSlot);
+  renderer->beginDraw(cmd, targets, drawParams, frameSlot);
   if (capes) capes->recordDraw(cmd, frameSlot);
   renderer->endDraw(cmd, targets);
 }
