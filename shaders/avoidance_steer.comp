@@ -270,17 +270,14 @@ void scanNeighbours(bool pending, ivec2 cell) {
 }
 
 // The segments of this agent's wall cell, each a neighbour that never moves: under TTC the
-// first contact with any of them (wallTtcForce); under the rule its closest point, of no size,
-// blocks the courses that come within the radius of it (the rule's own test, with the wall's
-// zero velocity). As the neighbour scan, in two phases per block of 32 list entries: every lane
-// screens its own list cheaply (the closest point; under TTC only segments it moves towards can
-// be touched, as the distance to a segment is convex along a line), then evaluates its marked
-// ones in a loop that runs as often as the lane with the most (a handful of a cell's segments
-// pass the screen; on lavapipe every lane pays for the full test when any lane runs it).
-// Called by every lane (the loop counts are made uniform across the subgroup by shuffles).
-void scanWalls(bool isActive) {
+// first contact with any of them (wallTtcForce); under the rule its closest point, of no size, blocks the courses that come
+// within the radius of it (the rule's own test, with the wall's zero velocity). Per lane, no
+// subgroup sharing: a cell lists a handful of segments. (A two-phase form like the neighbour
+// scan's, screening every segment and then testing only the marked ones in a second loop, cost
+// 50% more here on lavapipe, 2026-11-26: the lists are too short for the second loop to pay.)
+void scanWalls() {
   WallGridInfo info = wallInfo;
-  uint cell = isActive ? wallCell(gPos, info) : 0xFFFFFFFFu;
+  uint cell = wallCell(gPos, info);
   bool inGrid = cell != 0xFFFFFFFFu;
   uint begin = inGrid ? texelFetch(wallStarts, int(cell)).x : 0u;
   uint end = inGrid ? texelFetch(wallStarts, int(cell + 1u)).x : 0u;
@@ -288,50 +285,35 @@ void scanWalls(bool isActive) {
   float firstTau = kNoWallHit;
   vec2 firstNormal = vec2(0.0);
   float ruleReach = gPush.radius + length(gVPref) * gPush.lookahead;
-  uint blocks = (end - begin + 31u) / 32u;
-  for (uint m = 1u; m < gl_SubgroupSize; m <<= 1u) blocks = max(blocks, subgroupShuffleXor(blocks, m));
-  for (uint block = 0u; block < blocks; ++block) {
-    uint first = begin + 32u * block;
-    uint count = first < end ? min(end - first, 32u) : 0u;
-    uint marks = 0u;
-    for (uint k = 0u; k < count; ++k) {
-      vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(first + k)).x));
+  for (uint k = begin; k < end; ++k) {
+    vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(k)).x));
+    if (kPolicy == kSteerPolicyRule) {
+      vec2 x = gPos - closestOnSegment(gPos, s.xy, s.zw);
+      // Every course runs at the preferred speed: none comes within r of a point farther than
+      // r + speed · lookahead (the same screen as the twin's, so both decide alike).
+      if (dot(x, x) >= gSensing2 || dot(x, x) > ruleReach * ruleReach) continue;
+      gBlocked = gBlocked || collides(x, gVPref, gPush.lookahead, r2);
+      gKeepBlocked = gKeepBlocked || collides(x, gKeep, gPush.lookahead, r2);
+      for (uint d = 0u; d < kRuleDraws; ++d)
+        if (collides(x, gDraws[d], gPush.lookahead, r2)) gDrawBlocked |= 1u << d;
+    } else {
+      // Closer than the radius (only before the wall constraint first ran): pushed straight
+      // out, like overlapping agents; else a candidate for the first contact.
       vec2 off = gPos - closestOnSegment(gPos, s.xy, s.zw);
       float d2 = dot(off, off);
-      bool mark;
-      if (kPolicy == kSteerPolicyRule) {
-        // Every course runs at the preferred speed: none comes within r of a point farther than
-        // r + speed · lookahead (the same screen as the twin's, so both decide alike).
-        mark = d2 < gSensing2 && d2 <= ruleReach * ruleReach;
-      } else {
-        // Closer than the radius (only before the wall constraint first ran): pushed straight
-        // out, like overlapping agents; else a candidate for the first contact.
-        if (d2 < r2 && d2 > 1e-8) gForce += toFixed(off * (gPush.ttcMaxForce * (inversesqrt(d2) - 1.0 / gPush.radius)));
-        mark = d2 < gSensing2 && d2 >= r2 && dot(gVCur, off) < 0.0;
+      if (d2 >= gSensing2) continue;
+      if (d2 < r2) {
+        if (d2 > 1e-8) gForce += toFixed(off * (gPush.ttcMaxForce * (inversesqrt(d2) - 1.0 / gPush.radius)));
+        continue;
       }
-      marks |= mark ? 1u << k : 0u;
-    }
-    uint most = uint(bitCount(marks));
-    for (uint m = 1u; m < gl_SubgroupSize; m <<= 1u) most = max(most, subgroupShuffleXor(most, m));
-    for (uint j = 0u; j < most; ++j) {
-      bool has = marks != 0u;
-      uint k = has ? uint(findLSB(marks)) : 0u;
-      marks &= marks - 1u;
-      if (!has) continue;
-      vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(first + k)).x));
-      if (kPolicy == kSteerPolicyRule) {
-        vec2 x = gPos - closestOnSegment(gPos, s.xy, s.zw);
-        gBlocked = gBlocked || collides(x, gVPref, gPush.lookahead, r2);
-        gKeepBlocked = gKeepBlocked || collides(x, gKeep, gPush.lookahead, r2);
-        for (uint d = 0u; d < kRuleDraws; ++d)
-          if (collides(x, gDraws[d], gPush.lookahead, r2)) gDrawBlocked |= 1u << d;
-      } else {
-        vec2 n;
-        float tau = segmentHit(gPos, gVCur, s.xy, s.zw, gPush.radius, n);
-        if (tau < firstTau) {
-          firstTau = tau;
-          firstNormal = n;
-        }
+      // Moving along or away from the closest point never touches the segment: the distance
+      // to a segment is convex along a line (an exact screen; the twin's too).
+      if (!(dot(gVCur, off) < 0.0)) continue;
+      vec2 n;
+      float tau = segmentHit(gPos, gVCur, s.xy, s.zw, gPush.radius, n);
+      if (tau < firstTau) {
+        firstTau = tau;
+        firstNormal = n;
       }
     }
   }
@@ -380,7 +362,7 @@ void main() {
     }
   }
   if (kPolicy != kSteerPolicyNone) scanNeighbours(isActive, cellCoord(gPos, vec2(gPush.invCellX, gPush.invCellZ)));
-  if (kPolicy != kSteerPolicyNone && kWalls != 0u) scanWalls(isActive);
+  if (kPolicy != kSteerPolicyNone && kWalls != 0u && isActive) scanWalls();
   if (!isActive) {
     if (valid) steerWords[i] = u64vec2(0ul);
     return;
