@@ -22,6 +22,7 @@ layout(constant_id = kRootMotionConstantCharactersPerInvocation) const uint kPer
 // reads a buffer through one descriptor and writes it through another is a hazard.
 layout(std430, binding = kRootMotionBindingPlacement) buffer Placement { u64vec2 placementWords[]; };
 layout(std430, binding = kRootMotionBindingMotion) buffer Motion { u64vec2 motionWords[]; };
+layout(std430, binding = kRootMotionBindingCacheRequested) writeonly buffer Requested { uint requested[]; };
 
 vec4 vec4OfWords(u64vec2 w) {
   return vec4(uintBitsToFloat(unpackUint2x32(w.x)), uintBitsToFloat(unpackUint2x32(w.y)));
@@ -77,6 +78,9 @@ void moveCharacter(uint i) {
   if (wraps > 0.0) m = withSpeedWeight(m, targetSpeedWeight(m));
   placementWords[i] = wordsOfVec4(place);
   motionWords[i] = wordsOfVec4(m);
+  // The motion cache's lookup: this frame needs the bucket of the speed weight it now has.
+  if (push.cacheBucketWidth > 0.0)
+    requested[speedBucket(speedWeight(m), push.cacheBucketWidth, push.cacheBucketCount)] = 1u;
 }
 
 // kPerInvocation characters each, strided so that neighbouring lanes take neighbouring

@@ -69,9 +69,9 @@ THRONG_STRUCT(RootMotionPush) {
   float minSpeedWeight;   // range of the new targets
   float maxSpeedWeight;
   uint firstCharacter;    // the group [firstCharacter, firstCharacter + characterCount)
+  float cacheBucketWidth; // > 0: also flag each character's motion-cache bucket as requested
+  uint cacheBucketCount;  //   (the cache's lookup step, done here: no pass of its own)
   uint pad0;
-  uint pad1;
-  uint pad2;
 };
 
 // Push constants of the pose pass (blend + hierarchy + A = J·M).

@@ -26,6 +26,7 @@ const uint kTexelsConstantInUniform = 583u;
 // root_motion.comp: each character's phase, speed weight and root (the paper's eq. 10).
 const uint kRootMotionBindingPlacement = 2u;  // vec4 per character as two 64-bit words
 const uint kRootMotionBindingMotion = 3u;     // vec4 per character as two 64-bit words
+const uint kRootMotionBindingCacheRequested = 4u;  // uint per bucket (a placeholder without cache)
 const uint kRootMotionConstantJointCount = 0u;  // the texel row width
 // Characters per invocation (synth::charactersPerInvocation), past the texel constants.
 const uint kRootMotionConstantCharactersPerInvocation = 584u;

@@ -146,8 +146,9 @@ void recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
                       const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget) {
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
-    RootMotionJob{&g.motion, g.pair, &synth.crowd, g.first, g.count, dt, g.steering, retarget}
-        .record(cmd, *programs[k]);
+    RootMotionJob job{&g.motion, g.pair, &synth.crowd, g.first, g.count, dt, g.steering, retarget};
+    job.cache = synth.cached() ? &g.cache : nullptr;  // its lookup step, done in the same pass
+    job.record(cmd, *programs[k]);
   }
   gpu::computeToComputeBarrier(cmd);
 }
@@ -165,16 +166,15 @@ void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> p
   gpu::computeToComputeBarrier(cmd);
 }
 
-// The cache passes of every group, then the classify pass over each group's pose chunks
-// (numbered across groups), then their indirect dispatch arguments.
+// The cache passes of every group (the lookup was done by root motion), then the classify pass
+// over each group's pose chunks (numbered across groups), then their indirect dispatch
+// arguments.
 void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                          const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal) {
   std::vector<CacheJob> jobs;
   for (const SynthGroup& g : synth.groups)
     jobs.push_back({&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count});
   // Each step for every group, then one barrier.
-  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordLookup(cmd, *programs[k]);
-  gpu::computeToComputeBarrier(cmd);
   for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordInsert(cmd, *programs[k]);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);

@@ -85,8 +85,9 @@ void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> 
                      const anim::SpeedRetarget& retarget = {},
                      const CoverageCamera* lodCamera = nullptr);
 // The two halves of recordSynthesis, for a frame that puts work between them (constraints on
-// where root motion moved the characters, e.g. walls): root motion of every group, then a
-// barrier; then coverage, motion cache and pose.
+// where root motion moved the characters, e.g. walls): root motion of every group (with the
+// cache on, also the cache's lookup step), then a barrier; then coverage, the rest of the motion
+// cache and pose. recordPosePasses needs recordRootMotionPasses before it in the same frame.
 void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                             const CrowdSynth& synth, float dt,
                             const anim::SpeedRetarget& retarget = {});

@@ -199,6 +199,35 @@ void CacheJob::recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) co
   gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
 }
 
+namespace {
+RootMotionPush rootMotionPush(const RootMotionJob& job) {
+  const anim::MotionPair* clips = job.clips;
+  const anim::SpeedRetarget& retarget = job.retarget;
+  RootMotionPush push{};
+  push.characterCount =
+      job.characterCount ? job.characterCount : job.crowd->count - job.firstCharacter;
+  push.firstCharacter = job.firstCharacter;
+  push.slowFrames = static_cast<uint32_t>(clips->slow.frameCount);
+  push.fastFrames = static_cast<uint32_t>(clips->fast.frameCount);
+  push.steering = static_cast<uint32_t>(job.steering);
+  push.dt = job.dt;
+  push.slowDuration = clips->slow.duration();
+  push.fastDuration = clips->fast.duration();
+  push.bucketWidth = retarget.bucketWidth;
+  push.retargetEpoch = retarget.epoch;
+  push.seed = retarget.seed;
+  push.minSpeedWeight = retarget.lo;
+  push.maxSpeedWeight = retarget.hi;
+  push.slowCycleTravel = glm::vec4(clips->slow.cycleTravel, 0.0f);
+  push.fastCycleTravel = glm::vec4(clips->fast.cycleTravel, 0.0f);
+  if (job.cache && job.cache->options.enabled) {
+    push.cacheBucketWidth = job.cache->options.bucketWidth;
+    push.cacheBucketCount = job.cache->bucketCount;
+  }
+  return push;
+}
+}  // namespace
+
 std::vector<std::string> RootMotionJob::validate() const {
   std::vector<std::string> problems;
   if (!motion) problems.push_back("input 'motion' (GPU motion textures) is missing");
@@ -213,6 +242,8 @@ std::vector<std::string> RootMotionJob::validate() const {
     problems.push_back("the group runs past the end of the crowd");
   if (clips && (clips->slow.duration() <= 0.0f || clips->fast.duration() <= 0.0f))
     problems.push_back("clip durations must be positive");
+  if (cache && cache->options.enabled && (!cache->requested || cache->bucketCount == 0))
+    problems.push_back("output 'cache' has no requested buckets");
   return problems;
 }
 
@@ -224,22 +255,8 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
          programs.poseParents.size(), " joints, texels in ",
          programs.poseTexelsInUniform ? "uniform" : "storage", " buffers) than this one (",
          motion->jointCount, " joints, ", motion->texelsInUniform ? "uniform" : "storage", ")");
-  RootMotionPush push{};
-  push.characterCount = characterCount ? characterCount : crowd->count - firstCharacter;
-  push.firstCharacter = firstCharacter;
-  push.slowFrames = static_cast<uint32_t>(clips->slow.frameCount);
-  push.fastFrames = static_cast<uint32_t>(clips->fast.frameCount);
-  push.steering = static_cast<uint32_t>(steering);
-  push.dt = dt;
-  push.slowDuration = clips->slow.duration();
-  push.fastDuration = clips->fast.duration();
-  push.bucketWidth = retarget.bucketWidth;
-  push.retargetEpoch = retarget.epoch;
-  push.seed = retarget.seed;
-  push.minSpeedWeight = retarget.lo;
-  push.maxSpeedWeight = retarget.hi;
-  push.slowCycleTravel = glm::vec4(clips->slow.cycleTravel, 0.0f);
-  push.fastCycleTravel = glm::vec4(clips->fast.cycleTravel, 0.0f);
+  const RootMotionPush push = rootMotionPush(*this);
+  const bool lookup = cache && cache->options.enabled;
   gpu::Binding bindings[] = {
       gpu::storageBinding(gpu_types::kTexelsBindingSlow, motion->slowTexels),
       gpu::storageBinding(gpu_types::kTexelsBindingFast, motion->fastTexels),
@@ -247,6 +264,9 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
       gpu::uniformBinding(gpu_types::kTexelsBindingFastUniform, motion->fastUniformTexels),
       gpu::storageBinding(gpu_types::kRootMotionBindingPlacement, crowd->placement),
       gpu::storageBinding(gpu_types::kRootMotionBindingMotion, crowd->motion),
+      // Without a cache a stand-in the shader never writes (cacheBucketWidth is 0).
+      gpu::storageBinding(gpu_types::kRootMotionBindingCacheRequested,
+                          lookup ? cache->requested : crowd->motion),
   };
   gpu::dispatch(
       cmd, programs.rootMotion, bindings, push,

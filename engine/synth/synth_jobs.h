@@ -46,6 +46,9 @@ struct RootMotionJob {
   float dt = 0.0f;
   anim::Steering steering = anim::Steering::KeepHeading;
   anim::SpeedRetarget retarget;  // speed changes over time (epoch 0: none)
+  // Optional output: with an enabled cache, each character's bucket is flagged as requested
+  // (the cache's lookup step; CacheJob::recordLookup is then not needed this frame).
+  const GpuMotionCache* cache = nullptr;
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
