@@ -2,6 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_ballot : require
 // The far joints, step 1: one invocation per joint finds its ellipsoid's screen box and reserves
 // a sprite and one pixel entry per pixel of the box for joint_splat_pixels.comp, which
 // ray-casts them one pixel per invocation. A joint whose reservation does not fit ray-casts its
@@ -50,8 +52,16 @@ void main() {
                                                     : characterTint(character);
   uint boxWidth = uint(hi.x - lo.x + 1);
   uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
-  uint sprite = atomicAdd(counters.sprites, 1u);
-  uint first = atomicAdd(counters.pixels, pixelCount);
+  // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
+  // joint on two shared counters: lavapipe runs a lane's atomics one at a time.
+  uint spriteBase = 0u, firstBase = 0u;
+  uint spriteTotal = subgroupAdd(1u), pixelTotal = subgroupAdd(pixelCount);
+  if (subgroupElect()) {
+    spriteBase = atomicAdd(counters.sprites, spriteTotal);
+    firstBase = atomicAdd(counters.pixels, pixelTotal);
+  }
+  uint sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(1u);
+  uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
   bool fits = sprite < kSpriteCapacity && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
   // Every entry reserved below the capacity gets an owner, a sentinel when the sprite is not kept.
   uint owned = first < kPixelCapacity ? min(pixelCount, kPixelCapacity - first) : 0u;
