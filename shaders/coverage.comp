@@ -60,7 +60,7 @@ void coverCharacter(uint local) {
   bool visible = bodyOnScreen(push.viewport, push.frustum, middle, height);
   uint onScreen = (push.flags & kCoverageWriteAreas) != 0u ? measureParts(i, local, place, scale, previous) : 0u;
   levelState = nextLevel(parts.body, levelHeights(parts.levels[1], parts.levels[2]), previous, m, h, visible);
-  uvec2 synthesized = uvec2(parts.baseLo, parts.baseHi);
+  uvec2 synthesized = uvec2(parts.offScreenLo, parts.offScreenHi);
   if (visible && levelState.x == kLevelNear) synthesized = uvec2(parts.levels[2].synthLo, parts.levels[2].synthHi);
   if (visible && levelState.x == kLevelMid) synthesized = uvec2(parts.levels[1].synthLo, parts.levels[1].synthHi);
   if (visible && levelState.x == kLevelFar) synthesized = uvec2(parts.levels[0].synthLo, parts.levels[0].synthHi);

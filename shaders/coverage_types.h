@@ -49,8 +49,7 @@ THRONG_STRUCT(CoveragePush) {
   uint flags;             // kCoverageReadJoints | kCoverageWriteAreas
 };
 
-// One body part's bounding sphere: a character with no sphere on screen synthesizes only the
-// base joints, whatever its level.
+// One body part's bounding sphere (the paper's eqs. 1–9), measured for the areas output.
 THRONG_STRUCT(CoveragePart) {
   vec4 centre;            // xyz: mean character-space position of the centre joint; w: radius (m)
   uint joint;             // the centre joint
@@ -73,8 +72,8 @@ THRONG_STRUCT(CoverageLevel) {
 
 // Uniform buffer (std140): what changes only with the skeleton or the thresholds.
 THRONG_STRUCT(CoverageParts) {
-  uint baseLo;            // joints synthesized for a character with no part on screen
-  uint baseHi;
+  uint offScreenLo;       // joints synthesized for a character off screen: none (nothing of it
+  uint offScreenHi;       //   is posed or drawn), every joint when the near threshold is 0
   uint allLo;             // every joint of the skeleton
   uint allHi;
   vec4 body;              // x: standing height (m at scale 1); y: least seconds between level

@@ -61,10 +61,11 @@ CoverageParts makeCoverageParts(const BodyParts& parts, const CoverageThresholds
   if (!(thresholds.minChangeSeconds >= 0.0f))
     fail("coverage: the least time between level changes must be >= 0 s");
   CoverageParts out{};
-  // Near at any height (threshold 0) means every joint everywhere, off screen too.
-  const uint64_t base = thresholds.nearHeight <= 0.0f ? parts.allMask : parts.baseMask;
-  out.baseLo = uint32_t(base);
-  out.baseHi = uint32_t(base >> 32);
+  // Off screen nothing is posed or drawn (capes and the next frame's coverage need no joint of
+  // it); near at any height (threshold 0) means every joint everywhere, off screen too.
+  const uint64_t offScreen = thresholds.nearHeight <= 0.0f ? parts.allMask : 0u;
+  out.offScreenLo = uint32_t(offScreen);
+  out.offScreenHi = uint32_t(offScreen >> 32);
   out.allLo = uint32_t(parts.allMask);
   out.allHi = uint32_t(parts.allMask >> 32);
   out.body = glm::vec4(parts.height, thresholds.minChangeSeconds, parts.slowCycleSeconds,
@@ -223,8 +224,8 @@ CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& pa
   const auto [level, state] = nextLevel(parts, previous, motion, h, visible);
   const CoverageLevel& chosen = parts.levels[level];
   CoverageMask out{};
-  out.lo = visible ? chosen.synthLo : parts.baseLo;
-  out.hi = visible ? chosen.synthHi : parts.baseHi;
+  out.lo = visible ? chosen.synthLo : parts.offScreenLo;
+  out.hi = visible ? chosen.synthHi : parts.offScreenHi;
   out.level = level;
   out.state = state | onScreen;
   return out;
