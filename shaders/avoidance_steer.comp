@@ -55,9 +55,8 @@ layout(binding = kSteerBindingPlacementTexels) uniform samplerBuffer placementTe
 layout(binding = kSteerBindingSteerTexels) uniform samplerBuffer steerTexels;
 // Static walls (bound but never read when kWalls is 0).
 layout(std140, binding = kSteerBindingWallInfo) uniform WallInfo { WallGridInfo wallInfo; };
-layout(binding = kSteerBindingWallSegments) uniform samplerBuffer wallSegments;
+layout(binding = kSteerBindingWallEntries) uniform samplerBuffer wallEntries;
 layout(binding = kSteerBindingWallStarts) uniform usamplerBuffer wallStarts;
-layout(binding = kSteerBindingWallIndices) uniform usamplerBuffer wallIndices;
 layout(push_constant) uniform Push { SteerPush push; };
 
 // This invocation's state, updated by every candidate it evaluates.
@@ -286,7 +285,7 @@ void scanWalls() {
   vec2 firstNormal = vec2(0.0);
   float ruleReach = gPush.radius + length(gVPref) * gPush.lookahead;
   for (uint k = begin; k < end; ++k) {
-    vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(k)).x));
+    vec4 s = texelFetch(wallEntries, int(k));
     if (kPolicy == kSteerPolicyRule) {
       vec2 x = gPos - closestOnSegment(gPos, s.xy, s.zw);
       // Every course runs at the preferred speed: none comes within r of a point farther than

@@ -1,6 +1,6 @@
 // Static walls: the segment math of the steering pass and the wall constraint. CPU twin:
 // crowd/obstacles.cpp (closestOnSegment, segmentHit, WallGrid::cellOf), the same operations in
-// the same order. The including shader declares wallSegments, wallStarts and wallIndices
+// the same order. The including shader declares wallEntries and wallStarts
 // (texels) and passes the WallGridInfo it read.
 #ifndef THRONG_AVOIDANCE_WALLS_GLSL
 #define THRONG_AVOIDANCE_WALLS_GLSL

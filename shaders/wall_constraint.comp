@@ -19,9 +19,8 @@ layout(constant_id = kWallConstantAdvance) const uint kAdvance = 0u;
 layout(std430, binding = kWallBindingPlacement) buffer Placement { vec4 placement[]; };
 layout(binding = kWallBindingPrevious) uniform samplerBuffer previousTexels;
 layout(std140, binding = kWallBindingInfo) uniform WallInfo { WallGridInfo wallInfo; };
-layout(binding = kWallBindingSegments) uniform samplerBuffer wallSegments;
+layout(binding = kWallBindingEntries) uniform samplerBuffer wallEntries;
 layout(binding = kWallBindingStarts) uniform usamplerBuffer wallStarts;
-layout(binding = kWallBindingIndices) uniform usamplerBuffer wallIndices;
 layout(binding = kWallBindingSteer) uniform samplerBuffer steerTexels;
 layout(binding = kWallBindingGoals) uniform samplerBuffer goalTexels;
 layout(binding = kWallBindingClearance) uniform samplerBuffer clearanceTexels;
@@ -47,7 +46,7 @@ vec2 constrainMove(vec2 from, vec2 to, WallPush pc, WallGridInfo info) {
     float first = kNoWallHit;
     vec2 normal = vec2(0.0);
     for (uint k = begin; k < end; ++k) {
-      vec4 s = texelFetch(wallSegments, int(texelFetch(wallIndices, int(k)).x));
+      vec4 s = texelFetch(wallEntries, int(k));
       vec2 off = from - closestOnSegment(from, s.xy, s.zw);
       if (dot(off, off) > screen * screen) continue;
       vec2 n;

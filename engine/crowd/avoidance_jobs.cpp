@@ -198,8 +198,11 @@ WallBuffers uploadWalls(const gpu::Context& context, const WallGrid& walls) {
       gpu::makeStorageBuffer<Segment>(context, walls.segments, gpu::MemoryUse::DeviceLocal, texels);
   b.starts = gpu::makeStorageBuffer<uint32_t>(context, any ? walls.starts : noStarts,
                                               gpu::MemoryUse::DeviceLocal, texels);
-  b.indices =
-      gpu::makeStorageBuffer<uint32_t>(context, walls.indices, gpu::MemoryUse::DeviceLocal, texels);
+  std::vector<Segment> entries;
+  entries.reserve(walls.indices.size());
+  for (uint32_t k : walls.indices) entries.push_back(walls.segments.at(k));
+  b.entries =
+      gpu::makeStorageBuffer<Segment>(context, entries, gpu::MemoryUse::DeviceLocal, texels);
   const std::vector<float> noClearance = {0.0f};
   b.clearance = gpu::makeStorageBuffer<float>(
       context, walls.clearance.empty() ? noClearance : walls.clearance, gpu::MemoryUse::DeviceLocal,
@@ -207,7 +210,7 @@ WallBuffers uploadWalls(const gpu::Context& context, const WallGrid& walls) {
   b.clearanceTexels = gpu::makeBufferView(context, b.clearance, VK_FORMAT_R32_SFLOAT);
   b.segmentTexels = gpu::makeBufferView(context, b.segments, VK_FORMAT_R32G32B32A32_SFLOAT);
   b.startTexels = gpu::makeBufferView(context, b.starts, VK_FORMAT_R32_UINT);
-  b.indexTexels = gpu::makeBufferView(context, b.indices, VK_FORMAT_R32_UINT);
+  b.entryTexels = gpu::makeBufferView(context, b.entries, VK_FORMAT_R32G32B32A32_SFLOAT);
   return b;
 }
 
@@ -293,7 +296,7 @@ std::vector<std::string> AvoidanceJob::validate() const {
     problems.push_back(concat("the walls were binned to reach ", walls->reach,
                               " m, less than the sensing distance ", params.sensing, " m"));
   if (walls && (!walls->info || !walls->segmentTexels || !walls->startTexels ||
-                !walls->indexTexels || !walls->clearanceTexels))
+                !walls->entryTexels || !walls->clearanceTexels))
     problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   return problems;
 }
@@ -339,9 +342,9 @@ void AvoidanceJob::record(VkCommandBuffer cmd, const AvoidancePrograms& programs
       gpu::uniformTexelBinding(gpu_types::kSteerBindingPlacementTexels, crowd->placementTexels),
       gpu::uniformTexelBinding(gpu_types::kSteerBindingSteerTexels, agents->steerTexels),
       gpu::uniformBinding(gpu_types::kSteerBindingWallInfo, w.info),
-      gpu::uniformTexelBinding(gpu_types::kSteerBindingWallSegments, w.segmentTexels),
+      gpu::uniformTexelBinding(gpu_types::kSteerBindingWallEntries, w.entryTexels),
       gpu::uniformTexelBinding(gpu_types::kSteerBindingWallStarts, w.startTexels),
-      gpu::uniformTexelBinding(gpu_types::kSteerBindingWallIndices, w.indexTexels)};
+  };
   gpu::dispatch(cmd, programs.steer(params.policy, cellRange(params), walls != nullptr), bindings,
                 push, crowd->count);
 }
@@ -351,7 +354,7 @@ std::vector<std::string> AdvanceJob::validate() const {
   checkCrowdAndAgents(problems, crowd, agents);
   if (!(dt >= 0.0f)) problems.push_back(concat("dt must be >= 0, got ", dt));
   if (walls && (!walls->info || !walls->segmentTexels || !walls->startTexels ||
-                !walls->indexTexels || !walls->clearanceTexels))
+                !walls->entryTexels || !walls->clearanceTexels))
     problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   if (walls && !(radius > 0.0f && walls->reach > radius))
     problems.push_back(concat("radius must be positive and below the walls' reach ", walls->reach,
@@ -389,9 +392,8 @@ void AdvanceJob::recordWalled(VkCommandBuffer cmd, const AvoidancePrograms& prog
       gpu::storageBinding(gpu_types::kWallBindingPlacement, crowd->placement),
       gpu::uniformTexelBinding(gpu_types::kWallBindingPrevious, agents->steerTexels),
       gpu::uniformBinding(gpu_types::kWallBindingInfo, walls->info),
-      gpu::uniformTexelBinding(gpu_types::kWallBindingSegments, walls->segmentTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingEntries, walls->entryTexels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingStarts, walls->startTexels),
-      gpu::uniformTexelBinding(gpu_types::kWallBindingIndices, walls->indexTexels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingSteer, agents->steerTexels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingGoals, agents->goalTexels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingClearance, walls->clearanceTexels)};
@@ -417,7 +419,7 @@ std::vector<std::string> WallConstraintJob::validate() const {
   if (end > previous->capacity || !previous->texels)
     problems.push_back(concat("the saved positions hold ", previous->capacity,
                               " agents, characters up to ", end, " are constrained"));
-  if (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->indexTexels ||
+  if (!walls->info || !walls->segmentTexels || !walls->startTexels || !walls->entryTexels ||
       !walls->clearanceTexels)
     problems.push_back("the walls' buffers are missing (make them with uploadWalls)");
   if (!(radius > 0.0f) || !std::isfinite(radius))
@@ -440,9 +442,8 @@ void WallConstraintJob::record(VkCommandBuffer cmd, const AvoidancePrograms& pro
       gpu::storageBinding(gpu_types::kWallBindingPlacement, crowd->placement),
       gpu::uniformTexelBinding(gpu_types::kWallBindingPrevious, previous->texels),
       gpu::uniformBinding(gpu_types::kWallBindingInfo, walls->info),
-      gpu::uniformTexelBinding(gpu_types::kWallBindingSegments, walls->segmentTexels),
+      gpu::uniformTexelBinding(gpu_types::kWallBindingEntries, walls->entryTexels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingStarts, walls->startTexels),
-      gpu::uniformTexelBinding(gpu_types::kWallBindingIndices, walls->indexTexels),
       // Not read by the constraining form; texel views of the same format stand in.
       gpu::uniformTexelBinding(gpu_types::kWallBindingSteer, previous->texels),
       gpu::uniformTexelBinding(gpu_types::kWallBindingGoals, previous->texels),

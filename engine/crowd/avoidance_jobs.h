@@ -46,8 +46,11 @@ class AvoidancePrograms {
 // A WallGrid on the GPU: its frame as a uniform block, segments (RGBA32F), starts and indices
 // (R32UI) as texels. Uploaded once: walls do not move.
 struct WallBuffers {
-  gpu::Buffer info, segments, starts, indices, clearance;
-  gpu::Handle<VkBufferView> segmentTexels, startTexels, indexTexels, clearanceTexels;
+  // segments: the segments themselves (drawn by the renderer); entries: per entry of the cells'
+  // lists its segment, copied in list order, so the passes read a list with one fetch per entry
+  // instead of an index and then the segment it names.
+  gpu::Buffer info, segments, starts, entries, clearance;
+  gpu::Handle<VkBufferView> segmentTexels, startTexels, entryTexels, clearanceTexels;
   float reach = 0.0f;  // the grid's lists hold every segment within this of their cell
   uint32_t segmentCount = 0;
 };

@@ -24,8 +24,9 @@ inline constexpr size_t kMaxSegments = 1000000;
 // Coordinates beyond this are refused: float positions lose the millimetres the constraint keeps.
 inline constexpr float kMaxWallCoordinate = 1.0e5f;
 inline constexpr float kMinSegmentLength = 1.0e-4f;  // shorter segments are degenerate (m)
-// Budget of (cell, segment) pairs of the binning and of the grid's cells.
-inline constexpr size_t kMaxWallEntries = size_t(64) << 20;
+// Budget of (cell, segment) pairs of the binning (the GPU keeps a 16-byte copy of the segment per
+// pair: 256 MiB at most) and of the grid's cells.
+inline constexpr size_t kMaxWallEntries = size_t(16) << 20;
 inline constexpr size_t kMaxWallCells = size_t(16) << 20;
 // The constraint keeps agents this much farther than their radius from a wall, so rounding never
 // leaves a sliding agent just inside it (which would pin it to the wall).
