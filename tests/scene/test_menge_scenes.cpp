@@ -1,13 +1,17 @@
 // Menge scenarios as scenes (scene/menge_scene.h): the five shared scenes load; run on the GPU
 // (steering with goals and walls, then synthesis, as a frame records them without the draw), no
 // agent ever crosses a wall or comes within its radius of one (GPU readback, every step), and
-// the small scenes reach their end state: every agent at its final goal.
+// the small scenes reach their end state: every agent at its final goal. The CPU twin (goal
+// machines, navigation, steering and the wall constraint on the CPU) keeps the walls too.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 
 #include "anim/default_clips.h"
+#include "crowd/avoidance.h"
 #include "crowd/crowd_sim.h"
+#include "crowd/goals.h"
+#include "crowd/nav_jobs.h"
 #include "crowd/obstacles.h"
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
@@ -62,6 +66,64 @@ RunResult runScene(scene::Scene& s, const crowd::WallGrid* walls, float radius, 
   return r;
 }
 
+// The CPU twin of a goal scene for at most `seconds`: the goal machines every half second on
+// the twin's positions, then per 0.05 s step navigation (navFollowCpu), grid, steering (with the
+// walls), the kinematic advance and the wall constraint, counting wall violations between steps.
+// Kinematic like crowd::simulateCrowd's twin, so its paths are not the render path's, but the
+// walls' guarantee is the same.
+RunResult runTwin(const scene::SceneSetup& setup, const crowd::WallGrid* walls, double seconds) {
+  const size_t n = setup.crowd.size();
+  const crowd::AvoidanceParams& params = setup.steering->avoidance;
+  crowd::GoalMachine machine(*setup.steering->goals, n);
+  const crowd::GoalScene& goals = machine.scene();
+  std::vector<float> maxSpeed(n, 0.0f);
+  for (size_t i = 0; i < n; ++i)
+    if (goals.agentGroup[i] != crowd::kNoState)
+      maxSpeed[i] = goals.groups[goals.agentGroup[i]].maxSpeed;
+  std::vector<glm::vec4> placement = setup.crowd.placement, motion = setup.crowd.motion;
+  std::vector<glm::vec4> steer(n, glm::vec4(0.0f)), targets(n, glm::vec4(0.0f)), previous;
+  std::vector<glm::vec2> positions(n);
+  auto evaluate = [&](double t) {
+    for (size_t i = 0; i < n; ++i) positions[i] = {placement[i].x, placement[i].z};
+    return machine.evaluate(positions, t);
+  };
+  evaluate(0.0);
+  crowd::NavPaths paths = crowd::packPaths(machine.paths(), maxSpeed);
+  std::vector<uint32_t> progress(n, 1u);
+  const float dt = 0.05f;
+  RunResult r;
+  for (uint32_t step = 0; r.seconds < seconds; ++step) {
+    crowd::navFollowCpu(placement, paths, progress, goals.waypointReach, 1.0f, targets);
+    crowd::SteerFrame frame;
+    frame.dt = dt;
+    frame.step = step;
+    const crowd::Grid grid =
+        crowd::buildGridCpu(placement, steer, params.cellSize, crowd::gridTable(uint32_t(n)));
+    crowd::steerCpu(grid, params, frame, placement, motion, targets, steer, walls);
+    previous = placement;
+    crowd::advanceCpu(placement, steer, targets, dt);
+    if (walls) {
+      crowd::wallConstraintCpu(*walls, params.radius, previous, placement, 0, uint32_t(n));
+      const crowd::WallViolations v =
+          crowd::countWallViolations(*walls, previous, placement, params.radius - 0.001f);
+      r.walls.crossings += v.crossings;
+      r.walls.tooClose += v.tooClose;
+    }
+    r.seconds += dt;
+    if ((step + 1) % 10 == 0) {
+      const std::vector<uint32_t> changed = evaluate(r.seconds);
+      if (!changed.empty()) {
+        paths = crowd::packPaths(machine.paths(), maxSpeed);
+        for (uint32_t i : changed) progress[i] = 1u;
+      }
+      if (machine.allDone()) break;
+    }
+  }
+  r.done = machine.allDone();
+  r.atGoal = machine.agentsAtGoal();
+  return r;
+}
+
 }  // namespace
 
 TEST_CASE("Menge scenes run with goals and walls: no wall crossed, small scenes reach their end") {
@@ -86,14 +148,19 @@ TEST_CASE("Menge scenes run with goals and walls: no wall crossed, small scenes 
     const crowd::AvoidanceParams avoidance = m.setup.steering->avoidance;
     const crowd::WallGrid walls = crowd::binWallsFor(m.setup.walls, avoidance);
     const bool hasWalls = !m.setup.walls.empty();
+    const RunResult twin = runTwin(m.setup, hasWalls ? &walls : nullptr, c.seconds);
     scene::Scene s(test::gpuContext(), std::move(m.setup), {true, 0.05f, 20ull << 20}, {});
     const RunResult r = runScene(s, hasWalls ? &walls : nullptr, avoidance.radius, c.seconds);
     MESSAGE(std::string(c.name), ": ", agents, " agents, ", walls.segments.size(),
             " wall segments; after ", r.seconds, " s ", r.atGoal, " at their final goal",
             std::string(r.done ? " (all)" : ""), "; wall crossings ", r.walls.crossings,
-            ", closer than the radius ", r.walls.tooClose);
+            ", closer than the radius ", r.walls.tooClose, " | twin after ", twin.seconds, " s ",
+            twin.atGoal, " at their final goal; wall crossings ", twin.walls.crossings,
+            ", closer than the radius ", twin.walls.tooClose);
     CHECK(r.walls.crossings == 0);
     CHECK(r.walls.tooClose == 0);
+    CHECK(twin.walls.crossings == 0);
+    CHECK(twin.walls.tooClose == 0);
     if (c.mustFinish) CHECK(r.done);
   }
   CHECK(test::gpuContext().validationMessageCount() == 0);
