@@ -9,6 +9,7 @@
 #include "gpu/timestamps.h"
 #include "gpu_fixture.h"
 #include "render/offscreen_target.h"
+#include "render_frames.h"
 #include "scene/frame.h"
 
 using namespace throng;
@@ -25,25 +26,6 @@ std::unique_ptr<scene::Scene> makeScene(const anim::MotionPair& pair, const crow
                                         synth::LodOptions{});
 }
 
-ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
-                        int frames) {
-  render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
-  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 320, 180);
-  gpu::TimestampPool timestamps(ctx, 8);
-  scene::FrameSettings settings;
-  settings.camera = camera;
-  settings.targets = render::offscreenFrameTargets(target);
-  settings.groundExtent = 20.0f;
-  for (int f = 0; f < frames; ++f) {
-    timestamps.reset();
-    const scene::SceneStep step = scene.advance(1 / 30.0f);
-    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      scene::recordFrame(cmd, ctx, scene, step, renderer, nullptr, settings, timestamps);
-      render::recordReadback(cmd, target);
-    });
-  }
-  return render::readbackImage(target);
-}
 }  // namespace
 
 TEST_CASE("cached draw: the frame equals the frame with every joint synthesized") {
@@ -62,8 +44,8 @@ TEST_CASE("cached draw: the frame equals the frame with every joint synthesized"
   {
     std::unique_ptr<scene::Scene> cached = makeScene(pair, crowd, cache);
     std::unique_ptr<scene::Scene> plain = makeScene(pair, crowd, {});
-    ImageRgba8 a = renderFrames(ctx, *cached, camera, 3);
-    ImageRgba8 b = renderFrames(ctx, *plain, camera, 3);
+    ImageRgba8 a = test::renderFrames(ctx, *cached, camera, 3);
+    ImageRgba8 b = test::renderFrames(ctx, *plain, camera, 3);
     ImageDiff diff = compareImages(a, b, 24);
     MESSAGE("cached vs synthesized frame: mean ", diff.meanAbsError, ", max ", diff.maxError);
     // A cached pose is the nearest of 480 stored rows per second of cycle, not the continuous

@@ -10,32 +10,12 @@
 #include "gpu/timestamps.h"
 #include "gpu_fixture.h"
 #include "render/offscreen_target.h"
+#include "render_frames.h"
 #include "scene/frame.h"
 
 using namespace throng;
 
-namespace {
-ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
-                        bool transferDst, int frames) {
-  render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
-  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 320, 180);
-  gpu::TimestampPool timestamps(ctx, 8);
-  scene::FrameSettings settings;
-  settings.camera = camera;
-  settings.targets = render::offscreenFrameTargets(target);
-  settings.targets.transferDst = transferDst;
-  settings.groundExtent = 20.0f;
-  for (int f = 0; f < frames; ++f) {
-    timestamps.reset();
-    const scene::SceneStep step = scene.advance(1 / 30.0f);
-    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      scene::recordFrame(cmd, ctx, scene, step, renderer, nullptr, settings, timestamps);
-      render::recordReadback(cmd, target);
-    });
-  }
-  return render::readbackImage(target);
-}
-}  // namespace
+namespace {}  // namespace
 
 TEST_CASE("splat resolve: ground planes + per-pixel resolve equal the full-screen pass") {
   gpu::Context& ctx = test::gpuContext();
@@ -60,7 +40,7 @@ TEST_CASE("splat resolve: ground planes + per-pixel resolve equal the full-scree
       setup.groupFirst = {0, uint32_t(crowd.size())};
       scene::Scene scene(ctx, std::move(setup), {}, synth::LodOptions{});
       // Three frames: the planes are made when the view comes a second time, then reused.
-      images[copies] = renderFrames(ctx, scene, camera, copies == 1, 3);
+      images[copies] = test::renderFrames(ctx, scene, camera, 3, copies == 1);
     }
     ImageDiff diff = compareImages(images[1], images[0], 2);
     MESSAGE(std::string(preset), ": per-pixel resolve vs full-screen pass: mean ",

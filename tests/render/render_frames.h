@@ -1,0 +1,35 @@
+#pragma once
+// Test helper: a scene's frames through scene::recordFrame into a 320×180 offscreen target, the
+// last one read back. The render tests that compare two ways of drawing the same crowd use it.
+#include "core/image.h"
+#include "gpu/commands.h"
+#include "gpu/timestamps.h"
+#include "render/offscreen_target.h"
+#include "scene/frame.h"
+
+namespace throng::test {
+
+// `frames` steps of 1/30 s seen by `camera`; `transferDst`: the target takes copies (render's
+// offscreen path) or not (as the viewer's swapchain, the full-screen resolve).
+inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
+                               int frames, bool transferDst = true) {
+  render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
+  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 320, 180);
+  gpu::TimestampPool timestamps(ctx, 8);
+  scene::FrameSettings settings;
+  settings.camera = camera;
+  settings.targets = render::offscreenFrameTargets(target);
+  settings.targets.transferDst = transferDst;
+  settings.groundExtent = 20.0f;
+  for (int f = 0; f < frames; ++f) {
+    timestamps.reset();
+    const scene::SceneStep step = scene.advance(1 / 30.0f);
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      scene::recordFrame(cmd, ctx, scene, step, renderer, nullptr, settings, timestamps);
+      render::recordReadback(cmd, target);
+    });
+  }
+  return render::readbackImage(target);
+}
+
+}  // namespace throng::test
