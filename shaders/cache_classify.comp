@@ -13,7 +13,6 @@
 #include "speed_buckets.glsl"
 
 layout(local_size_x = 64) in;
-layout(constant_id = kCacheClassifyConstantCharactersPerInvocation) const uint kPerInvocation = 1u;
 layout(binding = kCacheClassifyBindingMotion) uniform samplerBuffer motionTexels;  // texels: see root_motion.comp
 layout(std430, binding = kCacheClassifyBindingBucketSlot) readonly buffer BucketSlot { int bucketSlot[]; };
 layout(std430, binding = kCacheClassifyBindingCharacterList) writeonly buffer CharacterList { uint characterList[]; };
@@ -21,7 +20,9 @@ layout(std430, binding = kCacheClassifyBindingListCounts) buffer ListCounts { ui
 layout(std430, binding = kCacheClassifyBindingPoseSource) writeonly buffer PoseSource { uint poseSource[]; };
 layout(push_constant) uniform Push { CachePush push; };
 
-void classifyCharacter(uint local) {
+void main() {
+  uint local = gl_GlobalInvocationID.x;
+  if (local >= push.characterCount) return;
   uint i = push.firstCharacter + local;
   vec4 m = texelFetch(motionTexels, int(i));
   int slot = bucketSlot[speedBucket(speedWeight(m), push.bucketWidth, uint(bucketSlot.length()))];
@@ -35,15 +36,4 @@ void classifyCharacter(uint local) {
   poseSource[i] = kPoseInJoints;
   uint index = atomicAdd(listCounts[push.chunk], 1u);
   characterList[push.firstCharacter + index] = local;
-}
-
-// kPerInvocation characters each, strided (see root_motion.comp).
-void main() {
-  uint stride = (push.characterCount + kPerInvocation - 1u) / kPerInvocation;
-  if (gl_GlobalInvocationID.x >= stride) return;
-  for (uint k = 0u; k < kPerInvocation; ++k) {
-    uint local = gl_GlobalInvocationID.x + k * stride;
-    if (local >= push.characterCount) break;
-    classifyCharacter(local);
-  }
 }

@@ -13,7 +13,6 @@
 #include "coverage_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(constant_id = kCoverageConstantCharactersPerInvocation) const uint kPerInvocation = 1u;
 layout(std140, binding = kCoverageBindingParts) uniform Parts { CoverageParts parts; };
 // Per-character inputs as texels and the masks as 64-bit words: lavapipe moves a storage-buffer
 // vector one component per lane in a loop (docs/design.md, "Decisions for CPU devices").
@@ -46,7 +45,9 @@ uint measureParts(uint i, uint local, vec4 place, float scale, CoverageMask prev
   return onScreen;
 }
 
-void coverCharacter(uint local) {
+void main() {
+  uint local = gl_GlobalInvocationID.x;
+  if (local >= push.characterCount) return;
   uint i = push.firstCharacter + local;
   vec4 place = texelFetch(placementTexels, int(i));
   vec4 m = texelFetch(motionTexels, int(i));
@@ -65,15 +66,4 @@ void coverCharacter(uint local) {
   if (visible && levelState.x == kLevelMid) synthesized = uvec2(parts.levels[1].synthLo, parts.levels[1].synthHi);
   if (visible && levelState.x == kLevelFar) synthesized = uvec2(parts.levels[0].synthLo, parts.levels[0].synthHi);
   maskWords[i] = u64vec2(packUint2x32(synthesized), packUint2x32(uvec2(levelState.x, levelState.y | onScreen)));
-}
-
-// kPerInvocation characters each, strided (see root_motion.comp).
-void main() {
-  uint stride = (push.characterCount + kPerInvocation - 1u) / kPerInvocation;
-  if (gl_GlobalInvocationID.x >= stride) return;
-  for (uint k = 0u; k < kPerInvocation; ++k) {
-    uint local = gl_GlobalInvocationID.x + k * stride;
-    if (local >= push.characterCount) break;
-    coverCharacter(local);
-  }
 }

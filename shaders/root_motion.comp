@@ -15,7 +15,6 @@ layout(local_size_x = 64) in;
 // The motion texels like the pose pass reads them (motion_texels.glsl): on lavapipe a texelFetch
 // goes through the whole sampler path.
 layout(constant_id = kRootMotionConstantJointCount) const int kJointCount = 1;
-layout(constant_id = kRootMotionConstantCharactersPerInvocation) const uint kPerInvocation = 1u;
 #include "motion_texels.glsl"
 // Read and written as 64-bit words: lavapipe moves a storage-buffer vector one component per lane
 // in a loop (docs/design.md, "Decisions for CPU devices"). Not through texel views: a pass that
@@ -52,7 +51,9 @@ vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, float u) {
   return rootRow(fast, frames, cycleTravel, k) * (1.0 - t) + rootRow(fast, frames, cycleTravel, k + 1) * t;
 }
 
-void moveCharacter(uint i) {
+void main() {
+  if (gl_GlobalInvocationID.x >= push.characterCount) return;
+  uint i = push.firstCharacter + gl_GlobalInvocationID.x;
   vec4 place = vec4OfWords(placementWords[i]);
   vec4 m = vec4OfWords(motionWords[i]);
   float w = speedWeight(m);
@@ -81,16 +82,4 @@ void moveCharacter(uint i) {
   // The motion cache's lookup: this frame needs the bucket of the speed weight it now has.
   if (push.cacheBucketWidth > 0.0)
     requested[speedBucket(speedWeight(m), push.cacheBucketWidth, push.cacheBucketCount)] = 1u;
-}
-
-// kPerInvocation characters each, strided so that neighbouring lanes take neighbouring
-// characters (synth::charactersPerInvocation says why).
-void main() {
-  uint stride = (push.characterCount + kPerInvocation - 1u) / kPerInvocation;
-  if (gl_GlobalInvocationID.x >= stride) return;
-  for (uint k = 0u; k < kPerInvocation; ++k) {
-    uint local = gl_GlobalInvocationID.x + k * stride;
-    if (local >= push.characterCount) break;
-    moveCharacter(push.firstCharacter + local);
-  }
 }

@@ -28,8 +28,6 @@ const uint kRootMotionBindingPlacement = 2u;  // vec4 per character as two 64-bi
 const uint kRootMotionBindingMotion = 3u;     // vec4 per character as two 64-bit words
 const uint kRootMotionBindingCacheRequested = 4u;  // uint per bucket (a placeholder without cache)
 const uint kRootMotionConstantJointCount = 0u;  // the texel row width
-// Characters per invocation (synth::charactersPerInvocation), past the texel constants.
-const uint kRootMotionConstantCharactersPerInvocation = 584u;
 
 // synth_pose.comp: blend, hierarchy and draw matrices per character.
 const uint kPoseBindingRadius = 2u;
@@ -68,7 +66,6 @@ const uint kPoseCachedConstantJointCount = 0u;
 const uint kCacheLookupBindingMotion = 0u;  // uniform texel buffer
 const uint kCacheLookupBindingCounters = 1u;
 const uint kCacheLookupBindingRequested = 2u;
-const uint kCacheLookupConstantCharactersPerInvocation = 0u;
 
 // cache_insert.comp: FIFO slots for the missing buckets, the fill's indirect dispatch.
 const uint kCacheInsertBindingCounters = 1u;
@@ -92,7 +89,6 @@ const uint kCacheClassifyBindingBucketSlot = 3u;
 const uint kCacheClassifyBindingCharacterList = 6u;
 const uint kCacheClassifyBindingListCounts = 7u;
 const uint kCacheClassifyBindingPoseSource = 9u;
-const uint kCacheClassifyConstantCharactersPerInvocation = 0u;
 
 // cache_dispatch_args.comp: the list counts as indirect dispatch sizes.
 const uint kCacheArgsBindingListCounts = 7u;
@@ -105,7 +101,6 @@ const uint kCoverageBindingMotion = 2u;     // uniform texel buffer
 const uint kCoverageBindingJoints = 3u;
 const uint kCoverageBindingMasks = 4u;  // CoverageMask as two 64-bit words
 const uint kCoverageBindingAreas = 5u;
-const uint kCoverageConstantCharactersPerInvocation = 0u;
 
 // texel_readback.comp (tests/synth): a motion texture and the parents, copied out.
 const uint kTexelReadbackBindingTexture = 0u;  // combined image sampler

@@ -173,9 +173,7 @@ void pushBindings(VkCommandBuffer cmd, VkPipelineBindPoint bindPoint, const Pipe
 
 ComputeProgram::ComputeProgram(const Context& context, const std::string& shaderFile,
                                std::span<const uint32_t> specialization)
-    : name_(shaderFile),
-      specialization_(specialization.begin(), specialization.end()),
-      maxGroupsX_(context.info().maxComputeWorkGroupCount[0]) {
+    : name_(shaderFile), maxGroupsX_(context.info().maxComputeWorkGroupCount[0]) {
   std::span<const uint32_t> words = shaders::embeddedSpirv(shaderFile);
   if (words.empty()) fail("shader ", shaderFile, " is not embedded in this build");
   reflection_ = reflectSpirv(words, shaderFile);

@@ -66,14 +66,9 @@ class ComputeProgram {
   VkPipeline pipeline() const { return pipeline_; }
   uint32_t localSizeX() const { return reflection_.localSize[0]; }
   uint32_t maxGroupsX() const { return maxGroupsX_; }  // the device's maxComputeWorkGroupCount[0]
-  // The value given for `layout(constant_id = id)`, or `fallback` when none was.
-  uint32_t constant(uint32_t id, uint32_t fallback) const {
-    return id < specialization_.size() ? specialization_[id] : fallback;
-  }
 
  private:
   std::string name_;
-  std::vector<uint32_t> specialization_;
   ShaderReflection reflection_;
   PipelineLayout layout_;
   Handle<VkPipeline> pipeline_;

@@ -320,15 +320,11 @@ void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program
       writeAreas ? gpu::storageBinding(gpu_types::kCoverageBindingAreas, *areas)
                  : gpu::storageBinding(gpu_types::kCoverageBindingAreas, *masks),
   };
-  gpu::dispatch(
-      cmd, program, bindings, push,
-      invocationsFor(program, gpu_types::kCoverageConstantCharactersPerInvocation, count));
+  gpu::dispatch(cmd, program, bindings, push, count);
 }
 
 gpu::ComputeProgram makeCoverageProgram(const gpu::Context& context) {
-  const uint32_t values[] = {charactersPerInvocation(context)};
-  static_assert(gpu_types::kCoverageConstantCharactersPerInvocation == 0);
-  return gpu::ComputeProgram(context, "coverage.comp", values);
+  return gpu::ComputeProgram(context, "coverage.comp");
 }
 
 }  // namespace throng::synth

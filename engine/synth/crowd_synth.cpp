@@ -200,10 +200,7 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
           gpu::storageBinding(gpu_types::kCacheClassifyBindingCharacterList, synth.characterLists),
           gpu::storageBinding(gpu_types::kCacheClassifyBindingListCounts, synth.listCounts),
           gpu::storageBinding(gpu_types::kCacheClassifyBindingPoseSource, synth.poseSource)};
-      gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push,
-                    invocationsFor(programs[k]->cacheClassify,
-                                   gpu_types::kCacheClassifyConstantCharactersPerInvocation,
-                                   push.characterCount));
+      gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push, push.characterCount);
     }
   }
   gpu::computeToComputeBarrier(cmd);

@@ -31,15 +31,6 @@ uint32_t uniformTexelCapacity(const gpu::Context& context) {
   return std::min<uint32_t>(context.info().maxUniformBufferRange, 65536u) / sizeof(glm::vec4);
 }
 
-uint32_t charactersPerInvocation(const gpu::Context& context) {
-  return context.info().isCpu() ? 8u : 1u;
-}
-
-uint32_t invocationsFor(const gpu::ComputeProgram& program, uint32_t constantId, uint32_t count) {
-  const uint32_t per = std::max(1u, program.constant(constantId, 1u));
-  return count / per + (count % per != 0 ? 1u : 0u);
-}
-
 bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity) {
   return capacity > 0 && pair.slow.texels.size() <= capacity && pair.fast.texels.size() <= capacity;
 }

@@ -4,7 +4,6 @@
 #include "anim/motion_texture.h"
 #include "gpu/buffer.h"
 #include "gpu/image.h"
-#include "gpu/program.h"
 
 namespace throng::synth {
 
@@ -18,15 +17,6 @@ std::vector<bool> fixedBones(const anim::MotionPair& pair);
 // texels: min(maxUniformBufferRange, 64 KiB) / 16 on a CPU device, 0 (storage buffers) on a GPU.
 uint32_t uniformTexelCapacity(const gpu::Context& context);
 
-// Characters each invocation of a per-character pass (root motion, coverage, cache lookup and
-// classify) handles, strided so that neighbouring lanes take neighbouring characters. On a CPU
-// device 8: lavapipe spends more on running an invocation than these passes spend on a
-// character (a pass that only stores 16 bytes per character cost as much as root motion at
-// 1,000,000 characters, one fifth of it with 8 per invocation); on a GPU 1.
-uint32_t charactersPerInvocation(const gpu::Context& context);
-// The invocations to dispatch for `count` characters of a program specialized with
-// charactersPerInvocation at constant `constantId`.
-uint32_t invocationsFor(const gpu::ComputeProgram& program, uint32_t constantId, uint32_t count);
 bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity);
 
 struct GpuMotionPair {

@@ -64,37 +64,24 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t 
 // Specialization constants of root_motion.comp: the joint count (the texel row width), and
 // where the texels are read, as for the pose pass.
 std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair,
-                                               uint32_t uniformCapacity, uint32_t perInvocation) {
+                                               uint32_t uniformCapacity) {
   std::vector<uint32_t> values = poseSpecialization(pair, uniformCapacity);
   values[gpu_types::kRootMotionConstantJointCount] = uint32_t(pair.jointCount());
-  values.resize(gpu_types::kRootMotionConstantCharactersPerInvocation + 1);
-  values[gpu_types::kRootMotionConstantCharactersPerInvocation] = perInvocation;
   return values;
-}
-
-// A per-character pass whose only constant is its characters per invocation.
-gpu::ComputeProgram perCharacterProgram(const gpu::Context& context, const char* shader,
-                                        uint32_t constantId) {
-  std::vector<uint32_t> values(constantId + 1, 0u);
-  values[constantId] = charactersPerInvocation(context);
-  return gpu::ComputeProgram(context, shader, values);
 }
 }  // namespace
 
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp",
-                 rootMotionSpecialization(pair, uniformTexelCapacity(context),
-                                          charactersPerInvocation(context))),
+                 rootMotionSpecialization(pair, uniformTexelCapacity(context))),
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       poseMasked(context, "synth_pose.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context), true)),
-      cacheLookup(perCharacterProgram(context, "cache_lookup.comp",
-                                      gpu_types::kCacheLookupConstantCharactersPerInvocation)),
+      cacheLookup(context, "cache_lookup.comp"),
       cacheInsert(context, "cache_insert.comp"),
       cacheFill(context, "cache_fill.comp",
                 poseSpecialization(pair, uniformTexelCapacity(context))),
-      cacheClassify(perCharacterProgram(context, "cache_classify.comp",
-                                        gpu_types::kCacheClassifyConstantCharactersPerInvocation)),
+      cacheClassify(context, "cache_classify.comp"),
       cacheArgs(context, "cache_dispatch_args.comp"),
       poseCached(context, "synth_pose_cached.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context))),
@@ -162,10 +149,7 @@ void CacheJob::recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) 
       gpu::uniformTexelBinding(gpu_types::kCacheLookupBindingMotion, crowd->motionTexels.get()),
       gpu::storageBinding(gpu_types::kCacheLookupBindingCounters, cache->counters),
       gpu::storageBinding(gpu_types::kCacheLookupBindingRequested, cache->requested)};
-  gpu::dispatch(
-      cmd, programs.cacheLookup, lookup, push,
-      invocationsFor(programs.cacheLookup, gpu_types::kCacheLookupConstantCharactersPerInvocation,
-                     push.characterCount));
+  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, push.characterCount);
 }
 
 void CacheJob::recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const {
@@ -268,10 +252,7 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
       gpu::storageBinding(gpu_types::kRootMotionBindingCacheRequested,
                           lookup ? cache->requested : crowd->motion),
   };
-  gpu::dispatch(
-      cmd, programs.rootMotion, bindings, push,
-      invocationsFor(programs.rootMotion, gpu_types::kRootMotionConstantCharactersPerInvocation,
-                     push.characterCount));
+  gpu::dispatch(cmd, programs.rootMotion, bindings, push, push.characterCount);
 }
 
 std::vector<std::string> PoseJob::validate() const {
