@@ -16,15 +16,14 @@ std::vector<bool> fixedBones(const anim::MotionPair& pair);
 // per lane and component (12% of the pass at 100,000 characters on one thread). The capacity in
 // texels: min(maxUniformBufferRange, 64 KiB) / 16 on a CPU device, 0 (storage buffers) on a GPU.
 uint32_t uniformTexelCapacity(const gpu::Context& context);
-
 bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity);
 
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;
-  gpu::Buffer parents;  // int32 per joint, root −1 (the parent array of docs/design.md)
-  std::vector<int32_t> parentsHost;  // the same on the host (the pose pipeline bakes it in)
-  std::vector<bool> animatedOffset;  // baked into the pose pipeline too
+  gpu::Buffer parents;                // int32 per joint, root −1 (the parent array of docs/design.md)
+  std::vector<int32_t> parentsHost;   // the same on the host (the pose pipeline bakes it in)
+  std::vector<bool> animatedOffset;   // baked into the pose pipeline too
   gpu::Buffer jointRadius;
   gpu::Buffer constantOffsets;  // uniform buffer: slow and fast offset of each joint (vec4 × 128)
   // The same texels as SSBOs: the pose pass reads these, because on lavapipe a buffer load is
