@@ -16,19 +16,13 @@ layout(local_size_x = 64) in;
 // goes through the whole sampler path.
 layout(constant_id = kRootMotionConstantJointCount) const int kJointCount = 1;
 #include "motion_texels.glsl"
-// Read and written as 64-bit words: lavapipe moves a storage-buffer vector one component per lane
+#include "words64.glsl"
+// Read and written as 64-bit words (fromWords, toWords): lavapipe moves a storage-buffer vector one component per lane
 // in a loop (docs/design.md, "Decisions for CPU devices"). Not through texel views: a pass that
 // reads a buffer through one descriptor and writes it through another is a hazard.
 layout(std430, binding = kRootMotionBindingPlacement) buffer Placement { u64vec2 placementWords[]; };
 layout(std430, binding = kRootMotionBindingMotion) buffer Motion { u64vec2 motionWords[]; };
 layout(std430, binding = kRootMotionBindingCacheRequested) writeonly buffer Requested { uint requested[]; };
-
-vec4 vec4OfWords(u64vec2 w) {
-  return vec4(uintBitsToFloat(unpackUint2x32(w.x)), uintBitsToFloat(unpackUint2x32(w.y)));
-}
-u64vec2 wordsOfVec4(vec4 v) {
-  return u64vec2(packUint2x32(floatBitsToUint(v.xy)), packUint2x32(floatBitsToUint(v.zw)));
-}
 layout(push_constant) uniform Push { RootMotionPush push; };
 
 // Root position at row k ≥ 0 counted on from the cycle start (k ≥ F continues into the next
@@ -54,8 +48,8 @@ vec3 rootAt(bool fast, uint frames, vec3 cycleTravel, float u) {
 void main() {
   if (gl_GlobalInvocationID.x >= push.characterCount) return;
   uint i = push.firstCharacter + gl_GlobalInvocationID.x;
-  vec4 place = vec4OfWords(placementWords[i]);
-  vec4 m = vec4OfWords(motionWords[i]);
+  vec4 place = fromWords(placementWords[i]);
+  vec4 m = fromWords(motionWords[i]);
   float w = speedWeight(m);
   float duration = push.slowDuration * (1.0 - w) + push.fastDuration * w;
   float phase0 = cyclePhase(m);
@@ -77,8 +71,8 @@ void main() {
   float wraps = floor(phase1);
   m = withCyclePhase(m, phase1 - wraps);
   if (wraps > 0.0) m = withSpeedWeight(m, targetSpeedWeight(m));
-  placementWords[i] = wordsOfVec4(place);
-  motionWords[i] = wordsOfVec4(m);
+  placementWords[i] = toWords(place);
+  motionWords[i] = toWords(m);
   // The motion cache's lookup: this frame needs the bucket of the speed weight it now has.
   if (push.cacheBucketWidth > 0.0)
     requested[speedBucket(speedWeight(m), push.cacheBucketWidth, push.cacheBucketCount)] = 1u;
