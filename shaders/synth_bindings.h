@@ -62,11 +62,6 @@ const uint kPoseCachedBindingCacheData = 10u;
 const uint kPoseCachedBindingMasks = 11u;
 const uint kPoseCachedConstantJointCount = 0u;
 
-// cache_lookup.comp: the speed-weight buckets requested this frame.
-const uint kCacheLookupBindingMotion = 0u;  // uniform texel buffer
-const uint kCacheLookupBindingCounters = 1u;
-const uint kCacheLookupBindingRequested = 2u;
-
 // cache_insert.comp: FIFO slots for the missing buckets, the fill's indirect dispatch.
 const uint kCacheInsertBindingCounters = 1u;
 const uint kCacheInsertBindingRequested = 2u;

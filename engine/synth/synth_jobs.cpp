@@ -77,7 +77,6 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       poseMasked(context, "synth_pose.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context), true)),
-      cacheLookup(context, "cache_lookup.comp"),
       cacheInsert(context, "cache_insert.comp"),
       cacheFill(context, "cache_fill.comp",
                 poseSpecialization(pair, uniformTexelCapacity(context))),
@@ -101,8 +100,6 @@ std::vector<std::string> CacheJob::validate() const {
   std::vector<std::string> problems;
   if (!motion) problems.push_back("input 'motion' (GPU motion textures) is missing");
   if (!crowd) problems.push_back("input 'crowd' buffers are missing");
-  if (crowd && !crowd->motionTexels)
-    problems.push_back("input 'crowd' has no texel view of motion (uploadCrowd)");
   if (!cache) problems.push_back("input/output 'cache' is missing");
   if (cache && !cache->options.enabled) problems.push_back("the cache is disabled");
   if (!data || !*data) problems.push_back("output 'data' (the cache entries) is missing");
@@ -131,26 +128,6 @@ CachePush cachePush(const CacheJob& job) {
   return push;
 }
 }  // namespace
-
-void CacheJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
-  recordLookup(cmd, programs);
-  gpu::computeToComputeBarrier(cmd);
-  recordInsert(cmd, programs);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
-  recordFill(cmd, programs);
-  gpu::computeToComputeBarrier(cmd);
-}
-
-void CacheJob::recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) const {
-  gpu::throwIfInvalid("CacheJob", validate());
-  const CachePush push = cachePush(*this);
-  gpu::Binding lookup[] = {
-      gpu::uniformTexelBinding(gpu_types::kCacheLookupBindingMotion, crowd->motionTexels.get()),
-      gpu::storageBinding(gpu_types::kCacheLookupBindingCounters, cache->counters),
-      gpu::storageBinding(gpu_types::kCacheLookupBindingRequested, cache->requested)};
-  gpu::dispatch(cmd, programs.cacheLookup, lookup, push, push.characterCount);
-}
 
 void CacheJob::recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("CacheJob", validate());

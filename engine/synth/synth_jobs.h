@@ -19,7 +19,6 @@ struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram pose;
   gpu::ComputeProgram poseMasked;  // the same with the coverage-LOD joint masks
-  gpu::ComputeProgram cacheLookup;
   gpu::ComputeProgram cacheInsert;
   gpu::ComputeProgram cacheFill;  // specialized like `pose`
   gpu::ComputeProgram cacheClassify;
@@ -47,7 +46,7 @@ struct RootMotionJob {
   anim::Steering steering = anim::Steering::KeepHeading;
   anim::SpeedRetarget retarget;  // speed changes over time (epoch 0: none)
   // Optional output: with an enabled cache, each character's bucket is flagged as requested
-  // (the cache's lookup step; CacheJob::recordLookup is then not needed this frame).
+  // (the cache's lookup step, before CacheJob's insert and fill).
   const GpuMotionCache* cache = nullptr;
 
   std::vector<std::string> validate() const;
@@ -92,23 +91,21 @@ struct MaterializeCachedJob {
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
-// The motion cache for this frame: lookup (per character), insert (FIFO, once per bucket) and
-// fill (synthesize fresh entries); then the classify pass points cached characters at it.
+// The motion cache for this frame, after root motion flagged every character's bucket (the
+// lookup): insert (FIFO, once per bucket) and fill (synthesize fresh entries); then the classify
+// pass points cached characters at it. CPU twin: MotionCacheCpu::update.
 // Over one group of characters: its clip set's cache, its entries in the shared data buffer.
 struct CacheJob {
   const GpuMotionPair* motion = nullptr;       // input
-  const crowd::CrowdBuffers* crowd = nullptr;  // input: speed weights
+  const crowd::CrowdBuffers* crowd = nullptr;  // input: the crowd the group's range is in
   const GpuMotionCache* cache = nullptr;       // input and output
   const gpu::Buffer* data = nullptr;           // output: the entries, from cache->dataBase
   uint32_t firstCharacter = 0;                 // the group [first, first + count)
   uint32_t characterCount = 0;                 // 0: every character from firstCharacter
 
   std::vector<std::string> validate() const;
-  // The three steps with their barriers.
-  void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
-  // The steps one by one, so that a crowd's groups share each barrier: lookup, barrier, insert,
-  // barrier (compute and indirect), fill, barrier.
-  void recordLookup(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+  // The steps after the lookup (done by RootMotionJob with `cache` set), one by one so that a
+  // crowd's groups share each barrier: insert, barrier (compute and indirect), fill, barrier.
   void recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) const;
   void recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
