@@ -29,9 +29,10 @@ layout(push_constant) uniform Push { RootMotionPush push; };
 // cycle, moved on by the cycle's travel).
 vec3 rootRow(bool fast, uint frames, vec3 cycleTravel, int k) {
   // k / frames by a float division: lavapipe has no vector integer division and would divide
-  // lane by lane. Exact here: k and frames are small whole numbers (far below 2^20), so the
-  // correctly rounded quotient never crosses an integer that the true one does not reach.
-  int cycles = int(floor(float(k) / float(frames)));
+  // lane by lane. GPUs may divide approximately (NVIDIA: within 2 ulp, so F / F can come out
+  // just below 1); the half row keeps the quotient at least 0.5 / F away from every whole
+  // number, far more than that error for the small whole numbers here (k, F far below 2^20).
+  int cycles = int(floor((float(k) + 0.5) / float(frames)));
   int frame = k - cycles * int(frames);
   int texel = frame * 2 * kJointCount + 1;
   return (fast ? fastTexel(texel) : slowTexel(texel)).xyz + float(cycles) * cycleTravel;

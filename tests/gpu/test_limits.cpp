@@ -36,6 +36,13 @@ TEST_CASE(
     "binds") {
   gpu::Context& ctx = test::gpuContext();
   const VkDeviceSize limit = ctx.info().maxStorageBufferRange;
+  // NVIDIA's range is 4 GiB - 1 while one allocation may hold a little less than 4 GiB: no
+  // buffer there is larger than the range, so nothing can bind past it.
+  if (limit + 256 > ctx.info().maxMemoryAllocationSize) {
+    MESSAGE("skipped: maxStorageBufferRange ", limit, " is not below maxMemoryAllocationSize ",
+            ctx.info().maxMemoryAllocationSize);
+    return;
+  }
   gpu::ComputeProgram program(ctx, "test_scale.comp");
   gpu::Buffer big(ctx, limit + 256, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   gpu::Buffer out(ctx, 256, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
@@ -82,7 +89,11 @@ TEST_CASE("limits: a dispatch past maxComputeWorkGroupCount is a LimitError") {
   gpu::Binding bindings[] = {gpu::storageBinding(gpu_types::kTestScaleBindingInput, in),
                              gpu::storageBinding(gpu_types::kTestScaleBindingOutput, out)};
   const uint64_t tooMany = uint64_t(program.maxGroupsX()) * program.localSizeX() + 1;
-  REQUIRE(tooMany <= UINT32_MAX);
+  if (tooMany > UINT32_MAX) {  // NVIDIA: 2^31 - 1 groups, more than a 32-bit count can ask for
+    MESSAGE("skipped: ", program.maxGroupsX(), " groups of ", program.localSizeX(),
+            " hold every 32-bit invocation count");
+    return;
+  }
   gpu::CommandPool pool(ctx);
   VkCommandBuffer cmd = pool.allocate();
   gpu::beginCommands(cmd);

@@ -156,9 +156,13 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
           colourMismatch, " colour mismatches, ", differentWinner,
           " pixels won by another joint, worst depth diff ", worstDepth, "; near joints GPU ",
           gpuNear.size(), " CPU ", cpu.nearJoints.size());
+  // Silhouette pixels may flip, and a ray grazing an ellipsoid gets a normal that swings with
+  // the last bit of the hit (these joints are a pixel or two across, so many rays graze). How
+  // many depends on the device's rounding: lavapipe 6 flips and 47 channels (0.26%) here, an
+  // NVIDIA H100 (fused multiply-adds, approximate square roots) 29 and 238 (1.3%).
   CHECK(covered > 500);
-  CHECK(coverageMismatch <= covered / 200);    // silhouette pixels may flip on float rounding
-  CHECK(colourMismatch <= 3 * covered / 200);  // ≤ 0.5% of channels off by more than 2 levels
+  CHECK(coverageMismatch <= covered / 100);
+  CHECK(colourMismatch <= 3 * covered / 50);  // ≤ 2% of channels off by more than 2 levels
   CHECK(differentWinner <= covered / 50);
   CHECK(cpu.nearJoints.size() > 0);
   CHECK(gpuNear == cpu.nearJoints);
