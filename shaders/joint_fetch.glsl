@@ -12,13 +12,33 @@ layout(std430, binding = kRenderBindingMotion) readonly buffer Motion { vec4 mot
 layout(std430, binding = kRenderBindingPoseSource) readonly buffer PoseSource { uint poseSource[]; };
 layout(std430, binding = kRenderBindingCacheData) readonly buffer CacheData { JointMatrix cacheData[]; };
 
+// What fetchJoint reads once per character rather than once per joint: where its pose comes
+// from and, for a cached pose, its root transform and scale.
+struct CharacterPose {
+  uint source;  // kPoseInJoints, or the character's first matrix in cacheData
+  vec4 place;
+  float scale;
+};
+
+CharacterPose characterPose(uint character, uint flags) {
+  CharacterPose pose = CharacterPose(kPoseInJoints, vec4(0.0), 1.0);
+  if ((flags & kDrawCachedPoses) == 0u) return pose;
+  pose.source = poseSource[character];
+  if (pose.source != kPoseInJoints) {
+    pose.place = placement[character];
+    pose.scale = characterScale(motion[character]);
+  }
+  return pose;
+}
+
+// chunkJoint indexes the chunk's joints binding.
+JointMatrix fetchPoseJoint(CharacterPose pose, uint chunkJoint, uint joint) {
+  if (pose.source != kPoseInJoints) return placeCachedJoint(cacheData[pose.source + joint], pose.place, pose.scale);
+  return joints[chunkJoint];
+}
+
 // chunkJoint indexes the chunk's joints binding; character is global.
 JointMatrix fetchJoint(uint chunkJoint, uint character, uint joint, uint flags) {
-  if ((flags & kDrawCachedPoses) != 0u) {
-    uint source = poseSource[character];
-    if (source != kPoseInJoints)
-      return placeCachedJoint(cacheData[source + joint], placement[character], characterScale(motion[character]));
-  }
-  return joints[chunkJoint];
+  return fetchPoseJoint(characterPose(character, flags), chunkJoint, joint);
 }
 #endif

@@ -41,25 +41,29 @@ JointMatrix longBone(vec3 start, JointMatrix a, float radiusScale) {
 }
 
 // chunkJoint indexes the chunk's joints binding, j is the joint within the character.
-bool drawnJoint(uint chunkJoint, uint character, uint j, uint flags, uvec4 mask, uvec2 bones, out JointMatrix a) {
+bool drawnPoseJoint(uint chunkJoint, CharacterPose pose, uint j, uint flags, uvec4 mask, uvec2 bones, out JointMatrix a) {
   a = JointMatrix(vec4(0.0), vec4(0.0), vec4(0.0));
   if (!bitOf(bones, j)) return false;
   if ((flags & kDrawUseMasks) == 0u) {
-    a = fetchJoint(chunkJoint, character, j, flags);
+    a = fetchPoseJoint(pose, chunkJoint, j);
     return true;
   }
   if (!bitOf(mask.xy, j)) return false;
   bool levels = (flags & kDrawLodLevels) != 0u;
   uint level = min(mask.z, kLevelCount - 1u);
   if (levels && !bitOf(uvec2(lodParts.levels[level].drawLo, lodParts.levels[level].drawHi), j)) return false;
-  a = fetchJoint(chunkJoint, character, j, flags);
+  a = fetchPoseJoint(pose, chunkJoint, j);
   uint from = levels ? boneFromOf(level, j) : 255u;
   if (from == 255u) return true;
-  JointMatrix b = fetchJoint(chunkJoint - j + from, character, from, flags);
+  JointMatrix b = fetchPoseJoint(pose, chunkJoint - j + from, from);
   float point = from == 0u ? 0.5 : 1.0;  // the root's matrix is a sphere around it
   vec3 start = vec3(b.row0.y * point + b.row0.w, b.row1.y * point + b.row1.w, b.row2.y * point + b.row2.w);
   a = longBone(start, a, boneRadiusOf(level, j));
   return true;
+}
+
+bool drawnJoint(uint chunkJoint, uint character, uint j, uint flags, uvec4 mask, uvec2 bones, out JointMatrix a) {
+  return drawnPoseJoint(chunkJoint, characterPose(character, flags), j, flags, mask, bones, a);
 }
 
 #endif

@@ -4,11 +4,15 @@
 #extension GL_EXT_shader_atomic_int64 : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
-// The far joints, step 1: one invocation per joint finds its ellipsoid's screen box and reserves
-// a sprite and one pixel entry per pixel of the box for joint_splat_pixels.comp, which
-// ray-casts them one pixel per invocation. A joint whose reservation does not fit ray-casts its
-// own pixels here (one invocation looping over the box). Joints wider than push.maxPixels are
-// listed for an indirect draw by the graphics pipeline instead. CPU twin: render::splatJointsCpu.
+// The far joints, step 1: one invocation per character walks its joints (lanes are characters
+// at the same joint, so a level's undrawn joints cost its lanes nothing, and the character's
+// mask, tint and pose source are read once). Each drawn joint's ellipsoid gets its screen box
+// and reserves a sprite and one pixel entry per pixel of the box for joint_splat_pixels.comp,
+// which ray-casts them one pixel per invocation. A far character a few pixels tall reserves one
+// sprite for its whole body instead (joint_far_body.glsl). A joint whose reservation does not
+// fit ray-casts its own pixels here (looping over the box). Joints wider than push.maxPixels
+// are listed for an indirect draw by the graphics pipeline instead. CPU twin:
+// render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -24,20 +28,15 @@ layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint gro
 layout(push_constant) uniform Push { SplatPush push; };
 #include "joint_fetch.glsl"
 #include "joint_lod.glsl"
+#include "joint_far_body.glsl"
 #include "joint_splat_common.glsl"
 layout(std430, binding = kRenderBindingSprites) writeonly buffer Sprites { SplatSprite sprites[]; };
 layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { uint owners[]; };
 layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
 
-void main() {
-  uint joint = gl_GlobalInvocationID.x;
-  if (joint >= push.jointTotal) return;
-  uint character = joint / push.jointCount + push.firstCharacter;
-  uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
-  JointMatrix a;
-  if (!drawnJoint(joint, character, joint % push.jointCount, push.flags, mask, uvec2(push.boneLo, push.boneHi), a)) return;
-  JointSprite s = jointSprite(a, frame);
-  if (!s.visible) return;
+// Joint `joint` (chunk-local) as sprite s: listed for the draw when too wide, else its box's
+// pixels reserved for the pixel pass (or splatted here when the work lists are full).
+void splatSprite(uint joint, JointSprite s, vec3 tint) {
   if (s.sizePx > push.maxPixels) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);
     nearList[push.listBase + slot] = joint;
@@ -47,9 +46,6 @@ void main() {
   ivec2 lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
   ivec2 hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
   if (hi.x < lo.x || hi.y < lo.y) return;
-  vec3 tint = (push.flags & kDrawTintLevel) != 0u  ? levelTint(mask.z)
-              : (push.flags & kDrawGroupTint) != 0u ? groupTint(groups[character], character)
-                                                    : characterTint(character);
   uint boxWidth = uint(hi.x - lo.x + 1);
   uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
   // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
@@ -72,4 +68,29 @@ void main() {
   }
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+}
+
+void main() {
+  uint local = gl_GlobalInvocationID.x;  // the character within the chunk
+  if (local * push.jointCount >= push.jointTotal) return;
+  uint character = local + push.firstCharacter;
+  uint base = local * push.jointCount;  // its first joint in the chunk
+  uvec4 mask = (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
+  if ((push.flags & kDrawUseMasks) != 0u && (mask.x | mask.y) == 0u) return;  // off screen
+  vec3 tint = (push.flags & kDrawTintLevel) != 0u  ? levelTint(mask.z)
+              : (push.flags & kDrawGroupTint) != 0u ? groupTint(groups[character], character)
+                                                    : characterTint(character);
+  CharacterPose pose = characterPose(character, push.flags);
+  JointSprite body;
+  if (farBody(pose, base, push.flags, mask, frame, body) && body.sizePx <= push.maxPixels) {
+    splatSprite(base, body, tint);
+    return;
+  }
+  uvec2 bones = uvec2(push.boneLo, push.boneHi);
+  for (uint j = 0u; j < push.jointCount; ++j) {
+    JointMatrix a;
+    if (!drawnPoseJoint(base + j, pose, j, push.flags, mask, bones, a)) continue;
+    JointSprite s = jointSprite(a, frame);
+    if (s.visible) splatSprite(base + j, s, tint);
+  }
 }

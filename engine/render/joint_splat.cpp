@@ -1,6 +1,7 @@
 #include "render/joint_splat.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "core/error.h"
 #include "gpu/commands.h"
@@ -30,9 +31,10 @@ std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount
 }
 
 SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapacity,
-                                uint32_t pixelCapacity) {
+                                uint32_t pixelCapacity, float farBodyPixels) {
   const uint32_t capacities[] = {spriteCapacity, pixelCapacity};
-  return {gpu::ComputeProgram(context, "joint_splat.comp", capacities),
+  const uint32_t splat[] = {spriteCapacity, pixelCapacity, std::bit_cast<uint32_t>(farBodyPixels)};
+  return {gpu::ComputeProgram(context, "joint_splat.comp", splat),
           gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities),
           gpu::ComputeProgram(context, "joint_splat_resolve.comp", capacities)};
 }
@@ -154,7 +156,7 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
         gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
         gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
     };
-    gpu::dispatch(cmd, programs.joints, bindings, push, push.jointTotal);
+    gpu::dispatch(cmd, programs.joints, bindings, push, chunk.characterCount);
   }
   if (timer) timer->mark(cmd, "splat-joints");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,

@@ -38,8 +38,9 @@ struct CachedPoseInputs {
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 
-// joint_splat.comp (a sprite per joint), joint_splat_pixels.comp (an invocation per pixel) and
-// joint_splat_resolve.comp, specialized with the work lists' capacities.
+// joint_splat.comp (a sprite per joint, or per far body), joint_splat_pixels.comp (an invocation
+// per pixel) and joint_splat_resolve.comp, specialized with the work lists' capacities and the
+// far body's height (0: every character by its joints).
 struct SplatPrograms {
   gpu::ComputeProgram joints;
   gpu::ComputeProgram pixels;
@@ -47,7 +48,8 @@ struct SplatPrograms {
 };
 SplatPrograms makeSplatPrograms(const gpu::Context& context,
                                 uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
-                                uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity);
+                                uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity,
+                                float farBodyPixels = gpu_types::kSplatFarBodyPixels);
 
 // The work lists for those capacities (device-local).
 struct SplatLists {
@@ -86,7 +88,8 @@ struct SplatJob {
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
 
   std::vector<std::string> validate() const;
-  // Clears the visibility buffer and splats every joint (chunked); leaves barriers for the
+  // Clears the visibility buffer and splats every character (one invocation each, chunked);
+  // leaves barriers for the
   // fragment-shader resolve.
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 };

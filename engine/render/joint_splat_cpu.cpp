@@ -9,18 +9,15 @@
 namespace throng::render {
 namespace {
 
-struct Sprite {
-  glm::vec4 inverse[3];
-  glm::vec2 lo, hi;
-  float sizePx = 0.0f;
-  bool visible = false;
-};
+float dotD(glm::vec4 a, glm::vec4 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z - a.w * b.w;
+}
 
-float dotD(glm::vec4 a, glm::vec4 b) { return a.x * b.x + a.y * b.y + a.z * b.z - a.w * b.w; }
+}  // namespace
 
 // Mirrors jointSprite() in shaders/joint_sprite.glsl.
-Sprite jointSprite(const synth::JointMatrix& a, const gpu_types::FrameUniforms& frame) {
-  Sprite s;
+JointSpriteCpu jointSpriteCpu(const synth::JointMatrix& a, const gpu_types::FrameUniforms& frame) {
+  JointSpriteCpu s;
   glm::vec3 t(a.row0.w, a.row1.w, a.row2.w);
   glm::vec3 b0(a.row0.x, a.row1.x, a.row2.x);
   glm::vec3 b1 = 0.5f * glm::vec3(a.row0.y, a.row1.y, a.row2.y);
@@ -35,17 +32,22 @@ Sprite jointSprite(const synth::JointMatrix& a, const gpu_types::FrameUniforms& 
   s.inverse[0] = glm::vec4(r0, -glm::dot(r0, centre));
   s.inverse[1] = glm::vec4(r1, -glm::dot(r1, centre));
   s.inverse[2] = glm::vec4(r2, -glm::dot(r2, centre));
-  glm::mat4 t4 = frame.viewProjection * glm::mat4(glm::vec4(b0, 0), glm::vec4(b1, 0), glm::vec4(b2, 0), glm::vec4(centre, 1));
+  glm::mat4 t4 = frame.viewProjection * glm::mat4(glm::vec4(b0, 0), glm::vec4(b1, 0),
+                                                  glm::vec4(b2, 0), glm::vec4(centre, 1));
   glm::vec4 rx(t4[0].x, t4[1].x, t4[2].x, t4[3].x), ry(t4[0].y, t4[1].y, t4[2].y, t4[3].y);
   glm::vec4 rw(t4[0].w, t4[1].w, t4[2].w, t4[3].w);
-  float qa = dotD(rw, rw), bx = dotD(rx, rw), cx = dotD(rx, rx), by = dotD(ry, rw), cy = dotD(ry, ry);
+  float qa = dotD(rw, rw), bx = dotD(rx, rw), cx = dotD(rx, rx), by = dotD(ry, rw),
+        cy = dotD(ry, ry);
   if (qa >= 0.0f) {
     s.visible = false;
     return s;
   }
-  float hx = std::sqrt(std::max(bx * bx - qa * cx, 0.0f)), hy = std::sqrt(std::max(by * by - qa * cy, 0.0f));
-  glm::vec2 ndcLo(std::min((bx + hx) / qa, (bx - hx) / qa), std::min((by + hy) / qa, (by - hy) / qa));
-  glm::vec2 ndcHi(std::max((bx + hx) / qa, (bx - hx) / qa), std::max((by + hy) / qa, (by - hy) / qa));
+  float hx = std::sqrt(std::max(bx * bx - qa * cx, 0.0f)),
+        hy = std::sqrt(std::max(by * by - qa * cy, 0.0f));
+  glm::vec2 ndcLo(std::min((bx + hx) / qa, (bx - hx) / qa),
+                  std::min((by + hy) / qa, (by - hy) / qa));
+  glm::vec2 ndcHi(std::max((bx + hx) / qa, (bx - hx) / qa),
+                  std::max((by + hy) / qa, (by - hy) / qa));
   glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
   s.lo = (ndcLo * 0.5f + 0.5f) * viewport;
   s.hi = (ndcHi * 0.5f + 0.5f) * viewport;
@@ -53,49 +55,63 @@ Sprite jointSprite(const synth::JointMatrix& a, const gpu_types::FrameUniforms& 
   return s;
 }
 
+namespace {
+
 uint32_t hashIndex(uint32_t x) {
-  x ^= x >> 16; x *= 0x7feb352du; x ^= x >> 15; x *= 0x846ca68bu; x ^= x >> 16;
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
   return x;
 }
 
 glm::vec3 characterTint(uint32_t character) {
   uint32_t h = hashIndex(character);
   float hue = float(h & 1023u) / 1024.0f;
-  glm::vec3 k = glm::abs(glm::fract(glm::vec3(hue) + glm::vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f);
+  glm::vec3 k = glm::abs(
+      glm::fract(glm::vec3(hue) + glm::vec3(0.0f, 2.0f / 3.0f, 1.0f / 3.0f)) * 6.0f - 3.0f);
   glm::vec3 rgb = glm::clamp(k - 1.0f, 0.0f, 1.0f);
   return glm::mix(rgb, glm::vec3(0.85f), 0.25f) * (0.75f + 0.25f * float((h >> 10) & 3u) / 3.0f);
 }
 
 uint32_t packColour(glm::vec4 c) {
   uint32_t out = 0;
-  for (int i = 0; i < 4; ++i) out |= uint32_t(std::lround(std::clamp(c[i], 0.0f, 1.0f) * 255.0f)) << (8 * i);
+  for (int i = 0; i < 4; ++i)
+    out |= uint32_t(std::lround(std::clamp(c[i], 0.0f, 1.0f) * 255.0f)) << (8 * i);
   return out;
 }
 
 }  // namespace
 
-SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints, const gpu_types::FrameUniforms& frame,
-                              uint32_t jointCount, float maxPixels, uint32_t width, uint32_t height) {
+SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
+                              const gpu_types::FrameUniforms& frame, uint32_t jointCount,
+                              float maxPixels, uint32_t width, uint32_t height) {
   SplatCpuResult result;
   result.visibility.assign(size_t(width) * height, kEmptyPixel);
   const glm::vec3 eye(frame.eye);
   const glm::vec3 light(frame.lightDirection);
   for (uint32_t joint = 0; joint < joints.size(); ++joint) {
-    Sprite s = jointSprite(joints[joint], frame);
+    JointSpriteCpu s = jointSpriteCpu(joints[joint], frame);
     if (!s.visible) continue;
     if (s.sizePx > maxPixels) {
       result.nearJoints.push_back(joint);
       continue;
     }
     glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(s.lo - 0.5f)), glm::ivec2(0));
-    glm::ivec2 hi = glm::min(glm::ivec2(glm::floor(s.hi - 0.5f)), glm::ivec2(int(width) - 1, int(height) - 1));
+    glm::ivec2 hi =
+        glm::min(glm::ivec2(glm::floor(s.hi - 0.5f)), glm::ivec2(int(width) - 1, int(height) - 1));
     glm::vec3 tint = characterTint(joint / jointCount);
-    glm::mat3 inv = glm::transpose(glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
+    glm::mat3 inv = glm::transpose(
+        glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
     glm::vec3 o = inv * eye + glm::vec3(s.inverse[0].w, s.inverse[1].w, s.inverse[2].w);
     for (int y = lo.y; y <= hi.y; ++y) {
       for (int x = lo.x; x <= hi.x; ++x) {
-        glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / glm::vec2(frame.viewport.x, frame.viewport.y) * 2.0f - 1.0f;
-        glm::vec3 dir = glm::normalize(glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) + ndc.y * glm::vec3(frame.rayDown));
+        glm::vec2 ndc =
+            (glm::vec2(x, y) + 0.5f) / glm::vec2(frame.viewport.x, frame.viewport.y) * 2.0f - 1.0f;
+        glm::vec3 dir =
+            glm::normalize(glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) +
+                           ndc.y * glm::vec3(frame.rayDown));
         glm::vec3 d = inv * dir;
         float a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 1.0f;
         float disc = b * b - a * c;
@@ -108,7 +124,8 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints, const 
         float diffuse = std::max(glm::dot(n, light), 0.0f);
         float sky = 0.5f + 0.5f * n.y;
         float rim = std::pow(1.0f - std::max(glm::dot(n, -dir), 0.0f), 3.0f);
-        glm::vec3 col = glm::pow(tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim, glm::vec3(1.0f / 2.2f));
+        glm::vec3 col = glm::pow(tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim,
+                                 glm::vec3(1.0f / 2.2f));
         uint32_t depthBits;
         std::memcpy(&depthBits, &depth, sizeof(depthBits));
         uint64_t packed = (uint64_t(depthBits) << 32) | packColour(glm::vec4(col, 1.0f));

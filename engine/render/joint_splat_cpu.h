@@ -9,12 +9,23 @@
 
 namespace throng::render {
 
+// jointSprite() of shaders/joint_sprite.glsl: a joint draw matrix's ellipsoid, its world →
+// unit-sphere rows and its exact screen box.
+struct JointSpriteCpu {
+  glm::vec4 inverse[3];
+  glm::vec2 lo{0.0f}, hi{0.0f};
+  float sizePx = 0.0f;
+  bool visible = false;
+};
+JointSpriteCpu jointSpriteCpu(const synth::JointMatrix& a, const gpu_types::FrameUniforms& frame);
+
 struct SplatCpuResult {
-  std::vector<uint64_t> visibility;   // width × height, kEmptyPixel where nothing was hit
-  std::vector<uint32_t> nearJoints;   // joints too wide to splat, ascending
+  std::vector<uint64_t> visibility;  // width × height, kEmptyPixel where nothing was hit
+  std::vector<uint32_t> nearJoints;  // joints too wide to splat, ascending
 };
 
-SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints, const gpu_types::FrameUniforms& frame,
-                              uint32_t jointCount, float maxPixels, uint32_t width, uint32_t height);
+SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
+                              const gpu_types::FrameUniforms& frame, uint32_t jointCount,
+                              float maxPixels, uint32_t width, uint32_t height);
 
 }  // namespace throng::render

@@ -1,6 +1,7 @@
 // SplatJob: validity, then the GPU pass against its CPU twin on a real crowd.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "anim/default_clips.h"
@@ -9,6 +10,7 @@
 #include "gpu/program.h"
 #include "gpu_fixture.h"
 #include "render/crowd_renderer.h"
+#include "render/joint_far_body_cpu.h"
 #include "render/joint_lod_cpu.h"
 #include "render/joint_splat.h"
 #include "render/joint_splat_cpu.h"
@@ -113,7 +115,19 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, programs); });
 
   const std::vector<synth::JointMatrix> drawn =
-      render::drawnJointMatrices(matrices, joints, bones, masks, levels);
+      render::splattedJointMatrices(matrices, joints, bones, masks, levels, frame, maxPixels);
+  if (levels) {  // the far bodies are splatted too (test_far_body.cpp bounds how they look)
+    const auto isZero = [](const synth::JointMatrix& m) {
+      return m.row0 == glm::vec4(0.0f) && m.row1 == glm::vec4(0.0f) && m.row2 == glm::vec4(0.0f);
+    };
+    size_t bodies = 0;
+    for (size_t c = 0; c < characters; ++c)
+      bodies += !isZero(drawn[c * joints]) &&
+                std::all_of(drawn.begin() + std::ptrdiff_t(c * joints + 1),
+                            drawn.begin() + std::ptrdiff_t((c + 1) * joints), isZero);
+    MESSAGE(bodies, " characters drawn as their far body");
+    CHECK(bodies > 20);
+  }
   render::SplatCpuResult cpu =
       render::splatJointsCpu(drawn, frame, joints, maxPixels, width, height);
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);

@@ -1,0 +1,45 @@
+// The far body: a far-level character whose whole figure is under kFarBodyPixels tall on
+// screen is splatted as one ellipsoid (its standing height, kFarBodyWidth of it across) instead
+// of its far level's joints: one sprite, not a dozen, for a figure whose limbs are a pixel wide.
+// Placed from three joints the far level always synthesizes, the torso's and the legs' centre
+// joints; their mean heights (CoverageParts.parts) give the character's scale. Needs
+// joint_lod.glsl first. CPU twin: render::farBodyMatrix (engine/render/joint_far_body_cpu.cpp).
+#ifndef THRONG_JOINT_FAR_BODY_GLSL
+#define THRONG_JOINT_FAR_BODY_GLSL
+
+layout(constant_id = 2) const float kFarBodyPixels = kSplatFarBodyPixels;
+
+vec3 partPoint(JointMatrix a, float bonePoint) {
+  return vec3(a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w, a.row2.y * bonePoint + a.row2.w);
+}
+
+// The body ellipsoid as a joint draw matrix; a zero matrix (never visible) where the joints
+// give no scale. base: the character's first joint in the chunk's joints binding.
+JointMatrix farBodyMatrix(CharacterPose pose, uint base) {
+  CoveragePart torso = lodParts.parts[kPartTorso];
+  CoveragePart left = lodParts.parts[kPartLeftLeg];
+  CoveragePart right = lodParts.parts[kPartRightLeg];
+  vec3 spine = partPoint(fetchPoseJoint(pose, base + torso.joint, torso.joint), torso.bonePoint);
+  vec3 knees = 0.5 * (partPoint(fetchPoseJoint(pose, base + left.joint, left.joint), left.bonePoint) +
+                      partPoint(fetchPoseJoint(pose, base + right.joint, right.joint), right.bonePoint));
+  float meanSpan = torso.centre.y - 0.5 * (left.centre.y + right.centre.y);
+  float scale = meanSpan > 0.0 ? (spine.y - knees.y) / meanSpan : 0.0;
+  if (!(scale > 0.0)) return JointMatrix(vec4(0.0), vec4(0.0), vec4(0.0));
+  float height = lodParts.body.x * scale;
+  float radius = kFarBodyWidth * height;
+  vec3 bottom = spine - vec3(0.0, torso.centre.y * scale, 0.0);
+  return JointMatrix(vec4(radius, 0.0, 0.0, bottom.x), vec4(0.0, height, 0.0, bottom.y),
+                     vec4(0.0, 0.0, radius, bottom.z));
+}
+
+// Whether the character is drawn as its far body (the LOD levels on, the far level, the body
+// under kFarBodyPixels tall on screen), with its sprite.
+bool farBody(CharacterPose pose, uint base, uint flags, uvec4 mask, FrameUniforms frame, out JointSprite s) {
+  s.visible = false;
+  if ((flags & (kDrawUseMasks | kDrawLodLevels)) != (kDrawUseMasks | kDrawLodLevels)) return false;
+  if (mask.z != kLevelFar || (mask.x | mask.y) == 0u || kFarBodyPixels <= 0.0) return false;
+  s = jointSprite(farBodyMatrix(pose, base), frame);
+  return s.visible && s.hi.y - s.lo.y < kFarBodyPixels;
+}
+
+#endif
