@@ -375,18 +375,40 @@ RoadMap roadMapFromMenge(const menge::RoadMap& map) {
 
 namespace {
 
+bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
+  const float pa = side(p, q, a), pb = side(p, q, b), ap = side(a, b, p), aq = side(a, b, q);
+  return ((pa <= 0.0f && pb >= 0.0f) || (pa >= 0.0f && pb <= 0.0f)) &&
+         ((ap <= 0.0f && aq >= 0.0f) || (ap >= 0.0f && aq <= 0.0f)) &&
+         !(pa == 0.0f && pb == 0.0f);  // collinear: passing along a wall's line is not crossing
+}
+
+// The nearest way point visible from p, or the nearest one when none is.
 uint32_t nearestWayPoint(const RoadMap& map, glm::vec2 p) {
-  uint32_t best = 0;
-  for (uint32_t i = 1; i < map.points.size(); ++i)
-    if (glm::distance(map.points[i], p) < glm::distance(map.points[best], p)) best = i;
-  return best;
+  uint32_t best = 0, bestVisible = 0;
+  bool anyVisible = false;
+  for (uint32_t i = 0; i < map.points.size(); ++i) {
+    const float d = glm::distance(map.points[i], p);
+    if (d < glm::distance(map.points[best], p)) best = i;
+    if ((!anyVisible || d < glm::distance(map.points[bestVisible], p)) &&
+        visible(map.walls, p, map.points[i])) {
+      bestVisible = i;
+      anyVisible = true;
+    }
+  }
+  return anyVisible ? bestVisible : best;
 }
 
 }  // namespace
 
+bool visible(std::span<const Segment> walls, glm::vec2 p, glm::vec2 q) {
+  for (const Segment& w : walls)
+    if (segmentsCross(p, q, w.a, w.b)) return false;
+  return true;
+}
+
 PlannedPath planOnRoadMap(const RoadMap& map, glm::vec2 start, glm::vec2 target) {
   PlannedPath path;
-  if (map.empty()) {
+  if (map.empty() || start == target || (!map.walls.empty() && visible(map.walls, start, target))) {
     path.points = {start, target};
     return path;
   }

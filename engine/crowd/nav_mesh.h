@@ -9,10 +9,13 @@
 // polygons, adjacency per edge, a lookup grid) whatever the source; navMeshFromMenge and
 // roadMapFromMenge convert engine/menge's plain data, Menge (x, y) becoming (x, z).
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "crowd/obstacles.h"
 
 namespace throng::menge {
 struct NavMesh;
@@ -56,6 +59,9 @@ glm::vec2 closestMeshPoint(const NavMesh& mesh, glm::vec2 p, int* polygon = null
 struct RoadMap {
   std::vector<glm::vec2> points;
   std::vector<std::vector<uint32_t>> neighbors;  // per point (undirected edges, both ways)
+  // The walls of the scene, for the visibility tests of planOnRoadMap; empty: everything is
+  // taken as visible.
+  std::vector<Segment> walls;
 
   bool empty() const { return points.empty(); }
 };
@@ -80,8 +86,14 @@ struct PlannedPath {
 PlannedPath planOnNavMesh(const NavMesh& mesh, glm::vec2 start, glm::vec2 target,
                           float clearance = 0.0f);
 // A* over the road map: start → nearest way point → … → way point nearest the target → target.
-// The road map carries no obstacles, so the nearest way points are taken as visible.
+// With the map's walls (as Menge's road maps): a target visible from the start (no wall crosses
+// the line) is walked to straight, and the way points entered and left are the nearest visible
+// from the start and from the target (the nearest ones when none is). Without walls the nearest
+// way points are taken as visible. A target at the start is a path of two equal points (an
+// agent told to stay where it is does not walk out to the road map).
 PlannedPath planOnRoadMap(const RoadMap& map, glm::vec2 start, glm::vec2 target);
+// Whether the straight line from p to q crosses none of `walls` (touching counts as crossing).
+bool visible(std::span<const Segment> walls, glm::vec2 p, glm::vec2 q);
 // The nav mesh if there is one, else the road map, else the straight line.
 PlannedPath planPath(const NavMesh& mesh, const RoadMap& map, glm::vec2 start, glm::vec2 target,
                      float clearance = 0.0f);

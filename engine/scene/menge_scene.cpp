@@ -250,6 +250,8 @@ MengeSceneResult mengeScene(const menge::MengeScenario& s, const anim::ClipPair&
   setup.steering->avoidance.seed = uint32_t(seed);
   setup.steering->goals = mengeGoals(s, r.warnings);
   setup.steering->goals->seed = uint32_t(seed);
+  // Road maps route around the walls by visibility, as Menge's do.
+  setup.steering->goals->roadMap.walls = setup.walls.segments;
   for (const crowd::GoalSet& set : setup.steering->goals->goalSets)
     for (const crowd::Goal& goal : set.goals) growBounds(r, goal.center);
   return r;
