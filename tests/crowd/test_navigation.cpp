@@ -124,6 +124,33 @@ TEST_CASE("navigation: road maps by A*, and the straight line without a structur
   CHECK(path.partial);
   CHECK(path.points.back() == glm::vec2(5, 5));
   CHECK(crowd::planPath({}, {}, {1, 2}, {3, 4}).points == V{{1, 2}, {3, 4}});
+  // A target at the start (an agent told to stay) is not routed through a way point.
+  CHECK(crowd::planOnRoadMap(map, {1, 2}, {1, 2}).points == V{{1, 2}, {1, 2}});
+}
+
+TEST_CASE("navigation: road maps with walls route by visibility") {
+  // The bottleneck's shape: two blocks at |x| > 1 between z = -5 and 5, way points in the gap
+  // and one below the right block's corner.
+  crowd::RoadMap map = crowd::makeRoadMap({{-0.5f, -3}, {-0.5f, 3}, {1, -6}}, {{0, 1}, {0, 2}});
+  const auto block = [](float x0, float x1) {
+    return std::vector<crowd::Segment>{
+        {{x0, -5}, {x1, -5}}, {{x1, -5}, {x1, 5}}, {{x1, 5}, {x0, 5}}, {{x0, 5}, {x0, -5}}};
+  };
+  for (const std::vector<crowd::Segment>& b : {block(-30, -1), block(1, 30)})
+    map.walls.insert(map.walls.end(), b.begin(), b.end());
+  CHECK_FALSE(crowd::visible(map.walls, {-7.6f, -7}, {-0.5f, -3}));  // through the left block
+  CHECK(crowd::visible(map.walls, {-7.6f, -7}, {1, -6}));
+  CHECK(crowd::visible(map.walls, {0, -4}, {0, 4}));
+  // From below the left block: (-0.5, -3) is nearer but hidden, so (1, -6) first.
+  crowd::PlannedPath path = crowd::planOnRoadMap(map, {-7.6f, -7}, {-0.5f, 4});
+  CHECK(path.points == V{{-7.6f, -7}, {1, -6}, {-0.5f, -3}, {-0.5f, 3}, {-0.5f, 4}});
+  // A target in plain sight is walked to straight, past the way points.
+  CHECK(crowd::planOnRoadMap(map, {0, -4}, {0.5f, 4}).points == V{{0, -4}, {0.5f, 4}});
+  CHECK(crowd::planOnRoadMap(map, {-15, 7}, {-15, 7}).points == V{{-15, 7}, {-15, 7}});
+  // No wall: the graph is followed as before (nearest way points taken as visible).
+  map.walls.clear();
+  CHECK(crowd::planOnRoadMap(map, {-7.6f, -7}, {-0.5f, 4}).points ==
+        V{{-7.6f, -7}, {-0.5f, -3}, {-0.5f, 3}, {-0.5f, 4}});
 }
 
 TEST_CASE("navigation: the funnel keeps a straight line through aligned portals") {
