@@ -22,6 +22,7 @@ layout(std430, binding = kCoverageBindingJoints) readonly buffer Joints { JointM
 layout(std430, binding = kCoverageBindingMasks) buffer Masks { u64vec2 maskWords[]; };  // CoverageMask, global index, in/out
 layout(std430, binding = kCoverageBindingAreas) writeonly buffer Areas { float areas[]; };        // global index × 5
 layout(push_constant) uniform Push { CoveragePush push; };
+#include "coverage_mask.glsl"
 
 // The five part spheres' areas (areas output) and on-screen bits (state bits 0..4). The level
 // follows the projected height alone, so the frame's pass skips them; tests and figures ask.
@@ -51,19 +52,10 @@ void main() {
   uint i = push.firstCharacter + local;
   vec4 place = texelFetch(placementTexels, int(i));
   vec4 m = texelFetch(motionTexels, int(i));
-  float scale = characterScale(m);
-  u64vec2 words = maskWords[i];
-  uvec2 lohi = unpackUint2x32(words.x), levelState = unpackUint2x32(words.y);
-  CoverageMask previous = CoverageMask(lohi.x, lohi.y, levelState.x, levelState.y);
-  float height = parts.body.x * scale;
-  vec3 middle = cameraSpace(push.view, place.xyz + vec3(0.0, 0.5 * height, 0.0));
-  float h = projectedHeight(push.viewport, middle, height);
-  bool visible = bodyOnScreen(push.viewport, push.frustum, middle, height);
-  uint onScreen = (push.flags & kCoverageWriteAreas) != 0u ? measureParts(i, local, place, scale, previous) : 0u;
-  levelState = nextLevel(parts.body, levelHeights(parts.levels[1], parts.levels[2]), previous, m, h, visible);
-  uvec2 synthesized = uvec2(parts.offScreenLo, parts.offScreenHi);
-  if (visible && levelState.x == kLevelNear) synthesized = uvec2(parts.levels[2].synthLo, parts.levels[2].synthHi);
-  if (visible && levelState.x == kLevelMid) synthesized = uvec2(parts.levels[1].synthLo, parts.levels[1].synthHi);
-  if (visible && levelState.x == kLevelFar) synthesized = uvec2(parts.levels[0].synthLo, parts.levels[0].synthHi);
-  maskWords[i] = u64vec2(packUint2x32(synthesized), packUint2x32(uvec2(levelState.x, levelState.y | onScreen)));
+  CoverageMask previous = unpackMask(maskWords[i]);
+  float h;
+  bool visible;
+  bodyOnScreenHeight(push.view, push.viewport, push.frustum, place, m, h, visible);
+  uint onScreen = (push.flags & kCoverageWriteAreas) != 0u ? measureParts(i, local, place, characterScale(m), previous) : 0u;
+  maskWords[i] = nextMaskWords(previous, m, h, visible, onScreen);
 }

@@ -49,6 +49,15 @@ THRONG_STRUCT(CoveragePush) {
   uint flags;             // kCoverageReadJoints | kCoverageWriteAreas
 };
 
+// The camera of CoveragePush as a uniform block, for the root motion pass that does the frame's
+// coverage (root_motion_coverage.comp): the two pushes together pass the 128 bytes every device
+// allows (lavapipe allows no more), and one block serves every group of the frame.
+THRONG_STRUCT(CoverageView) {
+  mat4 view;
+  vec4 viewport;
+  vec4 frustum;
+};
+
 // One body part's bounding sphere (the paper's eqs. 1–9), measured for the areas output.
 THRONG_STRUCT(CoveragePart) {
   vec4 centre;            // xyz: mean character-space position of the centre joint; w: radius (m)

@@ -27,6 +27,11 @@ const uint kTexelsConstantInUniform = 583u;
 const uint kRootMotionBindingPlacement = 2u;  // vec4 per character as two 64-bit words
 const uint kRootMotionBindingMotion = 3u;     // vec4 per character as two 64-bit words
 const uint kRootMotionBindingCacheRequested = 4u;  // uint per bucket (a placeholder without cache)
+// root_motion_coverage.comp also: the group's CoverageParts (uniform), the masks (in/out) and
+// the frame's CoverageView (uniform).
+const uint kRootMotionBindingCoverageParts = 5u;
+const uint kRootMotionBindingMasks = 6u;
+const uint kRootMotionBindingCoverageView = 7u;
 const uint kRootMotionConstantJointCount = 0u;  // the texel row width
 
 // synth_pose.comp: blend, hierarchy and draw matrices per character.

@@ -24,10 +24,11 @@ double SynthesisTimer::frame(std::span<const synth::SynthPrograms* const> progra
   timestamps_.reset();
   gpu::beginCommands(cmd_);
   timestamps_.write(cmd_, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-  synth::recordRootMotionPasses(cmd_, programs, synth, dt, retarget);
+  const bool covered =
+      synth::recordRootMotionPasses(cmd_, programs, synth, dt, retarget, lodCamera);
   timestamps_.write(cmd_);
   synth::recordPosePasses(cmd_, programs, synth, context_.info().maxStorageBufferRange, lodCamera,
-                          &timestamps_);
+                          &timestamps_, covered);
   gpu::endCommands(cmd_);
   gpu::submit(context_, cmd_, fence_.get());
   fence_.wait();

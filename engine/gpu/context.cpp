@@ -268,6 +268,7 @@ void Context::choosePhysicalDevice(const ContextOptions& options) {
   info_.type = chosen.properties.deviceType;
   info_.timestampPeriodNs = limits.timestampPeriod;
   info_.maxStorageBufferRange = limits.maxStorageBufferRange;
+  info_.maxPushConstantsSize = limits.maxPushConstantsSize;
   info_.maxUniformBufferRange = limits.maxUniformBufferRange;
   info_.maxTexelBufferElements = limits.maxTexelBufferElements;
   info_.minStorageBufferOffsetAlignment = limits.minStorageBufferOffsetAlignment;

@@ -88,6 +88,8 @@ PipelineLayout makePipelineLayout(const Context& context, std::span<const Shader
     vkDestroyDescriptorSetLayout(device, l, nullptr);
   });
 
+  checkLimit(context, name + "'s push constants", "maxPushConstantsSize", out.pushConstantSize,
+             context.info().maxPushConstantsSize);
   VkPushConstantRange range{out.stages, 0, out.pushConstantSize};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 1;

@@ -32,13 +32,17 @@ void SynthesisStage::record(VkCommandBuffer cmd) const {
   gpu::throwIfInvalid("SynthesisStage", validate());
   // With walls, root motion is followed by the constraint that keeps characters off them, and
   // the pose passes see the constrained placement.
+  // Without walls root motion also does the coverage pass.
   scene->recordSavePositions(cmd);
-  synth::recordRootMotionPasses(cmd, scene->programs(), scene->synth(), step->dt, step->retarget);
+  const bool covered =
+      synth::recordRootMotionPasses(cmd, scene->programs(), scene->synth(), step->dt,
+                                    step->retarget, scene->hasWalls() ? nullptr : &lodCamera);
   if (scene->hasWalls()) {
     scene->recordWallConstraint(cmd);
     gpu::computeToComputeBarrier(cmd);
   }
-  synth::recordPosePasses(cmd, scene->programs(), scene->synth(), maxBindingBytes, &lodCamera);
+  synth::recordPosePasses(cmd, scene->programs(), scene->synth(), maxBindingBytes, &lodCamera,
+                          nullptr, covered);
 }
 
 std::vector<std::string> SecondaryStage::validate() const {

@@ -85,15 +85,24 @@ CoverageParts makeCoverageParts(const BodyParts& parts, const CoverageThresholds
   return out;
 }
 
-CoveragePush makeCoveragePush(const CoverageCamera& camera, uint32_t jointCount,
-                              uint32_t firstCharacter, uint32_t characterCount, uint32_t flags) {
-  CoveragePush push{};
+CoverageView coverageView(const CoverageCamera& camera) {
+  CoverageView push{};
   push.view = camera.view;
   const float f = camera.focalPixels, halfW = 0.5f * float(camera.width),
               halfH = 0.5f * float(camera.height);
   push.viewport = glm::vec4(float(camera.width), float(camera.height), f, camera.nearPlane);
   const float nx = std::sqrt(f * f + halfW * halfW), ny = std::sqrt(f * f + halfH * halfH);
   push.frustum = glm::vec4(f / nx, halfW / nx, f / ny, halfH / ny);
+  return push;
+}
+
+CoveragePush makeCoveragePush(const CoverageCamera& camera, uint32_t jointCount,
+                              uint32_t firstCharacter, uint32_t characterCount, uint32_t flags) {
+  const CoverageView view = coverageView(camera);
+  CoveragePush push{};
+  push.view = view.view;
+  push.viewport = view.viewport;
+  push.frustum = view.frustum;
   push.characterCount = characterCount;
   push.firstCharacter = firstCharacter;
   push.jointCount = jointCount;

@@ -25,7 +25,9 @@ using gpu_types::CoverageMask;
 using gpu_types::CoveragePart;
 using gpu_types::CoverageParts;
 using gpu_types::CoveragePush;
+using gpu_types::CoverageView;
 static_assert(sizeof(CoveragePush) == 112, "CoveragePush must match the GLSL push block");
+static_assert(sizeof(CoverageView) == 96, "CoverageView must match the GLSL std140 block");
 static_assert(sizeof(CoveragePart) == 32, "CoveragePart must match the GLSL std140 struct");
 static_assert(sizeof(CoverageLevel) == 32, "CoverageLevel must match the GLSL std140 struct");
 static_assert(sizeof(CoverageParts) == 1248, "CoverageParts must match the GLSL std140 block");
@@ -57,6 +59,8 @@ struct CoverageCamera {
 };
 CoverageCamera coverageCamera(const glm::mat4& view, float fovYDegrees, uint32_t width,
                               uint32_t height, float nearPlane);
+// The camera as the shaders take it: view, viewport (W, H, f, near) and side-plane normals.
+CoverageView coverageView(const CoverageCamera& camera);
 
 // The uniform buffer contents (skeleton, levels, thresholds) and the push constants (camera +
 // chunk). Throws Error on a negative or NaN threshold or hysteresis outside [0, 1).

@@ -103,6 +103,10 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context,
     synth.lod = true;
     std::vector<CoverageMask> none(std::max<size_t>(crowd.size(), 1), CoverageMask{});
     synth.masks = gpu::makeStorageBuffer<CoverageMask>(context, none);
+    synth.coverageView =
+        gpu::Buffer(context, sizeof(CoverageView),
+                    VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                    gpu::MemoryUse::DeviceLocal);
   }
   if (cache.enabled) allocateCacheLists(context, synth, crowd.size());
   return synth;
@@ -142,15 +146,30 @@ anim::SpeedRetarget SpeedSchedule::advance(float dt) {
 
 namespace {
 
-void recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
-                      const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget) {
+bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                      const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget,
+                      const CoverageCamera* lodCamera) {
+  const bool coverage = synth.lod && lodCamera;
+  if (coverage) {
+    // Last frame's passes have read the camera before it is replaced.
+    const CoverageView view = coverageView(*lodCamera);
+    gpu::computeToComputeBarrier(cmd);
+    vkCmdUpdateBuffer(cmd, synth.coverageView.get(), 0, sizeof(view), &view);
+    gpu::computeToComputeBarrier(cmd);
+  }
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
     RootMotionJob job{&g.motion, g.pair, &synth.crowd, g.first, g.count, dt, g.steering, retarget};
     job.cache = synth.cached() ? &g.cache : nullptr;  // its lookup step, done in the same pass
+    if (coverage) {
+      job.coverageView = &synth.coverageView;
+      job.coverageParts = &g.coverageParts;
+      job.masks = &synth.masks;
+    }
     job.record(cmd, *programs[k]);
   }
   gpu::computeToComputeBarrier(cmd);
+  return coverage;
 }
 
 // Sphere centres estimated from placement and the clip's mean pose: no dependency on this
@@ -248,22 +267,23 @@ uint32_t chunkCount(const CrowdSynth& synth, uint32_t chunk) {
 
 }  // namespace
 
-void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
-                            const CrowdSynth& synth, float dt,
-                            const anim::SpeedRetarget& retarget) {
+bool recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                            const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget,
+                            const CoverageCamera* lodCamera) {
   checkPrograms(programs, synth);
-  recordRootMotion(cmd, programs, synth, dt, retarget);
+  return recordRootMotion(cmd, programs, synth, dt, retarget, lodCamera);
 }
 
 void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                       const CrowdSynth& synth, VkDeviceSize maxBindingBytes,
-                      const CoverageCamera* lodCamera, gpu::TimestampPool* passMarks) {
+                      const CoverageCamera* lodCamera, gpu::TimestampPool* passMarks,
+                      bool coverageDone) {
   checkPrograms(programs, synth);
   auto mark = [&] {
     if (passMarks) passMarks->write(cmd);
   };
   const bool lod = synth.lod && lodCamera;
-  if (lod) recordCoverage(cmd, programs, synth, *lodCamera);
+  if (lod && !coverageDone) recordCoverage(cmd, programs, synth, *lodCamera);
   mark();
   const uint32_t chunk = poseChunk(synth, maxBindingBytes);
   if (synth.cached()) recordCacheClassify(cmd, programs, synth, chunk, chunkCount(synth, chunk));
@@ -278,8 +298,8 @@ void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
 void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                      const CrowdSynth& synth, float dt, VkDeviceSize maxBindingBytes,
                      const anim::SpeedRetarget& retarget, const CoverageCamera* lodCamera) {
-  recordRootMotionPasses(cmd, programs, synth, dt, retarget);
-  recordPosePasses(cmd, programs, synth, maxBindingBytes, lodCamera);
+  const bool covered = recordRootMotionPasses(cmd, programs, synth, dt, retarget, lodCamera);
+  recordPosePasses(cmd, programs, synth, maxBindingBytes, lodCamera, nullptr, covered);
 }
 
 void recordSynthesis(VkCommandBuffer cmd, const SynthPrograms& programs, const CrowdSynth& synth,

@@ -49,9 +49,11 @@ struct CrowdSynth {
   gpu::Buffer listCounts;      // one per chunk
   gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per chunk
   gpu::Buffer cacheData;       // every group's cache entries (makeCacheData)
-  // With LOD on: each character's mask.
+  // With LOD on: each character's mask, and the frame's camera for the root motion pass that
+  // does the coverage too (written at the start of the frame's root motion).
   bool lod = false;
   gpu::Buffer masks;
+  gpu::Buffer coverageView;        // uniform CoverageView
   std::vector<SynthGroup> groups;  // contiguous ranges, in order, covering every character
 
   const SynthGroup& front() const { return groups.front(); }
@@ -88,13 +90,17 @@ void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> 
 // where root motion moved the characters, e.g. walls): root motion of every group (with the
 // cache on, also the cache's lookup step), then a barrier; then coverage, the rest of the motion
 // cache and pose. recordPosePasses needs recordRootMotionPasses before it in the same frame.
-void recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+// With LOD on and `lodCamera` given to recordRootMotionPasses, root motion also does the
+// coverage pass (one pass fewer) and returns true: pass that on as `coverageDone`. Give it no
+// camera when work between the halves moves characters.
+bool recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                             const CrowdSynth& synth, float dt,
-                            const anim::SpeedRetarget& retarget = {});
+                            const anim::SpeedRetarget& retarget = {},
+                            const CoverageCamera* lodCamera = nullptr);
 void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                       const CrowdSynth& synth, VkDeviceSize maxBindingBytes,
                       const CoverageCamera* lodCamera = nullptr,
-                      gpu::TimestampPool* passMarks = nullptr);
+                      gpu::TimestampPool* passMarks = nullptr, bool coverageDone = false);
 // With `passMarks`, recordPosePasses writes three timestamps, after the coverage pass, after the
 // motion cache's passes and after the pose pass (each whether or not the pass ran), so a bench
 // can say where a frame's synthesis goes.

@@ -74,6 +74,8 @@ std::vector<uint32_t> rootMotionSpecialization(const anim::MotionPair& pair,
 SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair& pair)
     : rootMotion(context, "root_motion.comp",
                  rootMotionSpecialization(pair, uniformTexelCapacity(context))),
+      rootMotionCoverage(context, "root_motion_coverage.comp",
+                         rootMotionSpecialization(pair, uniformTexelCapacity(context))),
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       poseMasked(context, "synth_pose.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context), true)),
@@ -205,6 +207,14 @@ std::vector<std::string> RootMotionJob::validate() const {
     problems.push_back("clip durations must be positive");
   if (cache && cache->options.enabled && (!cache->requested || cache->bucketCount == 0))
     problems.push_back("output 'cache' has no requested buckets");
+  const bool coverage = coverageView || coverageParts || masks;
+  if (coverage &&
+      (!coverageView || !*coverageView || !coverageParts || !*coverageParts || !masks || !*masks))
+    problems.push_back("the coverage pass needs 'coverageView', 'coverageParts' and 'masks'");
+  if (coverage && crowd && masks && *masks &&
+      masks->size() < VkDeviceSize(crowd->count) * sizeof(CoverageMask))
+    problems.push_back(concat("buffer 'masks' holds ", masks->size(), " bytes, ",
+                              VkDeviceSize(crowd->count) * sizeof(CoverageMask), " needed"));
   return problems;
 }
 
@@ -229,7 +239,19 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
       gpu::storageBinding(gpu_types::kRootMotionBindingCacheRequested,
                           lookup ? cache->requested : crowd->motion),
   };
-  gpu::dispatch(cmd, programs.rootMotion, bindings, push, push.characterCount);
+  if (!coverageView) {
+    gpu::dispatch(cmd, programs.rootMotion, bindings, push, push.characterCount);
+    return;
+  }
+  gpu::Binding withCoverage[std::size(bindings) + 3];
+  std::copy(std::begin(bindings), std::end(bindings), withCoverage);
+  withCoverage[std::size(bindings)] = gpu::uniformBinding(
+      gpu_types::kRootMotionBindingCoverageParts, *coverageParts, 0, sizeof(CoverageParts));
+  withCoverage[std::size(bindings) + 1] =
+      gpu::storageBinding(gpu_types::kRootMotionBindingMasks, *masks);
+  withCoverage[std::size(bindings) + 2] = gpu::uniformBinding(
+      gpu_types::kRootMotionBindingCoverageView, *coverageView, 0, sizeof(CoverageView));
+  gpu::dispatch(cmd, programs.rootMotionCoverage, withCoverage, push, push.characterCount);
 }
 
 std::vector<std::string> PoseJob::validate() const {

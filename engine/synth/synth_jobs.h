@@ -8,6 +8,7 @@
 #include "anim/reference_synth.h"
 #include "crowd/crowd.h"
 #include "gpu/program.h"
+#include "synth/coverage.h"
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
 
@@ -17,6 +18,7 @@ namespace throng::synth {
 // skeleton (joint count and parent array are baked in), so build one per skeleton topology.
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
+  gpu::ComputeProgram rootMotionCoverage;  // root motion that does the frame's coverage too
   gpu::ComputeProgram pose;
   gpu::ComputeProgram poseMasked;  // the same with the coverage-LOD joint masks
   gpu::ComputeProgram cacheInsert;
@@ -48,6 +50,12 @@ struct RootMotionJob {
   // Optional output: with an enabled cache, each character's bucket is flagged as requested
   // (the cache's lookup step, before CacheJob's insert and fill).
   const GpuMotionCache* cache = nullptr;
+  // Optional: the frame's coverage LOD pass done in the same pass (CoverageJob without areas)
+  // for the characters just moved: each one's mask in `masks` from the group's `coverageParts`
+  // seen by the camera in `coverageView` (this frame's, written before the pass).
+  const gpu::Buffer* coverageView = nullptr;   // input: uniform CoverageView
+  const gpu::Buffer* coverageParts = nullptr;  // input: uniform CoverageParts
+  const gpu::Buffer* masks = nullptr;          // input/output: CoverageMask per character
 
   std::vector<std::string> validate() const;
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;

@@ -289,3 +289,54 @@ TEST_CASE("coverage LOD in the synthesis: thresholds 0 equal the full path; mask
   CHECK(levels[0] + levels[1] > 0);
   CHECK(ctx.validationMessageCount() == 0);
 }
+
+TEST_CASE("coverage LOD done by the root motion pass equals the coverage pass, mask for mask") {
+  gpu::Context& ctx = test::gpuContext();
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  crowd::ScenarioOptions options;
+  options.characters = 900;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  synth::SynthPrograms programs(ctx, pair);
+  const synth::LodOptions lodOptions{true, {}, &clips.slow.skeleton};
+  synth::CrowdSynth separate = synth::makeCrowdSynth(ctx, pair, crowd, {}, lodOptions);
+  synth::CrowdSynth fused = synth::makeCrowdSynth(ctx, pair, crowd, {}, lodOptions);
+  const synth::SynthPrograms* one[] = {&programs};
+  size_t levelChanges = 0;
+  std::vector<synth::CoverageMask> before(crowd.size());
+  for (int f = 0; f < 45; ++f) {
+    // The camera walks in and turns, so characters change level and leave or enter the view.
+    const glm::vec3 eye(4.0f * std::sin(0.1f * f), 20.0f - 0.3f * f, -40.0f + 0.6f * f);
+    const glm::mat4 view = glm::lookAt(eye, glm::vec3(0.3f * f, 0, 0), glm::vec3(0, 1, 0));
+    const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+    bool covered = false;
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      CHECK(!synth::recordRootMotionPasses(cmd, one, separate, 1 / 30.0f));
+      synth::recordPosePasses(cmd, one, separate, 1u << 27, &camera);
+      covered = synth::recordRootMotionPasses(cmd, one, fused, 1 / 30.0f, {}, &camera);
+      synth::recordPosePasses(cmd, one, fused, 1u << 27, &camera, nullptr, covered);
+    });
+    REQUIRE(covered);
+    auto a = gpu::readback<synth::CoverageMask>(ctx, separate.masks, crowd.size());
+    auto b = gpu::readback<synth::CoverageMask>(ctx, fused.masks, crowd.size());
+    REQUIRE(std::memcmp(a.data(), b.data(), a.size() * sizeof(synth::CoverageMask)) == 0);
+    for (size_t i = 0; i < crowd.size(); ++i) levelChanges += f > 0 && a[i].level != before[i].level;
+    before = a;
+  }
+  // The joints this frame's masks asked for (the others hold whatever was there before).
+  const size_t joints = pair.jointCount(), n = crowd.size() * joints;
+  auto a = gpu::readback<synth::JointMatrix>(ctx, separate.joints, n);
+  auto b = gpu::readback<synth::JointMatrix>(ctx, fused.joints, n);
+  size_t compared = 0, different = 0;
+  for (size_t i = 0; i < crowd.size(); ++i)
+    for (size_t j = 0; j < joints; ++j)
+      if (synth::maskBits(before[i]) >> j & 1) {
+        ++compared;
+        different += std::memcmp(&a[i * joints + j], &b[i * joints + j], sizeof(a[0])) != 0;
+      }
+  CHECK(compared > n / 4);
+  CHECK(different == 0);
+  MESSAGE("45 frames of a moving camera: ", levelChanges, " level changes, masks equal");
+  CHECK(levelChanges > 50);
+  CHECK(ctx.validationMessageCount() == 0);
+}
