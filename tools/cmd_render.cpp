@@ -226,9 +226,10 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
                 median(synthMs), median(renderMs), context.info().name.c_str());
   const FrameOutputStats encoded = output.stats();
   std::printf(
-      "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on a worker, %.2f ms per "
-      "frame waiting for it\n",
-      wallMs, encoded.encodeMs / o.frames, encoded.waitedMs / o.frames);
+      "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on %d worker%s, %.2f ms "
+      "per frame waiting for them\n",
+      wallMs, encoded.encodeMs / o.frames, encoded.workers, encoded.workers == 1 ? "" : "s",
+      encoded.waitedMs / o.frames);
   if (trajectories.enabled())
     std::printf("trajectories of %u agents over %d frames written to %s\n", scene.count(), o.frames,
                 o.scene.trajectoriesOut.c_str());

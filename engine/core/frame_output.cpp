@@ -1,5 +1,6 @@
 #include "core/frame_output.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -11,6 +12,13 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }
+
+// Half the hardware threads (the other half renders: on a CPU device it is the device), 1 to 8.
+int workerCount(const FrameOutputOptions& options) {
+  if (options.video) return 1;
+  if (options.workers > 0) return std::min(options.workers, 8);
+  return std::clamp(int(std::thread::hardware_concurrency() / 2), 1, 8);
+}
 }  // namespace
 
 FrameOutput::FrameOutput(const FrameOutputOptions& options) : options_(options) {
@@ -18,7 +26,9 @@ FrameOutput::FrameOutput(const FrameOutputOptions& options) : options_(options) 
     fail("frame output: queue depth ", options_.queueDepth, " is outside 1..64");
   if (options_.video)
     video_.emplace(*options_.video, VideoOptions{options_.width, options_.height, options_.fps});
-  worker_ = std::thread([this] { run(); });
+  stats_.workers = workerCount(options_);
+  options_.queueDepth = std::max(options_.queueDepth, stats_.workers + 1);  // every worker busy
+  for (int k = 0; k < stats_.workers; ++k) workers_.emplace_back([this] { run(); });
 }
 
 FrameOutput::~FrameOutput() {
@@ -28,8 +38,13 @@ FrameOutput::~FrameOutput() {
     queue_.clear();
   }
   changed_.notify_all();
-  if (worker_.joinable()) worker_.join();
+  joinWorkers();
   video_.reset();  // an unfinished video's temporary file is removed
+}
+
+void FrameOutput::joinWorkers() {
+  for (std::thread& worker : workers_)
+    if (worker.joinable()) worker.join();
 }
 
 void FrameOutput::rethrow() {
@@ -58,7 +73,7 @@ void FrameOutput::finish() {
     closing_ = true;
   }
   changed_.notify_all();
-  if (worker_.joinable()) worker_.join();
+  joinWorkers();
   std::lock_guard lock(mutex_);
   rethrow();
   if (video_) {
@@ -81,22 +96,22 @@ void FrameOutput::run() {
       if (queue_.empty() || error_) return;
       job = std::move(queue_.front());
       queue_.pop_front();
-      inFlight_ = 1;  // the slot frees only once the frame is encoded: depth bounds memory
+      ++inFlight_;  // the slot frees only once the frame is encoded: depth bounds memory
     }
     auto start = std::chrono::steady_clock::now();
     try {
       encode(job);
     } catch (...) {
       std::lock_guard lock(mutex_);
-      error_ = std::current_exception();
-      inFlight_ = 0;
+      if (!error_) error_ = std::current_exception();
+      --inFlight_;
       queue_.clear();
       changed_.notify_all();
       return;
     }
     {
       std::lock_guard lock(mutex_);
-      inFlight_ = 0;
+      --inFlight_;
       stats_.encodeMs += millisecondsSince(start);
       ++stats_.frames;
     }

@@ -1,8 +1,9 @@
 #pragma once
-// Where rendered frames go: numbered PNG files and/or an MP4 video, encoded on a worker thread
+// Where rendered frames go: numbered PNG files and/or an MP4 video, encoded on worker threads
 // so that encoding never sits on the frame loop's timing path. The queue between the frame loop
-// and the worker holds at most `queueDepth` frames: a loop that outruns the encoder waits for a
-// free slot (bounded memory) and the time it waits is reported.
+// and the workers holds at most `queueDepth` frames: a loop that outruns the encoders waits for
+// a free slot (bounded memory) and the time it waits is reported. PNG files are independent, so
+// several workers encode them at once; a video takes its frames in order, from one worker.
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -11,6 +12,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <vector>
 
 #include "core/image.h"
 #include "core/video_writer.h"
@@ -23,11 +25,13 @@ struct FrameOutputOptions {
   int width = 0, height = 0;
   double fps = 30.0;
   int queueDepth = 3;
+  int workers = 0;  // PNG encoders (1 with a video); 0: half the hardware threads, 1 to 8
 };
 
 struct FrameOutputStats {
   int frames = 0;
-  double encodeMs = 0.0;  // the worker's time, all frames
+  double encodeMs = 0.0;  // the workers' time, all frames (summed over workers)
+  int workers = 1;
   double waitedMs = 0.0;  // the frame loop's time waiting for a free queue slot
 };
 
@@ -52,17 +56,18 @@ class FrameOutput {
   void run();
   void encode(const Job& job);
   void rethrow();
+  void joinWorkers();
 
   FrameOutputOptions options_;
   std::optional<VideoWriter> video_;
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Job> queue_;
-  int inFlight_ = 0;  // frames taken by the worker and not yet encoded
+  int inFlight_ = 0;  // frames taken by a worker and not yet encoded
   bool closing_ = false;
   std::exception_ptr error_;
   FrameOutputStats stats_;
-  std::thread worker_;
+  std::vector<std::thread> workers_;
 };
 
 }  // namespace throng
