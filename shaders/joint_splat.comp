@@ -8,8 +8,9 @@
 // at the same joint, so a level's undrawn joints cost its lanes nothing, and the character's
 // mask, tint and pose source are read once). Each drawn joint's ellipsoid gets its screen box
 // and reserves a sprite and one pixel entry per pixel of the box for joint_splat_pixels.comp,
-// which ray-casts them one pixel per invocation. A far character a few pixels tall reserves one
-// sprite for its whole body instead (joint_far_body.glsl). A joint whose reservation does not
+// which ray-casts them one pixel per invocation. A far character a few pixels tall is one
+// ellipsoid (joint_far_body.glsl) ray-cast here over its box, its entries naming the pixels it
+// hit. A joint whose reservation does not
 // fit ray-casts its own pixels here (looping over the box). Joints wider than push.maxPixels
 // are listed for an indirect draw by the graphics pipeline instead. CPU twin:
 // render::splatJointsCpu over render::splattedJointMatrices.
@@ -34,6 +35,34 @@ layout(std430, binding = kRenderBindingSprites) writeonly buffer Sprites { Splat
 layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { uint owners[]; };
 layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
 
+// Pixels whose centres lie inside the sprite's bounding box; false when there are none.
+bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
+  lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
+  hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
+  return hi.x >= lo.x && hi.y >= lo.y;
+}
+
+// One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
+// joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
+// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities. Every
+// entry reserved below the pixel capacity gets an owner, a sentinel when the entries are not kept.
+uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits) {
+  uint spriteBase = 0u, firstBase = 0u;
+  uint spriteTotal = subgroupAdd(spriteCount), pixelTotal = subgroupAdd(pixelCount);
+  if (subgroupElect()) {
+    spriteBase = spriteTotal > 0u ? atomicAdd(counters.sprites, spriteTotal) : 0u;
+    firstBase = atomicAdd(counters.pixels, pixelTotal);
+  }
+  sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(spriteCount);
+  uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
+  fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
+  if (!fits) {
+    uint owned = first < kPixelCapacity ? min(pixelCount, kPixelCapacity - first) : 0u;
+    for (uint i = 0u; i < owned; ++i) owners[first + i] = kSplatNoSprite;
+  }
+  return first;
+}
+
 // Joint `joint` (chunk-local) as sprite s: listed for the draw when too wide, else its box's
 // pixels reserved for the pixel pass (or splatted here when the work lists are full).
 void splatSprite(uint joint, JointSprite s, vec3 tint) {
@@ -42,32 +71,38 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     nearList[push.listBase + slot] = joint;
     return;
   }
-  // Pixels whose centres lie inside the bounding box.
-  ivec2 lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
-  ivec2 hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
-  if (hi.x < lo.x || hi.y < lo.y) return;
+  ivec2 lo, hi;
+  if (!spriteBox(s, lo, hi)) return;
   uint boxWidth = uint(hi.x - lo.x + 1);
   uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
-  // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
-  // joint on two shared counters: lavapipe runs a lane's atomics one at a time.
-  uint spriteBase = 0u, firstBase = 0u;
-  uint spriteTotal = subgroupAdd(1u), pixelTotal = subgroupAdd(pixelCount);
-  if (subgroupElect()) {
-    spriteBase = atomicAdd(counters.sprites, spriteTotal);
-    firstBase = atomicAdd(counters.pixels, pixelTotal);
-  }
-  uint sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(1u);
-  uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
-  bool fits = sprite < kSpriteCapacity && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
-  // Every entry reserved below the capacity gets an owner, a sentinel when the sprite is not kept.
-  uint owned = first < kPixelCapacity ? min(pixelCount, kPixelCapacity - first) : 0u;
-  for (uint i = 0u; i < owned; ++i) owners[first + i] = fits ? sprite : kSplatNoSprite;
+  uint sprite;
+  bool fits;
+  uint first = reserveEntries(1u, pixelCount, sprite, fits);
   if (fits) {
+    for (uint i = 0u; i < pixelCount; ++i) owners[first + i] = sprite;
     sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, first));
     return;
   }
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+}
+
+// A far body: a few pixels, all of similar size across the lanes, so they are ray-cast here
+// rather than through a sprite; their entries name the pixels hit for the resolve.
+void splatBody(JointSprite s, vec3 tint) {
+  ivec2 lo, hi;
+  if (!spriteBox(s, lo, hi)) return;
+  uint boxWidth = uint(hi.x - lo.x + 1);
+  uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
+  uint sprite;
+  bool fits;
+  uint first = reserveEntries(0u, pixelCount, sprite, fits);
+  uint i = 0u;
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x, ++i) {
+      bool hit = splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+      if (fits) owners[first + i] = hit ? (uint(y) * uint(frame.viewport.x) + uint(x)) | kSplatPixelEntry : kSplatNoSprite;
+    }
 }
 
 void main() {
@@ -83,7 +118,7 @@ void main() {
   CharacterPose pose = characterPose(character, push.flags);
   JointSprite body;
   if (farBody(pose, base, push.flags, mask, frame, body) && body.sizePx <= push.maxPixels) {
-    splatSprite(base, body, tint);
+    splatBody(body, tint);
     return;
   }
   uvec2 bones = uvec2(push.boneLo, push.boneHi);

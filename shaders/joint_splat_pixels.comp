@@ -6,7 +6,7 @@
 // its sprite's ellipsoid through that pixel, so neighbouring lanes do equal work whatever the
 // sprites' sizes. A fixed number of workgroups strides over the entries, so the pass needs no
 // indirect arguments. Each entry is left holding its pixel's index (kSplatNoSprite on a miss) for
-// joint_splat_resolve.comp. CPU twin: render::splatJointsCpu.
+// joint_splat_resolve.comp; a far body's entries (kSplatPixelEntry) already do. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -24,7 +24,7 @@ void main() {
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
     uint owner = owners[entry];
-    if (owner == kSplatNoSprite) continue;
+    if (owner == kSplatNoSprite || (owner & kSplatPixelEntry) != 0u) continue;  // none, or a far body's pixel
     SplatSprite s = sprites[owner];
     // The entry's row in the box by a float division: exact for boxes this small (fewer than
     // 2^16 entries), and lavapipe divides integers one lane at a time.

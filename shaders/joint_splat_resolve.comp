@@ -32,8 +32,9 @@ void main() {
   uint total = min(pixelCount, kPixelCapacity);
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
-    uint i = owners[entry];  // the pixel joint_splat_pixels.comp hit, or none
+    uint i = owners[entry];  // the pixel joint_splat_pixels.comp (or a far body) hit, or none
     if (i == kSplatNoSprite) continue;
+    i &= ~kSplatPixelEntry;
     uint64_t v = visibility[i];
     if (v == 0xFFFFFFFFFFFFFFFFul) continue;
     uint depthBits = uint(v >> 32);

@@ -40,13 +40,16 @@ const uint kSplatSpriteCapacity = 262144u;
 const uint kSplatSpriteBytes = 80u;          // SplatSprite
 const uint kSplatPixelCapacity = 4194304u;   // 4 Mi pixel entries (a 1280×720 frame 4.5 times)
 const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
+// A pixel entry the joint pass ray-cast itself (a far body): the pixel's index with this bit,
+// which the pixel pass leaves alone and the resolve takes off.
+const uint kSplatPixelEntry = 0x80000000u;
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on
 // screen is splatted as one ellipsoid its standing height tall and kFarBodyWidth of it across
 // (specialization constant 2 of joint_splat.comp; 0 draws every character by its joints).
 const float kSplatFarBodyPixels = 12.0;
-const float kFarBodyWidth = 0.17;
+const float kFarBodyWidth = 0.08;
 
 #ifdef __cplusplus
 }  // namespace throng::gpu_types
