@@ -63,11 +63,15 @@ ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int fr
       synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
   SynthesisTimer timer(context);
   std::vector<double> oneMs, fourMs, ratios;
+  std::vector<SynthesisPassTimes> onePasses, fourPasses;
   for (int f = 0; f < warmup + frames; ++f) {
     // Interleaved: both see the same moments of machine load.
     const double a = timer.frame(one->programs(), one->synth(), kDt, {}, &camera);
+    const SynthesisPassTimes aPasses = timer.lastPasses();
     const double b = timer.frame(four->programs(), four->synth(), kDt, {}, &camera);
     if (f < warmup) continue;
+    onePasses.push_back(aPasses);
+    fourPasses.push_back(timer.lastPasses());
     oneMs.push_back(a);
     fourMs.push_back(b);
     ratios.push_back(b / a);
@@ -78,6 +82,8 @@ ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int fr
   r.oneSetMs = median(oneMs);
   r.fourSetsMs = median(fourMs);
   r.ratioMedian = median(ratios);
+  r.onePasses = medianPasses(onePasses);
+  r.fourPasses = medianPasses(fourPasses);
   r.ratioMin = *std::min_element(ratios.begin(), ratios.end());
   r.ratioMax = *std::max_element(ratios.begin(), ratios.end());
   return r;

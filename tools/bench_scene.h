@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "gpu/context.h"
+#include "synthesis_timer.h"
 
 namespace throng::tools {
 
@@ -15,6 +16,7 @@ struct ClipSetBenchResult {
   double oneSetMs = 0.0;                                     // synthesis, median
   double fourSetsMs = 0.0;                                   // synthesis, median
   double ratioMedian = 0.0, ratioMin = 0.0, ratioMax = 0.0;  // per-frame pairs four / one
+  SynthesisPassTimes onePasses, fourPasses;                  // medians of each pass
 };
 
 ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t characters, int frames,

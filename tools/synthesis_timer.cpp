@@ -1,6 +1,19 @@
 #include "synthesis_timer.h"
 
+#include "stats.h"
+
 namespace throng::tools {
+
+SynthesisPassTimes medianPasses(const std::vector<SynthesisPassTimes>& frames) {
+  auto of = [&](double SynthesisPassTimes::*field) {
+    std::vector<double> v;
+    for (const SynthesisPassTimes& t : frames) v.push_back(t.*field);
+    return median(v);
+  };
+  return {of(&SynthesisPassTimes::total), of(&SynthesisPassTimes::rootMotion),
+          of(&SynthesisPassTimes::coverage), of(&SynthesisPassTimes::cache),
+          of(&SynthesisPassTimes::pose)};
+}
 
 SynthesisTimer::SynthesisTimer(const gpu::Context& context)
     : context_(context),

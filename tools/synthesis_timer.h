@@ -1,6 +1,8 @@
 #pragma once
 // One synthesis frame recorded, submitted and timed with GPU timestamps: the loop body that the
 // bench rows and the paper's experiments share.
+#include <vector>
+
 #include "anim/reference_synth.h"
 #include "gpu/commands.h"
 #include "gpu/timestamps.h"
@@ -12,6 +14,9 @@ namespace throng::tools {
 struct SynthesisPassTimes {
   double total = 0.0, rootMotion = 0.0, coverage = 0.0, cache = 0.0, pose = 0.0;
 };
+
+// The median of each pass over frames.
+SynthesisPassTimes medianPasses(const std::vector<SynthesisPassTimes>& frames);
 
 class SynthesisTimer {
  public:
