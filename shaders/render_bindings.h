@@ -30,6 +30,8 @@ const uint kRenderBindingSplatCounters = 15u;  // sprites and pixels reserved th
 const uint kRenderBindingGroundPlanes = 16u;  // ground.comp: colour plane, depth plane
 const uint kRenderBindingFramePlanes = 17u;   // joint_splat_resolve.comp: the frame's planes
 const uint kRenderBindingResolveDraw = 18u;   // its VkDrawIndirectCommand for the fragment resolve
+const uint kRenderBindingWalkList = 19u;      // characters whose joints are splatted, per chunk
+const uint kRenderBindingWalkCounts = 20u;    // how many, a uint per chunk
 
 // The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
 // pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own
@@ -44,6 +46,7 @@ const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
 // which the pixel pass leaves alone and the resolve takes off.
 const uint kSplatPixelEntry = 0x80000000u;
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
+const uint kSplatWalkGroups = 256u;          // at most, of the joint walk per chunk (grid-stride)
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on
 // screen is splatted as one ellipsoid its standing height tall and kFarBodyWidth of it across

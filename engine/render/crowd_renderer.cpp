@@ -120,6 +120,16 @@ void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
     if (nearList_) retiredVisibility_.emplace_back(std::move(nearList_), kFramesInFlight + 1);
     nearList_ = gpu::Buffer(*context_, listBytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   }
+  const VkDeviceSize walkBytes = std::max<VkDeviceSize>(16, VkDeviceSize(characterCount) * 4);
+  if (!walkList_ || walkList_.size() < walkBytes) {
+    if (walkList_) retiredVisibility_.emplace_back(std::move(walkList_), kFramesInFlight + 1);
+    walkList_ = gpu::Buffer(*context_, walkBytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  }
+  if (!walkCounts_ || walkCounts_.size() < chunks * 4) {
+    if (walkCounts_) retiredVisibility_.emplace_back(std::move(walkCounts_), kFramesInFlight + 1);
+    walkCounts_ = gpu::Buffer(*context_, std::max<VkDeviceSize>(16, chunks * 4), gpu::kStorageUsage,
+                              gpu::MemoryUse::DeviceLocal);
+  }
   if (!draws_ || draws_.size() < drawBytes) {
     if (draws_) retiredVisibility_.emplace_back(std::move(draws_), kFramesInFlight + 1);
     draws_ =
@@ -166,6 +176,8 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
                  &splatLists_.sprites,
                  &splatLists_.pixelOwners,
                  &splatLists_.counters};
+    job.walkList = &walkList_;
+    job.walkCounts = &walkCounts_;
     job.record(cmd, splat_);
     return &visibility_;
   }

@@ -93,6 +93,8 @@ class CrowdRenderer {
   gpu::Buffer visibility_;
   gpu::Buffer draws_;        // indirect draws of the joints too wide to splat, one per chunk
   gpu::Buffer nearList_;     // their indices
+  gpu::Buffer walkList_;     // characters whose joints the splat walks
+  gpu::Buffer walkCounts_;   // how many, per chunk
   gpu::Buffer noMasks_;      // bound when no LOD masks are given
   gpu::Buffer noLodLevels_;  // the uniform bound when no LOD levels are given
   void ensureLists(uint32_t characterCount, uint32_t jointCount);

@@ -35,6 +35,7 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapa
   const uint32_t capacities[] = {spriteCapacity, pixelCapacity};
   const uint32_t splat[] = {spriteCapacity, pixelCapacity, std::bit_cast<uint32_t>(farBodyPixels)};
   return {gpu::ComputeProgram(context, "joint_splat.comp", splat),
+          gpu::ComputeProgram(context, "joint_splat_walk.comp", splat),
           gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities),
           gpu::ComputeProgram(context, "joint_splat_resolve.comp", capacities)};
 }
@@ -97,7 +98,53 @@ std::vector<std::string> SplatJob::validate() const {
   checkList(sprites, "sprites", VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes);
   checkList(pixelOwners, "pixelOwners", VkDeviceSize(pixelCapacity) * 4u);
   checkList(counters, "counters", 16);
+  checkList(walkList, "walkList", std::max<VkDeviceSize>(4, VkDeviceSize(characterCount) * 4u));
+  checkList(walkCounts, "walkCounts", std::max<VkDeviceSize>(4, chunks * 4u));
   return problems;
+}
+
+void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program,
+                           const JointChunk& chunk, size_t c, uint32_t invocations) const {
+  const VkDeviceSize pixels = VkDeviceSize(width) * height;
+  const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
+  SplatPush push{jointCount,
+                 chunk.firstCharacter,
+                 chunk.characterCount * jointCount,
+                 maxPixels,
+                 static_cast<uint32_t>(c),
+                 chunk.firstCharacter * jointCount,
+                 flags,
+                 0,
+                 uint32_t(drawnBones),
+                 uint32_t(drawnBones >> 32)};
+  gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kRenderBindingJoints, *joints,
+                          chunk.firstCharacter * perCharacter, chunk.characterCount * perCharacter),
+      gpu::uniformBinding(gpu_types::kRenderBindingFrame, *frameUniforms),
+      gpu::storageBinding(gpu_types::kRenderBindingVisibility, *visibility, 0,
+                          pixels * sizeof(uint64_t)),
+      gpu::storageBinding(gpu_types::kRenderBindingDraws, *draws),
+      gpu::storageBinding(gpu_types::kRenderBindingNearList, *nearList),
+      gpu::storageBinding(gpu_types::kRenderBindingMasks, *masks),
+      gpu::storageBinding(gpu_types::kRenderBindingPlacement, *cachedPoses.placement),
+      gpu::storageBinding(gpu_types::kRenderBindingMotion, *cachedPoses.motion),
+      gpu::storageBinding(gpu_types::kRenderBindingPoseSource, *cachedPoses.poseSource),
+      gpu::storageBinding(gpu_types::kRenderBindingCacheData, *cachedPoses.cacheData),
+      gpu::storageBinding(gpu_types::kRenderBindingGroups, groups ? *groups : *masks),
+      gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
+                          sizeof(gpu_types::CoverageParts)),
+      gpu::storageBinding(gpu_types::kRenderBindingSprites, *sprites),
+      gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
+      gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
+      gpu::storageBinding(gpu_types::kRenderBindingWalkList, *walkList),
+      gpu::storageBinding(gpu_types::kRenderBindingWalkCounts, *walkCounts),
+  };
+  // The two passes share the bindings; each is given the ones it declares.
+  std::vector<gpu::Binding> declared;
+  for (const gpu::Binding& b : bindings)
+    for (const gpu::ReflectedBinding& r : program.reflection().bindings)
+      if (r.binding == b.slot) declared.push_back(b);
+  gpu::dispatch(cmd, program, declared, push, invocations ? invocations : chunk.characterCount);
 }
 
 void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const {
@@ -110,6 +157,7 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   if (timer) timer->mark(cmd, "setup");
   vkCmdFillBuffer(cmd, visibility->get(), 0, pixels * sizeof(uint64_t), 0xFFFFFFFFu);
   vkCmdFillBuffer(cmd, counters->get(), 0, 16, 0u);
+  vkCmdFillBuffer(cmd, walkCounts->get(), 0, VK_WHOLE_SIZE, 0u);
   if (timer) timer->mark(cmd, "clear");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   const std::vector<JointChunk> chunks =
@@ -122,41 +170,16 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
     vkCmdUpdateBuffer(cmd, draws->get(), offset * 4, words * 4, emptyDraws.data() + offset);
   }
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
+  // Per chunk: far bodies and the walk list, then (after a barrier) the listed characters'
+  // joints, each dispatch striding over its list.
+  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.joints, chunks[c], c, 0);
+  if (timer) timer->mark(cmd, "splat-bodies");
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   for (size_t c = 0; c < chunks.size(); ++c) {
-    const JointChunk& chunk = chunks[c];
-    SplatPush push{jointCount,
-                   chunk.firstCharacter,
-                   chunk.characterCount * jointCount,
-                   maxPixels,
-                   static_cast<uint32_t>(c),
-                   chunk.firstCharacter * jointCount,
-                   flags,
-                   0,
-                   uint32_t(drawnBones),
-                   uint32_t(drawnBones >> 32)};
-    gpu::Binding bindings[] = {
-        gpu::storageBinding(gpu_types::kRenderBindingJoints, *joints,
-                            chunk.firstCharacter * perCharacter,
-                            chunk.characterCount * perCharacter),
-        gpu::uniformBinding(gpu_types::kRenderBindingFrame, *frameUniforms),
-        gpu::storageBinding(gpu_types::kRenderBindingVisibility, *visibility, 0,
-                            pixels * sizeof(uint64_t)),
-        gpu::storageBinding(gpu_types::kRenderBindingDraws, *draws),
-        gpu::storageBinding(gpu_types::kRenderBindingNearList, *nearList),
-        gpu::storageBinding(gpu_types::kRenderBindingMasks, *masks),
-        gpu::storageBinding(gpu_types::kRenderBindingPlacement, *cachedPoses.placement),
-        gpu::storageBinding(gpu_types::kRenderBindingMotion, *cachedPoses.motion),
-        gpu::storageBinding(gpu_types::kRenderBindingPoseSource, *cachedPoses.poseSource),
-        gpu::storageBinding(gpu_types::kRenderBindingCacheData, *cachedPoses.cacheData),
-        gpu::storageBinding(gpu_types::kRenderBindingGroups, groups ? *groups : *masks),
-        gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
-                            sizeof(gpu_types::CoverageParts)),
-        gpu::storageBinding(gpu_types::kRenderBindingSprites, *sprites),
-        gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
-        gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
-    };
-    gpu::dispatch(cmd, programs.joints, bindings, push, chunk.characterCount);
+    const uint32_t groups =
+        std::min((chunks[c].characterCount + 63u) / 64u, gpu_types::kSplatWalkGroups);
+    recordChunk(cmd, programs.walk, chunks[c], c, groups * programs.walk.localSizeX());
   }
   if (timer) timer->mark(cmd, "splat-joints");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,

@@ -38,11 +38,12 @@ struct CachedPoseInputs {
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 
-// joint_splat.comp (a sprite per joint, or per far body), joint_splat_pixels.comp (an invocation
-// per pixel) and joint_splat_resolve.comp, specialized with the work lists' capacities and the
-// far body's height (0: every character by its joints).
+// joint_splat.comp (far bodies), joint_splat_walk.comp (a sprite per joint),
+// joint_splat_pixels.comp (an invocation per pixel) and joint_splat_resolve.comp, specialized with
+// the work lists' capacities and the far body's height (0: every character by its joints).
 struct SplatPrograms {
-  gpu::ComputeProgram joints;
+  gpu::ComputeProgram joints;  // joint_splat.comp: per character, far bodies and the walk list
+  gpu::ComputeProgram walk;    // joint_splat_walk.comp: the listed characters' joints
   gpu::ComputeProgram pixels;
   gpu::ComputeProgram resolve;  // joint_splat_resolve.comp (CrowdRenderer)
 };
@@ -84,6 +85,10 @@ struct SplatJob {
   const gpu::Buffer* sprites = nullptr;      // spriteCapacity × kSplatSpriteBytes
   const gpu::Buffer* pixelOwners = nullptr;  // pixelCapacity uints
   const gpu::Buffer* counters = nullptr;     // 16 bytes, cleared by record()
+  // The characters whose joints are walked (the rest are off screen or far bodies): a uint per
+  // character, and a count per chunk (cleared by record()).
+  const gpu::Buffer* walkList = nullptr;
+  const gpu::Buffer* walkCounts = nullptr;
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
 
@@ -92,6 +97,12 @@ struct SplatJob {
   // leaves barriers for the
   // fragment-shader resolve.
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
+
+ private:
+  // One of the two per-character passes over a chunk: `invocations` of them, 0 for one per
+  // character.
+  void recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program, const JointChunk& chunk,
+                   size_t c, uint32_t invocations) const;
 };
 
 }  // namespace throng::render

@@ -30,6 +30,7 @@ TEST_CASE("SplatJob: validity") {
   CHECK(all.find("'draws'") != std::string::npos);
   CHECK(all.find("'nearList'") != std::string::npos);
   CHECK(all.find("'lodLevels'") != std::string::npos);
+  CHECK(all.find("'walkList'") != std::string::npos);
   CHECK(all.find("target size is zero") != std::string::npos);
 }
 
@@ -109,6 +110,11 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   job.sprites = &lists.sprites;
   job.pixelOwners = &lists.pixelOwners;
   job.counters = &lists.counters;
+  gpu::Buffer walkList(ctx, std::max<VkDeviceSize>(16, characters * 4), gpu::kStorageUsage,
+                       gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer walkCounts(ctx, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  job.walkList = &walkList;
+  job.walkCounts = &walkCounts;
   job.spriteCapacity = spriteCapacity;
   job.pixelCapacity = pixelCapacity;
   REQUIRE(job.validate().empty());

@@ -1,0 +1,89 @@
+// The joint splat's two passes (joint_splat.comp, joint_splat_walk.comp) share this: the
+// work-list reservations and how a sprite or a far body gets its pixels. Needs the Frame,
+// Visibility, Draws, NearList, Masks, Groups, Sprites, PixelOwners and SplatCounters bindings,
+// the push block and joint_splat_common.glsl first.
+#ifndef THRONG_JOINT_SPLAT_RESERVE_GLSL
+#define THRONG_JOINT_SPLAT_RESERVE_GLSL
+
+// Pixels whose centres lie inside the sprite's bounding box; false when there are none.
+bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
+  lo = max(ivec2(ceil(s.lo - 0.5)), ivec2(0));
+  hi = min(ivec2(floor(s.hi - 0.5)), ivec2(frame.viewport.xy) - 1);
+  return hi.x >= lo.x && hi.y >= lo.y;
+}
+
+// One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
+// joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
+// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities. Every
+// entry reserved below the pixel capacity gets an owner, a sentinel when the entries are not kept.
+uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits) {
+  uint spriteBase = 0u, firstBase = 0u;
+  uint spriteTotal = subgroupAdd(spriteCount), pixelTotal = subgroupAdd(pixelCount);
+  if (subgroupElect()) {
+    spriteBase = spriteTotal > 0u ? atomicAdd(counters.sprites, spriteTotal) : 0u;
+    firstBase = atomicAdd(counters.pixels, pixelTotal);
+  }
+  sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(spriteCount);
+  uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
+  fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
+  if (!fits) {
+    uint owned = first < kPixelCapacity ? min(pixelCount, kPixelCapacity - first) : 0u;
+    for (uint i = 0u; i < owned; ++i) owners[first + i] = kSplatNoSprite;
+  }
+  return first;
+}
+
+// Joint `joint` (chunk-local) as sprite s: listed for the draw when too wide, else its box's
+// pixels reserved for the pixel pass (or splatted here when the work lists are full).
+void splatSprite(uint joint, JointSprite s, vec3 tint) {
+  if (s.sizePx > push.maxPixels) {
+    uint slot = atomicAdd(draws[4 * push.chunk], 1u);
+    nearList[push.listBase + slot] = joint;
+    return;
+  }
+  ivec2 lo, hi;
+  if (!spriteBox(s, lo, hi)) return;
+  uint boxWidth = uint(hi.x - lo.x + 1);
+  uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
+  uint sprite;
+  bool fits;
+  uint first = reserveEntries(1u, pixelCount, sprite, fits);
+  if (fits) {
+    for (uint i = 0u; i < pixelCount; ++i) owners[first + i] = sprite;
+    sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, first));
+    return;
+  }
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+}
+
+// A far body: a few pixels, all of similar size across the lanes, so they are ray-cast here
+// rather than through a sprite; their entries name the pixels hit for the resolve.
+void splatBody(JointSprite s, vec3 tint) {
+  ivec2 lo, hi;
+  if (!spriteBox(s, lo, hi)) return;
+  uint boxWidth = uint(hi.x - lo.x + 1);
+  uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
+  uint sprite;
+  bool fits;
+  uint first = reserveEntries(0u, pixelCount, sprite, fits);
+  uint i = 0u;
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x, ++i) {
+      bool hit = splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+      if (fits) owners[first + i] = hit ? (uint(y) * uint(frame.viewport.x) + uint(x)) | kSplatPixelEntry : kSplatNoSprite;
+    }
+}
+
+// A character's tint as the flags choose it.
+vec3 characterColour(uint character, uvec4 mask) {
+  return (push.flags & kDrawTintLevel) != 0u  ? levelTint(mask.z)
+         : (push.flags & kDrawGroupTint) != 0u ? groupTint(groups[character], character)
+                                               : characterTint(character);
+}
+
+uvec4 characterMask(uint character) {
+  return (push.flags & (kDrawUseMasks | kDrawTintLevel)) != 0u ? masks[character] : uvec4(0xFFFFFFFFu, 0xFFFFFFFFu, 2u, 0u);
+}
+
+#endif

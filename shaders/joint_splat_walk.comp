@@ -1,0 +1,58 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_ballot : require
+// The far joints, step 2: one invocation per character joint_splat.comp listed walks its
+// joints (lanes are characters at the same joint, so a level's undrawn joints cost its lanes
+// nothing, and the character's mask, tint and pose source are read once). Each drawn joint's
+// ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel of the box
+// for joint_splat_pixels.comp, which ray-casts them one pixel per invocation; a joint whose
+// reservation does not fit ray-casts its own pixels here. Joints wider than push.maxPixels are
+// listed for an indirect draw by the graphics pipeline instead. A fixed number of workgroups
+// strides over the list. CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
+#include "shared_types.h"
+#include "render_bindings.h"
+#include "joint_sprite.glsl"
+
+layout(local_size_x = 64) in;
+layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
+layout(std430, binding = kRenderBindingDraws) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
+layout(std430, binding = kRenderBindingNearList) writeonly buffer NearList { uint nearList[]; };
+layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
+layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
+layout(push_constant) uniform Push { SplatPush push; };
+#include "joint_fetch.glsl"
+#include "joint_lod.glsl"
+#include "joint_far_body.glsl"
+#include "joint_splat_common.glsl"
+layout(std430, binding = kRenderBindingSprites) writeonly buffer Sprites { SplatSprite sprites[]; };
+layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { uint owners[]; };
+layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
+#include "joint_splat_reserve.glsl"
+layout(std430, binding = kRenderBindingWalkList) readonly buffer WalkList { uint walkList[]; };
+layout(std430, binding = kRenderBindingWalkCounts) readonly buffer WalkCounts { uint walkCounts[]; };
+
+void walkJoints(uint local) {
+  uint character = local + push.firstCharacter;
+  uint base = local * push.jointCount;  // its first joint in the chunk
+  uvec4 mask = characterMask(character);
+  vec3 tint = characterColour(character, mask);
+  CharacterPose pose = characterPose(character, push.flags);
+  uvec2 bones = uvec2(push.boneLo, push.boneHi);
+  for (uint j = 0u; j < push.jointCount; ++j) {
+    JointMatrix a;
+    if (!drawnPoseJoint(base + j, pose, j, push.flags, mask, bones, a)) continue;
+    JointSprite s = jointSprite(a, frame);
+    if (s.visible) splatSprite(base + j, s, tint);
+  }
+}
+
+void main() {
+  uint count = walkCounts[push.chunk];
+  uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  for (uint k = gl_GlobalInvocationID.x; k < count; k += stride) walkJoints(walkList[push.firstCharacter + k]);
+}
