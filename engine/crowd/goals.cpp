@@ -209,9 +209,12 @@ GoalMachine::GoalMachine(GoalScene scene, size_t agents) : scene_(std::move(scen
     shared_[g].assign(scene_.groups[g].states.size(), kNoState);
 }
 
-std::vector<uint32_t> GoalMachine::evaluate(std::span<const glm::vec2> positions, double seconds) {
+std::vector<uint32_t> GoalMachine::evaluate(std::span<const glm::vec2> positions, double seconds,
+                                            std::span<const uint32_t> waypoints) {
   if (positions.size() != agents_.size())
     fail("goals: ", positions.size(), " positions for ", agents_.size(), " agents");
+  if (!waypoints.empty() && waypoints.size() != agents_.size())
+    fail("goals: ", waypoints.size(), " waypoint indices for ", agents_.size(), " agents");
   std::vector<uint32_t> changed;
   for (uint32_t i = 0; i < agents_.size(); ++i) {
     const uint32_t group = scene_.agentGroup[i];
@@ -219,7 +222,9 @@ std::vector<uint32_t> GoalMachine::evaluate(std::span<const glm::vec2> positions
     if (!started_) {
       enter(i, scene_.groups[group].initial, positions[i], seconds);
       changed.push_back(i);
-    } else if (step(i, positions[i], seconds)) {
+    } else if (step(i, positions[i], seconds) ||
+               replanIfStuck(i, positions[i], seconds,
+                             waypoints.empty() ? nullptr : &waypoints[i])) {
       changed.push_back(i);
     }
   }
@@ -234,7 +239,15 @@ void GoalMachine::enter(uint32_t agent, uint32_t state, glm::vec2 p, double seco
   a.reachedAt = -1.0;
   a.done = false;
   choose(agent, p, false);
-  plan(agent, p);
+  plan(agent, p, seconds);
+  // Staying where it stands, the agent is there on entry: it arrives now, not at the next
+  // evaluation, by when the crowd may have pushed it off the spot.
+  const GoalState& st = scene_.groups[scene_.agentGroup[agent]].states[state];
+  if (st.choice.kind == GoalChoice::Kind::Identity &&
+      st.onArrival != GoalState::Arrival::NextGoal) {
+    a.reachedAt = seconds;
+    a.done = st.onArrival == GoalState::Arrival::Stop;
+  }
 }
 
 void GoalMachine::choose(uint32_t agent, glm::vec2 p, bool another) {
@@ -300,7 +313,7 @@ bool GoalMachine::step(uint32_t agent, glm::vec2 p, double seconds) {
     if (st.onArrival == GoalState::Arrival::NextGoal) {
       a.reachedAt = -1.0;
       choose(agent, p, true);
-      plan(agent, p);
+      plan(agent, p, seconds);
       return true;
     }
   }
@@ -319,11 +332,40 @@ bool GoalMachine::step(uint32_t agent, glm::vec2 p, double seconds) {
   return false;
 }
 
-void GoalMachine::plan(uint32_t agent, glm::vec2 p) {
-  PlannedPath path =
-      planPath(scene_.navMesh, scene_.roadMap, p, agents_[agent].target, scene_.cornerClearance);
+bool GoalMachine::seesWaypoint(uint32_t agent, glm::vec2 p, uint32_t waypoint) const {
+  const std::vector<glm::vec2>& path = paths_[agent];
+  const glm::vec2 w = path[std::clamp<size_t>(waypoint, 1, path.size() - 1)];
+  // Off the mesh (a crowd pushes agents a little over its edges), seen from the nearest point on
+  // it: the mesh does not say what lies beyond its edges.
+  if (!scene_.navMesh.empty())
+    return visibleOnMesh(scene_.navMesh, closestMeshPoint(scene_.navMesh, p), w);
+  return visible(scene_.roadMap.walls, p, w);
+}
+
+bool GoalMachine::replanIfStuck(uint32_t agent, glm::vec2 p, double seconds,
+                                const uint32_t* waypoint) {
+  AgentGoal& a = agents_[agent];
+  if (a.done || a.reachedAt >= 0.0 || !(scene_.stuckSeconds > 0.0f)) return false;
+  const float remaining = remainingPathLength(paths_[agent], p);
+  if (remaining <= a.bestRemaining - scene_.stuckDistance) {
+    a.bestRemaining = remaining;
+    a.progressAt = seconds;
+    return false;
+  }
+  if (seconds - a.progressAt < double(scene_.stuckSeconds)) return false;
+  if (waypoint && seesWaypoint(agent, p, *waypoint)) return false;  // held back in a queue
+  plan(agent, p, seconds);
+  ++stuckPlans_;
+  return true;
+}
+
+void GoalMachine::plan(uint32_t agent, glm::vec2 p, double seconds) {
+  AgentGoal& a = agents_[agent];
+  PlannedPath path = planPath(scene_.navMesh, scene_.roadMap, p, a.target, scene_.cornerClearance);
   paths_[agent] = std::move(path.points);
-  if (paths_[agent].size() < 2) paths_[agent].push_back(agents_[agent].target);
+  if (paths_[agent].size() < 2) paths_[agent].push_back(a.target);
+  a.bestRemaining = remainingPathLength(paths_[agent], p);
+  a.progressAt = seconds;
   ++plans_;
   if (path.partial) ++partialPlans_;
 }

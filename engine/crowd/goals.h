@@ -113,6 +113,14 @@ struct GoalScene {
   RoadMap roadMap;                   // used when there is no nav mesh; empty: none
   float waypointReach = 0.5f;        // a waypoint within this distance is passed (m)
   float cornerClearance = 0.5f;      // nav-mesh corners kept this far off walls (planOnNavMesh)
+  // An agent walking to a goal whose remaining path (from where it stands) has not shrunk by
+  // `stuckDistance` for `stuckSeconds`, and which cannot see the waypoint it heads for (off the
+  // nav mesh or behind a wall; GoalMachine::evaluate), is planned again from where it stands: the
+  // crowd pushed it off its path, past a corner and back behind it, or behind a wall. Walking
+  // agents shrink their path by about a metre a second and queued ones see their waypoint, so
+  // plans for this are rare (none in free walking). 0: never.
+  float stuckSeconds = 10.0f;
+  float stuckDistance = 0.5f;
   uint32_t seed = 1;
 };
 // Problems with the scene (indices out of range, bad goals); empty when valid.
@@ -124,13 +132,15 @@ Goal goalFromMenge(const menge::Goal& goal);
 
 // Where one agent is in its machine.
 struct AgentGoal {
-  uint32_t state = kNoState;  // kNoState: no goals
-  uint32_t goal = 0;          // index in the state's set
-  glm::vec2 target{0.0f};     // the point it walks to
-  double enteredAt = 0.0;     // seconds
-  double reachedAt = -1.0;    // < 0: not reached yet in this state
-  uint32_t visits = 0;        // goals chosen so far (hashed into random draws)
-  bool done = false;          // in a final state, reached
+  uint32_t state = kNoState;   // kNoState: no goals
+  uint32_t goal = 0;           // index in the state's set
+  glm::vec2 target{0.0f};      // the point it walks to
+  double enteredAt = 0.0;      // seconds
+  double reachedAt = -1.0;     // < 0: not reached yet in this state
+  float bestRemaining = 0.0f;  // the shortest remaining path length seen since it was planned
+  double progressAt = 0.0;     // when that was last shortened by the scene's stuckDistance
+  uint32_t visits = 0;         // goals chosen so far (hashed into random draws)
+  bool done = false;           // in a final state, reached
 };
 
 // The CPU side: every agent's machine and planned path. `evaluate` runs the machines on the
@@ -141,8 +151,11 @@ class GoalMachine {
   GoalMachine(GoalScene scene, size_t agents);
 
   // Runs every machine at time `seconds` with the agents' positions (x, z); returns the agents
-  // whose path changed (their paths() entry is new).
-  std::vector<uint32_t> evaluate(std::span<const glm::vec2> positions, double seconds);
+  // whose path changed (their paths() entry is new). `waypoints`: per agent the index in its path
+  // of the waypoint it heads for (NavBuffers::progress), for the stuck rule (GoalScene::
+  // stuckSeconds); empty: a stuck agent is planned again whether it sees its waypoint or not.
+  std::vector<uint32_t> evaluate(std::span<const glm::vec2> positions, double seconds,
+                                 std::span<const uint32_t> waypoints = {});
 
   const std::vector<AgentGoal>& agents() const { return agents_; }
   // Per agent: the path it follows, its start (where it was planned from) first, target last;
@@ -153,12 +166,15 @@ class GoalMachine {
   bool allDone() const;           // every agent with goals is done
   uint64_t plans() const { return plans_; }
   uint64_t partialPlans() const { return partialPlans_; }  // plans that fell back (nav_mesh.h)
+  uint64_t stuckPlans() const { return stuckPlans_; }      // of plans(): agents that were stuck
 
  private:
   void enter(uint32_t agent, uint32_t state, glm::vec2 p, double seconds);
   void choose(uint32_t agent, glm::vec2 p, bool another);
   bool step(uint32_t agent, glm::vec2 p, double seconds);
-  void plan(uint32_t agent, glm::vec2 p);
+  bool replanIfStuck(uint32_t agent, glm::vec2 p, double seconds, const uint32_t* waypoint);
+  bool seesWaypoint(uint32_t agent, glm::vec2 p, uint32_t waypoint) const;
+  void plan(uint32_t agent, glm::vec2 p, double seconds);
 
   GoalScene scene_;
   std::vector<AgentGoal> agents_;
@@ -166,6 +182,7 @@ class GoalMachine {
   std::vector<std::vector<uint32_t>> shared_;  // per group, per state: the shared goal or kNoState
   uint64_t plans_ = 0;
   uint64_t partialPlans_ = 0;
+  uint64_t stuckPlans_ = 0;
   bool started_ = false;
 };
 

@@ -185,7 +185,10 @@ void GoalSteering::update(const gpu::Context& context, const CrowdBuffers& crowd
       gpu::readback<glm::vec4>(context, crowd.placement, crowd.count);
   std::vector<glm::vec2> positions(placement.size());
   for (size_t i = 0; i < placement.size(); ++i) positions[i] = {placement[i].x, placement[i].z};
-  const std::vector<uint32_t> changed = machine_.evaluate(positions, seconds);
+  // The waypoint each agent heads for, for the stuck rule (GoalScene::stuckSeconds).
+  const std::vector<uint32_t> progress =
+      gpu::readback<uint32_t>(context, nav_.progress, nav_.count);
+  const std::vector<uint32_t> changed = machine_.evaluate(positions, seconds, progress);
   if (!changed.empty()) updateNav(context, nav_, packPaths(machine_.paths(), maxSpeed_), changed);
 }
 

@@ -22,7 +22,14 @@ float side(glm::vec2 a, glm::vec2 b, glm::vec2 c) {
   return cross2(b - a, c - a);
 }
 
-glm::vec2 closestOnSegment(glm::vec2 a, glm::vec2 b, glm::vec2 p) {
+bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
+  const float pa = side(p, q, a), pb = side(p, q, b), ap = side(a, b, p), aq = side(a, b, q);
+  return ((pa <= 0.0f && pb >= 0.0f) || (pa >= 0.0f && pb <= 0.0f)) &&
+         ((ap <= 0.0f && aq >= 0.0f) || (ap >= 0.0f && aq <= 0.0f)) &&
+         !(pa == 0.0f && pb == 0.0f);  // collinear: passing along a wall's line is not crossing
+}
+
+glm::vec2 closestOnEdge(glm::vec2 a, glm::vec2 b, glm::vec2 p) {
   const glm::vec2 ab = b - a;
   const float len2 = glm::dot(ab, ab);
   const float t = len2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / len2, 0.0f, 1.0f) : 0.0f;
@@ -49,7 +56,7 @@ glm::vec2 closestOnPolygon(const NavMesh& mesh, uint32_t polygon, glm::vec2 p) {
   if (contains(mesh, poly, p, 0.0f)) return p;
   glm::vec2 best = vertexOf(mesh, poly, 0);
   for (size_t k = 0; k < poly.vertices.size(); ++k) {
-    const glm::vec2 q = closestOnSegment(vertexOf(mesh, poly, k), vertexOf(mesh, poly, k + 1), p);
+    const glm::vec2 q = closestOnEdge(vertexOf(mesh, poly, k), vertexOf(mesh, poly, k + 1), p);
     if (glm::distance(q, p) < glm::distance(best, p)) best = q;
   }
   return best;
@@ -375,13 +382,6 @@ RoadMap roadMapFromMenge(const menge::RoadMap& map) {
 
 namespace {
 
-bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
-  const float pa = side(p, q, a), pb = side(p, q, b), ap = side(a, b, p), aq = side(a, b, q);
-  return ((pa <= 0.0f && pb >= 0.0f) || (pa >= 0.0f && pb <= 0.0f)) &&
-         ((ap <= 0.0f && aq >= 0.0f) || (ap >= 0.0f && aq <= 0.0f)) &&
-         !(pa == 0.0f && pb == 0.0f);  // collinear: passing along a wall's line is not crossing
-}
-
 // The nearest way point visible from p, or the nearest one when none is.
 uint32_t nearestWayPoint(const RoadMap& map, glm::vec2 p) {
   uint32_t best = 0, bestVisible = 0;
@@ -451,6 +451,44 @@ PlannedPath planOnRoadMap(const RoadMap& map, glm::vec2 start, glm::vec2 target)
   std::reverse(path.points.begin(), path.points.end());
   if (path.points.back() != end) path.points.push_back(end);
   return path;
+}
+
+bool visibleOnMesh(const NavMesh& mesh, glm::vec2 p, glm::vec2 q) {
+  constexpr float kTolerance = 1e-3f;
+  int poly = findPolygon(mesh, p, kTolerance), from = -1;
+  // Each step leaves a convex polygon through the edge the segment crosses towards q.
+  for (size_t steps = 0; poly >= 0 && steps <= mesh.polygons.size(); ++steps) {
+    const NavPolygon& current = mesh.polygons[size_t(poly)];
+    if (contains(mesh, current, q, kTolerance)) return true;
+    int next = -1;
+    bool exited = false;
+    for (size_t k = 0; k < current.vertices.size() && !exited; ++k) {
+      const glm::vec2 a = vertexOf(mesh, current, k), b = vertexOf(mesh, current, k + 1);
+      if (current.neighbors[k] == from && from >= 0) continue;
+      if (side(a, b, q) >= 0.0f || !segmentsCross(p, q, a, b)) continue;
+      next = current.neighbors[k];
+      exited = true;
+    }
+    if (!exited || next < 0) return false;  // through a wall edge
+    from = poly;
+    poly = next;
+  }
+  return false;
+}
+
+float remainingPathLength(std::span<const glm::vec2> path, glm::vec2 p) {
+  if (path.size() < 2) return path.empty() ? 0.0f : glm::distance(p, path.back());
+  // Backwards, so that of equally near points the one farther along the path counts.
+  float nearest = kInfinity, remaining = 0.0f, tail = 0.0f;
+  for (size_t k = path.size() - 1; k > 0; --k) {
+    const glm::vec2 q = closestOnEdge(path[k - 1], path[k], p);
+    if (glm::distance(p, q) < nearest) {
+      nearest = glm::distance(p, q);
+      remaining = nearest + glm::distance(q, path[k]) + tail;
+    }
+    tail += glm::distance(path[k - 1], path[k]);
+  }
+  return remaining;
 }
 
 PlannedPath planPath(const NavMesh& mesh, const RoadMap& map, glm::vec2 start, glm::vec2 target,

@@ -98,6 +98,13 @@ bool visible(std::span<const Segment> walls, glm::vec2 p, glm::vec2 q);
 PlannedPath planPath(const NavMesh& mesh, const RoadMap& map, glm::vec2 start, glm::vec2 target,
                      float clearance = 0.0f);
 
+// Whether the straight line from p to q stays on the mesh (p and q on it, no wall edge crossed).
+bool visibleOnMesh(const NavMesh& mesh, glm::vec2 p, glm::vec2 q);
+
+// What is left of `path` to an agent at p: the way to the path's nearest point, then along the
+// path to its end. It shrinks as the agent follows the path, wherever the path turns.
+float remainingPathLength(std::span<const glm::vec2> path, glm::vec2 p);
+
 // String pulling through portals (left, right as seen walking from start to target): the corners
 // of the shortest path inside the corridor, start first and target last.
 std::vector<glm::vec2> funnelPath(glm::vec2 start, glm::vec2 target,

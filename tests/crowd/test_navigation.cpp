@@ -350,7 +350,10 @@ TEST_CASE("navigation: 200 agents walk an L-shaped corridor into a goal box (kin
   CHECK(mostSeconds > 0.0);
   CHECK(mostSeconds < 130.0);
   CHECK(seconds < 220.0);
-  CHECK(goals.machine().plans() == n);  // planned once each: the goal never changed
+  // Planned once each: the goal never changed, and no agent lost sight of its waypoint (the
+  // stuck rule; the queue at the corner sees the corner).
+  CHECK(goals.machine().plans() == n);
+  CHECK(goals.machine().stuckPlans() == 0);
   CHECK(goals.machine().partialPlans() == 0);
   // Arrivals push those standing a little; none leaves.
   crowd::downloadCrowd(ctx, buffers, crowd);
@@ -362,4 +365,90 @@ TEST_CASE("navigation: 200 agents walk an L-shaped corridor into a goal box (kin
   // rounding (an NVIDIA H100 left one 2.9 m out).
   CHECK(farthest < 3.5f);
   CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("navigation: the remaining length of a path from where an agent stands") {
+  const V path = {{0, 0}, {4, 0}, {4, 3}};
+  CHECK(crowd::remainingPathLength(path, {0, 0}) == doctest::Approx(7.0f));
+  CHECK(crowd::remainingPathLength(path, {2, 1}) == doctest::Approx(1.0f + 2.0f + 3.0f));
+  CHECK(crowd::remainingPathLength(path, {4, 1}) == doctest::Approx(2.0f));
+  CHECK(crowd::remainingPathLength(path, {5, 5}) == doctest::Approx(std::sqrt(5.0f)));
+}
+
+TEST_CASE("navigation: an agent that stops getting closer along its path is planned again") {
+  // The L corridor: from the far end of the horizontal arm round the inner corner (10, 2) up to
+  // (11, 9). Agent 0 is pushed back behind the corner and held there; agent 1 walks on.
+  crowd::GoalScene scene;
+  scene.navMesh = corridorL(10, 2, 10);
+  scene.goalSets = {crowd::GoalSet{{crowd::pointGoal({11, 9})}}};
+  crowd::GoalState walk;
+  walk.onArrival = crowd::GoalState::Arrival::Stop;
+  scene.groups = {crowd::GoalBehavior{{walk}, 0, 1.3f}};
+  scene.agentGroup = {0, 0};
+  crowd::GoalMachine m(scene, 2);
+  m.evaluate(V{{1, 1}, {1, 1}}, 0.0);
+  REQUIRE(m.paths()[0].size() == 3);  // start, the corner, the goal
+  CHECK(m.evaluate(V{{9, 1}, {9, 1}}, 6.0).empty());
+  CHECK(m.evaluate(V{{11, 3}, {11, 3}}, 8.0).empty());  // past the corner
+  // Agent 0 held at (6, 1.5), agent 1 on its way: no replan before 10 s without progress.
+  CHECK(m.evaluate(V{{6, 1.5f}, {11, 5}}, 12.0).empty());
+  CHECK(m.evaluate(V{{6, 1.5f}, {11, 6}}, 17.5).empty());
+  CHECK(m.stuckPlans() == 0);
+  CHECK(m.evaluate(V{{6, 1.5f}, {11, 7}}, 18.0) == std::vector<uint32_t>{0});
+  CHECK(m.stuckPlans() == 1);
+  CHECK(m.paths()[0].front() == glm::vec2(6, 1.5f));  // from where it stands, round the corner
+  CHECK(m.paths()[0].size() == 3);
+  CHECK(m.paths()[0].back() == glm::vec2(11, 9));
+  // Planned again, it has 10 s from now; without the rule (stuckSeconds 0) never.
+  CHECK(m.evaluate(V{{6, 1.5f}, {11, 8}}, 27.5).empty());
+  // Given the waypoint each heads for: one that sees it is queued, not stuck; one whose
+  // waypoint (the goal, past the corner) is hidden behind the corner is planned again.
+  crowd::GoalMachine queued(scene, 2);
+  const std::vector<uint32_t> corner = {1, 1}, goal = {2, 1};
+  queued.evaluate(V{{1, 1}, {1, 1}}, 0.0, corner);
+  queued.evaluate(V{{11, 3}, {11, 3}}, 8.0, goal);  // past the corner, then pushed back
+  CHECK(queued.evaluate(V{{6, 1.5f}, {6, 1.5f}}, 18.0, corner).empty());
+  CHECK(queued.evaluate(V{{6, 1.5f}, {6, 1.5f}}, 18.5, goal) == std::vector<uint32_t>{0});
+  CHECK(queued.stuckPlans() == 1);
+  scene.stuckSeconds = 0.0f;
+  crowd::GoalMachine never(scene, 2);
+  never.evaluate(V{{1, 1}, {1, 1}}, 0.0);
+  CHECK(never.evaluate(V{{1, 1}, {1, 1}}, 100.0).empty());
+  CHECK(never.stuckPlans() == 0);
+}
+
+TEST_CASE("navigation: an agent told to stay where it stands has arrived on entry") {
+  // Walk to (5, 0), then stand (Menge's goal_reached into an identity state): done on entry,
+  // even if the crowd pushes it off the spot before the next evaluation.
+  crowd::GoalScene scene;
+  scene.goalSets = {crowd::GoalSet{{crowd::pointGoal({5, 0})}}};
+  crowd::GoalState walk, stand;
+  walk.onArrival = crowd::GoalState::Arrival::Wait;
+  walk.next = 1;
+  walk.reach = 0.5f;
+  stand.choice.kind = crowd::GoalChoice::Kind::Identity;
+  stand.onArrival = crowd::GoalState::Arrival::Stop;
+  scene.groups = {crowd::GoalBehavior{{walk, stand}, 0, 1.3f}};
+  scene.agentGroup = {0};
+  crowd::GoalMachine m(scene, 1);
+  m.evaluate(V{{0, 0}}, 0.0);
+  CHECK(m.evaluate(V{{4.8f, 0}}, 4.0) == std::vector<uint32_t>{0});
+  CHECK(m.agents()[0].state == 1);
+  CHECK(m.agents()[0].done);
+  CHECK(m.paths()[0] == V{{4.8f, 0}, {4.8f, 0}});
+  CHECK(m.evaluate(V{{6, 1}}, 4.5).empty());
+  CHECK(m.allDone());
+}
+
+TEST_CASE("navigation: straight lines on the mesh, round a corner and past a hole") {
+  const crowd::NavMesh l = corridorL(10, 2, 10);
+  CHECK(crowd::visibleOnMesh(l, {1, 1}, {11, 1}));
+  CHECK(crowd::visibleOnMesh(l, {1, 1}, {11, 9.5f}) == false);  // through the inner corner
+  CHECK(crowd::visibleOnMesh(l, {10.5f, 1}, {11, 9}));
+  CHECK(crowd::visibleOnMesh(l, {-1, 1}, {5, 1}) == false);  // starts off the mesh
+  const crowd::NavMesh square = squareWithHole();
+  CHECK(crowd::visibleOnMesh(square, {1, 1}, {8, 1}));
+  CHECK(crowd::visibleOnMesh(square, {1, 4.5f}, {8, 4.5f}) == false);  // across the hole
+  CHECK(crowd::visibleOnMesh(square, {1, 1}, {8, 8}) == false);
+  CHECK(crowd::visibleOnMesh(square, {1, 8}, {8, 8}));
 }
