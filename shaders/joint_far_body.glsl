@@ -42,4 +42,28 @@ bool farBody(CharacterPose pose, uint base, uint flags, uvec4 mask, FrameUniform
   return s.visible && s.hi.y - s.lo.y < kFarBodyPixels;
 }
 
+// The body's one colour and depth, packed as the visibility buffer holds them: where the ray
+// through the centre of its screen box meets it (on a miss, which only a degenerate body has,
+// the ray's nearest approach).
+uint64_t farBodyShade(JointSprite s, vec3 tint) {
+  vec3 dir = pixelRay(0.5 * (s.lo + s.hi), frame);
+  float t;
+  vec3 n;
+  hitJoint(frame.eye.xyz, dir, s.inverse0, s.inverse1, s.inverse2, t, n);
+  vec4 clip = frame.viewProjection * vec4(frame.eye.xyz + t * dir, 1.0);
+  float depth = clamp(clip.z / clip.w, 0.0, 1.0);
+  uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0));
+  return (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(colour);
+}
+
+// Whether the ray through `pixel` meets the body in front of the eye: the eye `o` and the
+// ray in unit-sphere space (inv), the ray unnormalized (the signs below do not depend on its
+// length).
+bool farBodyPixel(vec3 o, mat3 inv, vec2 pixel) {
+  vec2 ndc = pixel / frame.viewport.xy * 2.0 - 1.0;
+  vec3 d = inv * (frame.rayForward.xyz + ndc.x * frame.rayRight.xyz + ndc.y * frame.rayDown.xyz);
+  float b = dot(o, d);
+  return b < 0.0 && b * b - dot(d, d) * (dot(o, o) - 1.0) >= 0.0;
+}
+
 #endif

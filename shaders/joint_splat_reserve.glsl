@@ -57,8 +57,10 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
 }
 
-// A far body: a few pixels, all of similar size across the lanes, so they are ray-cast here
-// rather than through a sprite; their entries name the pixels hit for the resolve.
+// A far body: a few pixels, about as many in every lane, so they are covered here rather than
+// through a sprite. Shaded once, where the ray through its centre hits it, and at that depth:
+// per pixel only whether the ray meets the ellipsoid (farBodyPixel). Its entries name the
+// pixels hit, for the resolve.
 void splatBody(JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
@@ -67,12 +69,19 @@ void splatBody(JointSprite s, vec3 tint) {
   uint sprite;
   bool fits;
   uint first = reserveEntries(0u, pixelCount, sprite, fits);
-  uint i = 0u;
-  for (int y = lo.y; y <= hi.y; ++y)
-    for (int x = lo.x; x <= hi.x; ++x, ++i) {
-      bool hit = splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
-      if (fits) owners[first + i] = hit ? (uint(y) * uint(frame.viewport.x) + uint(x)) | kSplatPixelEntry : kSplatNoSprite;
-    }
+  uint64_t packed = farBodyShade(s, tint);
+  mat3 inv = transpose(mat3(s.inverse0.xyz, s.inverse1.xyz, s.inverse2.xyz));
+  vec3 o = inv * frame.eye.xyz + vec3(s.inverse0.w, s.inverse1.w, s.inverse2.w);
+  // One loop over the box's pixels (not rows then columns), the row by a float division as in
+  // joint_splat_pixels.comp: lanes wait for the largest box, not the tallest and the widest.
+  for (uint i = 0u; i < pixelCount; ++i) {
+    uint row = uint((float(i) + 0.5) / float(boxWidth));
+    int x = lo.x + int(i - row * boxWidth), y = lo.y + int(row);
+    uint pixel = uint(y) * uint(frame.viewport.x) + uint(x);
+    bool hit = farBodyPixel(o, inv, vec2(x, y) + 0.5);
+    if (hit) atomicMin(visibility[pixel], packed);
+    if (fits) owners[first + i] = hit ? pixel | kSplatPixelEntry : kSplatNoSprite;
+  }
 }
 
 // A character's tint as the flags choose it.

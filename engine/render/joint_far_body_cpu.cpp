@@ -1,6 +1,8 @@
 #include "render/joint_far_body_cpu.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include "render/joint_lod_cpu.h"
 #include "render/joint_splat_cpu.h"
 
@@ -32,14 +34,12 @@ synth::JointMatrix farBodyMatrix(std::span<const synth::JointMatrix> character,
           glm::vec4(0.0f, 0.0f, radius, bottom.z)};
 }
 
-std::vector<synth::JointMatrix> splattedJointMatrices(std::span<const synth::JointMatrix> joints,
-                                                      uint32_t jointCount, uint64_t drawnBones,
-                                                      std::span<const synth::CoverageMask> masks,
-                                                      const synth::CoverageParts* levels,
-                                                      const gpu_types::FrameUniforms& frame,
-                                                      float maxPixels, float farBodyPixels) {
-  std::vector<synth::JointMatrix> out =
-      drawnJointMatrices(joints, jointCount, drawnBones, masks, levels);
+SplatInputsCpu splatInputsCpu(std::span<const synth::JointMatrix> joints, uint32_t jointCount,
+                              uint64_t drawnBones, std::span<const synth::CoverageMask> masks,
+                              const synth::CoverageParts* levels,
+                              const gpu_types::FrameUniforms& frame, float maxPixels,
+                              float farBodyPixels) {
+  SplatInputsCpu out{drawnJointMatrices(joints, jointCount, drawnBones, masks, levels), {}};
   if (masks.empty() || !levels || farBodyPixels <= 0.0f) return out;
   for (size_t c = 0; c < masks.size(); ++c) {
     const synth::CoverageMask& mask = masks[c];
@@ -48,10 +48,52 @@ std::vector<synth::JointMatrix> splattedJointMatrices(std::span<const synth::Joi
         farBodyMatrix(joints.subspan(c * jointCount, jointCount), *levels);
     const JointSpriteCpu s = jointSpriteCpu(body, frame);
     if (!s.visible || !(s.hi.y - s.lo.y < farBodyPixels) || s.sizePx > maxPixels) continue;
-    std::fill_n(out.begin() + std::ptrdiff_t(c * jointCount), jointCount, synth::JointMatrix{});
-    out[c * jointCount] = body;
+    std::fill_n(out.joints.begin() + std::ptrdiff_t(c * jointCount), jointCount,
+                synth::JointMatrix{});
+    out.bodies.push_back({uint32_t(c), body});
   }
   return out;
+}
+
+void splatFarBodiesCpu(std::span<const FarBodyCpu> bodies, const gpu_types::FrameUniforms& frame,
+                       uint32_t width, uint32_t height, std::vector<uint64_t>& visibility) {
+  const glm::vec3 eye(frame.eye);
+  const glm::vec2 viewport(frame.viewport.x, frame.viewport.y);
+  const auto ray = [&](glm::vec2 pixel) {
+    const glm::vec2 ndc = pixel / viewport * 2.0f - 1.0f;
+    return glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) +
+           ndc.y * glm::vec3(frame.rayDown);
+  };
+  for (const FarBodyCpu& b : bodies) {
+    const JointSpriteCpu s = jointSpriteCpu(b.body, frame);
+    const glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(s.lo - 0.5f)), glm::ivec2(0));
+    const glm::ivec2 hi =
+        glm::min(glm::ivec2(glm::floor(s.hi - 0.5f)), glm::ivec2(int(width) - 1, int(height) - 1));
+    const glm::mat3 inv = glm::transpose(
+        glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
+    const glm::vec3 o = inv * eye + glm::vec3(s.inverse[0].w, s.inverse[1].w, s.inverse[2].w);
+    // farBodyShade: the hit of the ray through the box's centre (its nearest approach on a miss).
+    const glm::vec3 dir = glm::normalize(ray(0.5f * (s.lo + s.hi)));
+    const glm::vec3 d = inv * dir;
+    const float a = glm::dot(d, d), bq = glm::dot(o, d), c = glm::dot(o, o) - 1.0f;
+    const float t = (-bq - std::sqrt(std::max(bq * bq - a * c, 0.0f))) / a;
+    const glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));
+    const glm::vec4 clip = frame.viewProjection * glm::vec4(eye + t * dir, 1.0f);
+    const float depth = std::clamp(clip.z / clip.w, 0.0f, 1.0f);
+    uint32_t depthBits;
+    std::memcpy(&depthBits, &depth, sizeof(depthBits));
+    const uint64_t packed =
+        (uint64_t(depthBits) << 32) |
+        shadeJointCpu(characterTintCpu(b.character), n, dir, glm::vec3(frame.lightDirection));
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) {
+        const glm::vec3 dp = inv * ray(glm::vec2(x, y) + 0.5f);  // farBodyPixel
+        const float bp = glm::dot(o, dp);
+        if (!(bp < 0.0f && bp * bp - glm::dot(dp, dp) * c >= 0.0f)) continue;
+        uint64_t& pixel = visibility[size_t(y) * width + x];
+        pixel = std::min(pixel, packed);
+      }
+  }
 }
 
 }  // namespace throng::render

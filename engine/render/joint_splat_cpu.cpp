@@ -66,7 +66,9 @@ uint32_t hashIndex(uint32_t x) {
   return x;
 }
 
-glm::vec3 characterTint(uint32_t character) {
+}  // namespace
+
+glm::vec3 characterTintCpu(uint32_t character) {
   uint32_t h = hashIndex(character);
   float hue = float(h & 1023u) / 1024.0f;
   glm::vec3 k = glm::abs(
@@ -74,6 +76,8 @@ glm::vec3 characterTint(uint32_t character) {
   glm::vec3 rgb = glm::clamp(k - 1.0f, 0.0f, 1.0f);
   return glm::mix(rgb, glm::vec3(0.85f), 0.25f) * (0.75f + 0.25f * float((h >> 10) & 3u) / 3.0f);
 }
+
+namespace {
 
 uint32_t packColour(glm::vec4 c) {
   uint32_t out = 0;
@@ -83,6 +87,15 @@ uint32_t packColour(glm::vec4 c) {
 }
 
 }  // namespace
+
+uint32_t shadeJointCpu(glm::vec3 tint, glm::vec3 n, glm::vec3 dir, glm::vec3 light) {
+  float diffuse = std::max(glm::dot(n, light), 0.0f);
+  float sky = 0.5f + 0.5f * n.y;
+  float rim = std::pow(1.0f - std::max(glm::dot(n, -dir), 0.0f), 3.0f);
+  glm::vec3 col = glm::pow(tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim,
+                           glm::vec3(1.0f / 2.2f));
+  return packColour(glm::vec4(col, 1.0f));
+}
 
 SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
                               const gpu_types::FrameUniforms& frame, uint32_t jointCount,
@@ -101,7 +114,7 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
     glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(s.lo - 0.5f)), glm::ivec2(0));
     glm::ivec2 hi =
         glm::min(glm::ivec2(glm::floor(s.hi - 0.5f)), glm::ivec2(int(width) - 1, int(height) - 1));
-    glm::vec3 tint = characterTint(joint / jointCount);
+    glm::vec3 tint = characterTintCpu(joint / jointCount);
     glm::mat3 inv = glm::transpose(
         glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
     glm::vec3 o = inv * eye + glm::vec3(s.inverse[0].w, s.inverse[1].w, s.inverse[2].w);
@@ -121,14 +134,9 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
         glm::vec4 clip = frame.viewProjection * glm::vec4(eye + t * dir, 1.0f);
         float depth = clip.z / clip.w;
         if (depth < 0.0f || depth > 1.0f) continue;
-        float diffuse = std::max(glm::dot(n, light), 0.0f);
-        float sky = 0.5f + 0.5f * n.y;
-        float rim = std::pow(1.0f - std::max(glm::dot(n, -dir), 0.0f), 3.0f);
-        glm::vec3 col = glm::pow(tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim,
-                                 glm::vec3(1.0f / 2.2f));
         uint32_t depthBits;
         std::memcpy(&depthBits, &depth, sizeof(depthBits));
-        uint64_t packed = (uint64_t(depthBits) << 32) | packColour(glm::vec4(col, 1.0f));
+        uint64_t packed = (uint64_t(depthBits) << 32) | shadeJointCpu(tint, n, dir, light);
         uint64_t& pixel = result.visibility[size_t(y) * width + x];
         pixel = std::min(pixel, packed);
       }

@@ -19,6 +19,11 @@ struct JointSpriteCpu {
 };
 JointSpriteCpu jointSpriteCpu(const synth::JointMatrix& a, const gpu_types::FrameUniforms& frame);
 
+// characterTint() and shadeJoint() (packed as the visibility buffer's colour) of
+// joint_sprite.glsl.
+glm::vec3 characterTintCpu(uint32_t character);
+uint32_t shadeJointCpu(glm::vec3 tint, glm::vec3 n, glm::vec3 dir, glm::vec3 light);
+
 struct SplatCpuResult {
   std::vector<uint64_t> visibility;  // width × height, kEmptyPixel where nothing was hit
   std::vector<uint32_t> nearJoints;  // joints too wide to splat, ascending

@@ -89,24 +89,22 @@ FarComparison compareFar(uint32_t characters, const std::string& preset, uint32_
   params.height = height;
   const gpu_types::FrameUniforms frame = render::makeFrameUniforms(params);
   const float maxPixels = 24.0f;
-  const auto perJoint =
-      render::splattedJointMatrices(joints, n, bones, masks, &levels, frame, maxPixels, 0.0f);
-  const auto withBodies =
-      render::splattedJointMatrices(joints, n, bones, masks, &levels, frame, maxPixels);
+  const render::SplatInputsCpu perJoint =
+      render::splatInputsCpu(joints, n, bones, masks, &levels, frame, maxPixels, 0.0f);
+  const render::SplatInputsCpu withBodies =
+      render::splatInputsCpu(joints, n, bones, masks, &levels, frame, maxPixels);
   FarComparison out;
+  out.bodies = withBodies.bodies.size();
   out.shortest = 1e9f;
-  for (size_t c = 0; c < crowd.size(); ++c) {
-    const auto own = std::span(joints).subspan(c * n, n);
-    const synth::JointMatrix& body = withBodies[c * n];
-    if (std::memcmp(&body, &perJoint[c * n], sizeof(body)) == 0) continue;
-    const render::JointSpriteCpu s =
-        render::jointSpriteCpu(render::farBodyMatrix(own, levels), frame);
-    ++out.bodies;
+  for (const render::FarBodyCpu& body : withBodies.bodies) {
+    const render::JointSpriteCpu s = render::jointSpriteCpu(body.body, frame);
     out.shortest = std::min(out.shortest, s.hi.y - s.lo.y);
     out.tallest = std::max(out.tallest, s.hi.y - s.lo.y);
   }
-  const auto a = render::splatJointsCpu(perJoint, frame, n, maxPixels, width, height).visibility;
-  const auto b = render::splatJointsCpu(withBodies, frame, n, maxPixels, width, height).visibility;
+  const auto a =
+      render::splatJointsCpu(perJoint.joints, frame, n, maxPixels, width, height).visibility;
+  auto b = render::splatJointsCpu(withBodies.joints, frame, n, maxPixels, width, height).visibility;
+  render::splatFarBodiesCpu(withBodies.bodies, frame, width, height, b);
   for (size_t i = 0; i < a.size(); ++i) {
     out.jointPixels += a[i] != render::kEmptyPixel;
     out.bodyPixels += b[i] != render::kEmptyPixel;

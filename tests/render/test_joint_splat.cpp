@@ -120,22 +120,15 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   REQUIRE(job.validate().empty());
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, programs); });
 
-  const std::vector<synth::JointMatrix> drawn =
-      render::splattedJointMatrices(matrices, joints, bones, masks, levels, frame, maxPixels);
+  const render::SplatInputsCpu drawn =
+      render::splatInputsCpu(matrices, joints, bones, masks, levels, frame, maxPixels);
   if (levels) {  // the far bodies are splatted too (test_far_body.cpp bounds how they look)
-    const auto isZero = [](const synth::JointMatrix& m) {
-      return m.row0 == glm::vec4(0.0f) && m.row1 == glm::vec4(0.0f) && m.row2 == glm::vec4(0.0f);
-    };
-    size_t bodies = 0;
-    for (size_t c = 0; c < characters; ++c)
-      bodies += !isZero(drawn[c * joints]) &&
-                std::all_of(drawn.begin() + std::ptrdiff_t(c * joints + 1),
-                            drawn.begin() + std::ptrdiff_t((c + 1) * joints), isZero);
-    MESSAGE(bodies, " characters drawn as their far body");
-    CHECK(bodies > 20);
+    MESSAGE(drawn.bodies.size(), " characters drawn as their far body");
+    CHECK(drawn.bodies.size() > 20);
   }
   render::SplatCpuResult cpu =
-      render::splatJointsCpu(drawn, frame, joints, maxPixels, width, height);
+      render::splatJointsCpu(drawn.joints, frame, joints, maxPixels, width, height);
+  render::splatFarBodiesCpu(drawn.bodies, frame, width, height, cpu.visibility);
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
   auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
   auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
