@@ -59,28 +59,34 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
 
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than
 // through a sprite. Shaded once, where the ray through its centre hits it, and at that depth:
-// per pixel only whether the ray meets the ellipsoid (farBodyPixel). Its entries name the
-// pixels hit, for the resolve.
+// per pixel only whether the ray meets the ellipsoid (farBodyPixel), asked twice, so that only
+// the pixels hit get entries (naming them, for the resolve).
 void splatBody(JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
   uint boxWidth = uint(hi.x - lo.x + 1);
   uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
-  uint sprite;
-  bool fits;
-  uint first = reserveEntries(0u, pixelCount, sprite, fits);
-  uint64_t packed = farBodyShade(s, tint);
   mat3 inv = transpose(mat3(s.inverse0.xyz, s.inverse1.xyz, s.inverse2.xyz));
   vec3 o = inv * frame.eye.xyz + vec3(s.inverse0.w, s.inverse1.w, s.inverse2.w);
   // One loop over the box's pixels (not rows then columns), the row by a float division as in
   // joint_splat_pixels.comp: lanes wait for the largest box, not the tallest and the widest.
+  uint hits = 0u;
   for (uint i = 0u; i < pixelCount; ++i) {
     uint row = uint((float(i) + 0.5) / float(boxWidth));
-    int x = lo.x + int(i - row * boxWidth), y = lo.y + int(row);
-    uint pixel = uint(y) * uint(frame.viewport.x) + uint(x);
-    bool hit = farBodyPixel(o, inv, vec2(x, y) + 0.5);
-    if (hit) atomicMin(visibility[pixel], packed);
-    if (fits) owners[first + i] = hit ? pixel | kSplatPixelEntry : kSplatNoSprite;
+    hits += farBodyPixel(o, inv, vec2(lo + ivec2(i - row * boxWidth, row)) + 0.5) ? 1u : 0u;
+  }
+  uint sprite;
+  bool fits;
+  uint first = reserveEntries(0u, hits, sprite, fits);
+  uint64_t packed = farBodyShade(s, tint);
+  for (uint i = 0u, k = 0u; i < pixelCount; ++i) {
+    uint row = uint((float(i) + 0.5) / float(boxWidth));
+    ivec2 xy = lo + ivec2(i - row * boxWidth, row);
+    if (!farBodyPixel(o, inv, vec2(xy) + 0.5)) continue;
+    uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
+    atomicMin(visibility[pixel], packed);
+    if (fits) owners[first + k] = pixel | kSplatPixelEntry;
+    ++k;
   }
 }
 

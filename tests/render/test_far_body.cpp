@@ -124,13 +124,13 @@ FarComparison compareFar(uint32_t characters, const std::string& preset, uint32_
 
 }  // namespace
 
-// The bound: the bodies cover as many pixels as the joints they stand for (within 10%, -15% to
-// +15% allowed), and seen as 8×8 blocks the frame is the same (mean error at most 3 levels of
-// 255, no block off by more than 24 in more than 0.1% of blocks). Single pixels do move (a body
-// is not its limbs): the per-pixel mean error is at most 10 levels. Measured on lavapipe's
-// twin, 100,000 characters at 1280x720 (the bench's whole frame): wide camera 74,052 bodies
-// 2.4..5.5 px tall, coverage +4.5%, blocks mean 2.21 (none over 24), pixels mean 8.06; street
-// camera 73,532 bodies, coverage equal, blocks mean 0.04, pixels mean 0.09.
+// The bound: the bodies cover as many pixels as the joints they stand for (-15% to +15%), and
+// seen as 8×8 blocks the frame is the same (mean error at most 3.5 levels of 255, no more than
+// 0.1% of blocks off by more than 24). Single pixels do move (a body is not its limbs, and it
+// is shaded once): the per-pixel mean error is at most 10 levels. Measured with the CPU twins,
+// 100,000 characters at 1280x720 (the bench's whole frame): wide camera 74,052 bodies
+// 2.4..5.5 px tall, coverage +4.4%, blocks mean 2.88 (0.007% over 24), pixels mean 8.47;
+// street camera 73,532 bodies, coverage equal, blocks mean 0.05, pixels mean 0.09.
 TEST_CASE("far body: the crowd far away looks as with every far joint splatted") {
   for (const char* preset : {"wide", "street"}) {
     CAPTURE(preset);
@@ -140,7 +140,7 @@ TEST_CASE("far body: the crowd far away looks as with every far joint splatted")
     const double coverage = double(f.bodyPixels) / double(std::max<size_t>(f.jointPixels, 1));
     CHECK(coverage > 0.85);
     CHECK(coverage < 1.15);
-    CHECK(f.blocks.meanAbsError <= 3.0);
+    CHECK(f.blocks.meanAbsError <= 3.5);
     CHECK(f.blocks.fractionDifferent <= 0.001);
     CHECK(f.pixels.meanAbsError <= 10.0);
   }
