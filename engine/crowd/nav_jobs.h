@@ -79,9 +79,10 @@ class GoalSteering {
   // (x, y, z, heading)), plans and uploads. Throws Error for an invalid scene (goals.h).
   GoalSteering(const gpu::Context& context, GoalScene scene, std::span<const glm::vec4> placement);
 
-  // Host side, when no frame in flight uses the crowd or these buffers: reads the placement
-  // back, runs the state machines at `seconds` (the simulated clock), plans the agents whose
-  // goal changed and uploads their paths. Every N frames is enough: arrivals and timers are
+  // Host side, when no frame in flight uses the crowd or these buffers: reads the placement and
+  // each agent's waypoint back, runs the state machines at `seconds` (the simulated clock), plans
+  // the agents whose goal changed or that are stuck (GoalScene::stuckSeconds) and uploads their
+  // paths. Every N frames is enough: arrivals and timers are
   // seen up to N frames late (once per simulated second is fine for whole-second waits).
   void update(const gpu::Context& context, const CrowdBuffers& crowd, double seconds);
   // Records NavFollowJob over the crowd (barrier before: the previous frame moved it): each
