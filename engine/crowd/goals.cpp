@@ -222,11 +222,12 @@ std::vector<uint32_t> GoalMachine::evaluate(std::span<const glm::vec2> positions
     if (!started_) {
       enter(i, scene_.groups[group].initial, positions[i], seconds);
       changed.push_back(i);
-    } else if (step(i, positions[i], seconds) ||
-               replanIfStuck(i, positions[i], seconds,
-                             waypoints.empty() ? nullptr : &waypoints[i])) {
-      changed.push_back(i);
+      continue;
     }
+    const uint32_t* waypoint = waypoints.empty() ? nullptr : &waypoints[i];
+    const bool joined = joinsCrowdAtGoal(i, positions, seconds, waypoint);
+    if (step(i, positions[i], seconds, joined) || replanIfStuck(i, positions[i], seconds, waypoint))
+      changed.push_back(i);
   }
   started_ = true;
   return changed;
@@ -262,6 +263,7 @@ void GoalMachine::choose(uint32_t agent, glm::vec2 p, bool another) {
       a.target = glm::vec2(c.mirrorX ? -p.x : p.x, c.mirrorZ ? -p.y : p.y);
     return;
   }
+  a.arrivedSet = kNoState;  // off to another goal: no longer in the crowd at the last one
   const GoalSet& set = scene_.goalSets[c.goalSet];
   const uint32_t n = uint32_t(set.goals.size());
   uint32_t g = 0;
@@ -297,15 +299,19 @@ void GoalMachine::choose(uint32_t agent, glm::vec2 p, bool another) {
                             : closestGoalPoint(goal, p);
 }
 
-bool GoalMachine::step(uint32_t agent, glm::vec2 p, double seconds) {
+bool GoalMachine::step(uint32_t agent, glm::vec2 p, double seconds, bool joinedCrowd) {
   AgentGoal& a = agents_[agent];
   if (a.done) return false;
   const GoalState& st = scene_.groups[scene_.agentGroup[agent]].states[a.state];
   const bool identity = st.choice.ownPoint();
   const Goal goal =
       identity ? pointGoal(a.target) : scene_.goalSets[st.choice.goalSet].goals[a.goal];
-  if (a.reachedAt < 0.0 && goalDistance(goal, p) <= st.reach) {
+  if (a.reachedAt < 0.0 && (goalDistance(goal, p) <= st.reach || joinedCrowd)) {
     a.reachedAt = seconds;
+    if (!identity) {
+      a.arrivedSet = st.choice.goalSet;
+      a.arrivedGoal = a.goal;
+    }
     if (st.onArrival == GoalState::Arrival::Stop) {
       a.done = true;
       return false;
@@ -329,6 +335,24 @@ bool GoalMachine::step(uint32_t agent, glm::vec2 p, double seconds) {
     enter(agent, st.next, p, seconds);
     return true;
   }
+  return false;
+}
+
+bool GoalMachine::joinsCrowdAtGoal(uint32_t agent, std::span<const glm::vec2> positions,
+                                   double seconds, const uint32_t* waypoint) const {
+  const AgentGoal& a = agents_[agent];
+  if (a.done || a.reachedAt >= 0.0 || !(scene_.crowdReach > 0.0f) ||
+      !(scene_.stuckSeconds > 0.0f) || seconds - a.progressAt < double(scene_.stuckSeconds))
+    return false;
+  const GoalState& st = scene_.groups[scene_.agentGroup[agent]].states[a.state];
+  if (st.choice.ownPoint()) return false;
+  const glm::vec2 p = positions[agent];
+  if (waypoint && (*waypoint + 1 < paths_[agent].size() || !seesWaypoint(agent, p, *waypoint)))
+    return false;  // not yet heading straight for its goal, or lost (planned again instead)
+  for (uint32_t j = 0; j < agents_.size(); ++j)
+    if (j != agent && agents_[j].arrivedSet == st.choice.goalSet &&
+        agents_[j].arrivedGoal == a.goal && glm::distance(positions[j], p) <= scene_.crowdReach)
+      return true;
   return false;
 }
 

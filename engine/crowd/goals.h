@@ -121,6 +121,11 @@ struct GoalScene {
   // plans for this are rare (none in free walking). 0: never.
   float stuckSeconds = 10.0f;
   float stuckDistance = 0.5f;
+  // Held back like that (stuck, heading straight for its goal and seeing it) within this
+  // distance (m) of an agent standing at the same goal, an agent has arrived: it joined the
+  // crowd at the goal, which those standing there keep it from getting nearer. Without it the
+  // last agents to a goal many share never arrive. 0: never.
+  float crowdReach = 1.0f;
   uint32_t seed = 1;
 };
 // Problems with the scene (indices out of range, bad goals); empty when valid.
@@ -139,8 +144,12 @@ struct AgentGoal {
   double reachedAt = -1.0;     // < 0: not reached yet in this state
   float bestRemaining = 0.0f;  // the shortest remaining path length seen since it was planned
   double progressAt = 0.0;     // when that was last shortened by the scene's stuckDistance
-  uint32_t visits = 0;         // goals chosen so far (hashed into random draws)
-  bool done = false;           // in a final state, reached
+  // The goal of a set it last reached (its set kNoState: none since it chose one), kept through
+  // the states after it: agents standing there are the crowd at that goal.
+  uint32_t arrivedSet = kNoState;
+  uint32_t arrivedGoal = 0;
+  uint32_t visits = 0;  // goals chosen so far (hashed into random draws)
+  bool done = false;    // in a final state, reached
 };
 
 // The CPU side: every agent's machine and planned path. `evaluate` runs the machines on the
@@ -171,7 +180,9 @@ class GoalMachine {
  private:
   void enter(uint32_t agent, uint32_t state, glm::vec2 p, double seconds);
   void choose(uint32_t agent, glm::vec2 p, bool another);
-  bool step(uint32_t agent, glm::vec2 p, double seconds);
+  bool step(uint32_t agent, glm::vec2 p, double seconds, bool joinedCrowd);
+  bool joinsCrowdAtGoal(uint32_t agent, std::span<const glm::vec2> positions, double seconds,
+                        const uint32_t* waypoint) const;
   bool replanIfStuck(uint32_t agent, glm::vec2 p, double seconds, const uint32_t* waypoint);
   bool seesWaypoint(uint32_t agent, glm::vec2 p, uint32_t waypoint) const;
   void plan(uint32_t agent, glm::vec2 p, double seconds);

@@ -452,3 +452,38 @@ TEST_CASE("navigation: straight lines on the mesh, round a corner and past a hol
   CHECK(crowd::visibleOnMesh(square, {1, 1}, {8, 8}) == false);
   CHECK(crowd::visibleOnMesh(square, {1, 8}, {8, 8}));
 }
+
+TEST_CASE("navigation: an agent held back by the crowd standing at its goal has arrived") {
+  // Agent 0 reaches (5, 0) and stands there; agent 1 gets within 0.9 m of it, no nearer, and
+  // is held there: after 10 s without progress it has joined the crowd at the goal.
+  crowd::GoalScene scene;
+  scene.goalSets = {crowd::GoalSet{{crowd::pointGoal({5, 0})}}};
+  crowd::GoalState walk, stand;
+  walk.onArrival = crowd::GoalState::Arrival::Wait;
+  walk.next = 1;
+  walk.reach = 0.5f;
+  stand.choice.kind = crowd::GoalChoice::Kind::Identity;
+  stand.onArrival = crowd::GoalState::Arrival::Stop;
+  scene.groups = {crowd::GoalBehavior{{walk, stand}, 0, 1.3f}};
+  scene.agentGroup = {0, 0};
+  const std::vector<uint32_t> last = {1, 1};  // both head straight for the goal
+  for (const float crowdReach : {1.0f, 0.0f}) {
+    CAPTURE(crowdReach);
+    scene.crowdReach = crowdReach;
+    crowd::GoalMachine m(scene, 2);
+    m.evaluate(V{{0, 0}, {0, 1}}, 0.0, last);
+    m.evaluate(V{{4.8f, 0}, {4, 0.3f}}, 2.0, last);
+    CHECK(m.agents()[0].done);
+    CHECK(m.evaluate(V{{4.8f, 0}, {4, 0.3f}}, 11.5, last).empty());  // 9.5 s held
+    CHECK_FALSE(m.agents()[1].done);
+    m.evaluate(V{{4.8f, 0}, {4, 0.3f}}, 12.5, last);
+    CHECK(m.agents()[1].done == (crowdReach > 0.0f));
+  }
+  // Far from anyone standing at the goal, a held agent has not arrived.
+  scene.crowdReach = 1.0f;
+  crowd::GoalMachine far(scene, 2);
+  far.evaluate(V{{0, 0}, {0, 1}}, 0.0, last);
+  far.evaluate(V{{4.8f, 0}, {3, 0.3f}}, 2.0, last);
+  far.evaluate(V{{4.8f, 0}, {3, 0.3f}}, 12.5, last);
+  CHECK_FALSE(far.agents()[1].done);
+}
