@@ -1,4 +1,4 @@
-// What the two splat passes share: a sprite (a splatted joint's ellipsoid, tint and screen box)
+// What the splat passes share: a sprite (a splatted joint's ellipsoid, tint and screen box)
 // and the shading of one pixel of it into the visibility buffer. Needs joint_sprite.glsl, the
 // Frame uniform and the Visibility buffer first. CPU twin: render::splatJointsCpu.
 #ifndef THRONG_JOINT_SPLAT_COMMON_GLSL

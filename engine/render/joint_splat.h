@@ -1,9 +1,11 @@
 #pragma once
 // The compute path for small joints (a job: named inputs and outputs, validate(), record()).
-// Each joint's ellipsoid is ray-cast over its few screen pixels (one invocation per pixel, see
-// joint_splat_pixels.comp) and the nearest hit per pixel is kept in a visibility buffer of
-// (depth << 32 | colour); a full-screen pass resolves it into
-// the frame with depth. On lavapipe this is an order of magnitude cheaper than sending tens of
+// A first pass per character (joint_splat.comp) splats far characters a few pixels tall as one
+// ellipsoid each (joint_far_body.glsl) and lists the others, whose joints the second pass
+// (joint_splat_walk.comp) walks; each joint's ellipsoid is ray-cast over its few screen pixels
+// (one invocation per pixel, see joint_splat_pixels.comp). The nearest hit per pixel is kept in
+// a visibility buffer of (depth << 32 | colour), which a resolve pass puts into the frame with
+// depth. On lavapipe this is an order of magnitude cheaper than sending tens of
 // thousands of tiny sprites through the single-threaded vertex pipeline.
 #include <string>
 #include <vector>

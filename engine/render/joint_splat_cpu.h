@@ -1,6 +1,7 @@
 #pragma once
-// CPU twin of joint_splat.comp: the same sprite bounds, ray/ellipsoid hits, shading and
-// nearest-hit packing, in plain C++. Tests compare it with the GPU pass.
+// CPU twin of the joint splat's joints (joint_splat_walk.comp, joint_splat_pixels.comp): the same
+// sprite bounds, ray/ellipsoid hits, shading and nearest-hit packing, in plain C++. The far
+// bodies' twin is joint_far_body_cpu.h. Tests compare them with the GPU passes.
 #include <cstdint>
 #include <span>
 #include <vector>
