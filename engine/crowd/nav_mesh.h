@@ -92,6 +92,8 @@ PlannedPath planOnNavMesh(const NavMesh& mesh, glm::vec2 start, glm::vec2 target
 // way points are taken as visible. A target at the start is a path of two equal points (an
 // agent told to stay where it is does not walk out to the road map).
 PlannedPath planOnRoadMap(const RoadMap& map, glm::vec2 start, glm::vec2 target);
+// Whether the segments p–q and a–b cross or touch (running along the same line is not crossing).
+bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b);
 // Whether the straight line from p to q crosses none of `walls` (touching counts as crossing).
 bool visible(std::span<const Segment> walls, glm::vec2 p, glm::vec2 q);
 // The nav mesh if there is one, else the road map, else the straight line.
