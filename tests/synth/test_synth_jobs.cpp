@@ -1,16 +1,16 @@
 #include <doctest/doctest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include "anim/default_clips.h"
 #include "core/error.h"
-#include "test_support.h"
 #include "crowd/scenario.h"
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "synth/cpu_synth.h"
 #include "synth/crowd_synth.h"
-#include <glm/gtc/matrix_transform.hpp>
 #include "synth/synth_jobs.h"
 #include "synth_fixtures.h"
+#include "test_support.h"
 
 using namespace throng;
 
@@ -29,12 +29,14 @@ struct Comparison {
   float placement = 0.0f;
 };
 
-Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd, int frames, float dt) {
+Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd, int frames,
+                             float dt) {
   gpu::Context& ctx = test::gpuContext();
   synth::SynthPrograms programs(ctx, pair);
   GpuCrowdRun run{synth::uploadMotionPair(ctx, pair), crowd::uploadCrowd(ctx, cpuCrowd), {}};
   const size_t jointCount = cpuCrowd.size() * pair.jointCount();
-  run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointMatrix), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointMatrix), gpu::kStorageUsage,
+                           gpu::MemoryUse::DeviceLocal);
   std::vector<synth::JointMatrix> cpuJoints(jointCount);
   Comparison worst;
   for (int f = 0; f < frames; ++f) {
@@ -50,9 +52,12 @@ Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd
     auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, run.joints, jointCount);
     crowd::Crowd gpuCrowd;
     crowd::downloadCrowd(ctx, run.crowd, gpuCrowd);
-    worst.joints = std::max(worst.joints, test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, jointCount * 12));
-    worst.placement = std::max(worst.placement, test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpuCrowd.placement[0].x,
-                                                                      cpuCrowd.size() * 4));
+    worst.joints = std::max(
+        worst.joints,
+        test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, jointCount * 12));
+    worst.placement = std::max(
+        worst.placement, test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpuCrowd.placement[0].x,
+                                                cpuCrowd.size() * 4));
   }
   CHECK(ctx.validationMessageCount() == 0);
   return worst;
@@ -67,7 +72,10 @@ TEST_CASE("PoseJob: validity") {
   CHECK(problems[0].find("'motion'") != std::string::npos);
   CHECK(problems[1].find("'crowd'") != std::string::npos);
   CHECK(problems[2].find("'joints'") != std::string::npos);
-  CHECK_THROWS_WITH_AS(job.record(VK_NULL_HANDLE, synth::SynthPrograms(test::gpuContext(), test::syntheticPair(3, 4, 4, 1))), doctest::Contains("PoseJob is invalid"), Error);
+  CHECK_THROWS_WITH_AS(
+      job.record(VK_NULL_HANDLE,
+                 synth::SynthPrograms(test::gpuContext(), test::syntheticPair(3, 4, 4, 1))),
+      doctest::Contains("PoseJob is invalid"), Error);
 }
 
 TEST_CASE("PoseJob: an output buffer too small for the chunk is reported") {
@@ -109,7 +117,8 @@ TEST_CASE("GPU vs CPU twin: 1000 random characters on a synthetic pair, several 
 
 namespace {
 // GPU vs CPU twin on a random crowd of `characters` over `frames` frames at 30 fps.
-Comparison randomCrowdDifference(const anim::MotionPair& pair, uint32_t characters, uint64_t seed, int frames) {
+Comparison randomCrowdDifference(const anim::MotionPair& pair, uint32_t characters, uint64_t seed,
+                                 int frames) {
   crowd::ScenarioOptions options;
   options.characters = characters;
   options.seed = seed;
@@ -117,12 +126,15 @@ Comparison randomCrowdDifference(const anim::MotionPair& pair, uint32_t characte
 }
 }  // namespace
 
-TEST_CASE("fixed bones (offsets folded into the pose pass) and blended bones both match the CPU twin") {
+TEST_CASE(
+    "fixed bones (offsets folded into the pose pass) and blended bones both match the CPU twin") {
   anim::MotionPair pair = test::syntheticPair(12, 20, 16, 9);
   auto setOffset = [](anim::MotionTexture& clip, int joint, glm::vec3 offset) {
-    for (int f = 0; f < clip.frameCount; ++f) clip.texels[size_t(f) * clip.width() + size_t(2 * joint + 1)] = glm::vec4(offset, 0.0f);
+    for (int f = 0; f < clip.frameCount; ++f)
+      clip.texels[size_t(f) * clip.width() + size_t(2 * joint + 1)] = glm::vec4(offset, 0.0f);
   };
-  setOffset(pair.fast, 3, pair.slow.offset(0, 3) * 1.5f + glm::vec3(0.02f, 0.0f, 0.0f));  // blended by w
+  setOffset(pair.fast, 3,
+            pair.slow.offset(0, 3) * 1.5f + glm::vec3(0.02f, 0.0f, 0.0f));  // blended by w
   setOffset(pair.slow, 5, glm::vec3(0.0f));  // a zero-length bone, fixed and not drawn
   setOffset(pair.fast, 5, glm::vec3(0.0f));
   setOffset(pair.slow, 6, glm::vec3(0.0f, -0.3f, 0.0f));  // straight down: alignYTo's special case
@@ -135,7 +147,9 @@ TEST_CASE("fixed bones (offsets folded into the pose pass) and blended bones bot
   CHECK(randomCrowdDifference(pair, 500, 4, 4).joints <= 1e-4f);
 }
 
-TEST_CASE("motion texels in uniform buffers (small clips on a CPU device) and in storage buffers agree with the twin") {
+TEST_CASE(
+    "motion texels in uniform buffers (small clips on a CPU device) and in storage buffers agree "
+    "with the twin") {
   const uint32_t capacity = synth::uniformTexelCapacity(test::gpuContext());
   for (int frames : {20, 120}) {  // 25 joints × 2 × 120 frames = 6,000 texels: more than 64 KiB
     CAPTURE(frames);
@@ -158,7 +172,8 @@ TEST_CASE("GPU vs CPU twin: circle scenario steers identically") {
 
 namespace {
 // 1,000 random characters over four frames on a real-capture pair prepared by the engine.
-void compareOnCapture(const std::string& folder, const std::string& slow, const std::string& fast, uint64_t seed) {
+void compareOnCapture(const std::string& folder, const std::string& slow, const std::string& fast,
+                      uint64_t seed) {
   if (!test::haveSharedData(folder)) return;
   auto dir = test::sharedDataDir() / folder;
   anim::ClipPair clips = anim::loadClipPair(dir / slow, dir / fast);
@@ -174,44 +189,60 @@ void compareOnCapture(const std::string& folder, const std::string& slow, const 
 }  // namespace
 
 TEST_CASE("GPU vs CPU twin on real capture: Bandai Namco run + dash (the paper's setup)") {
-  compareOnCapture("bvh/bandai_namco", "dataset-1_run_normal_001.bvh", "dataset-1_dash_normal_001.bvh", 1);
+  compareOnCapture("bvh/bandai_namco", "dataset-1_run_normal_001.bvh",
+                   "dataset-1_dash_normal_001.bvh", 1);
 }
 
-TEST_CASE("GPU vs CPU twin on real capture: CMU 35_17 run/jog + 09_01 run (loops cut from raw capture)") {
+TEST_CASE(
+    "GPU vs CPU twin on real capture: CMU 35_17 run/jog + 09_01 run (loops cut from raw capture)") {
   compareOnCapture("bvh/cmu", "cmu_35_17_runjog.bvh", "cmu_09_01_run.bvh", 5);
 }
 
-TEST_CASE("recordSynthesis (the frame orchestrator) matches the CPU twin on the built-in pair") {
-  gpu::Context& ctx = test::gpuContext();
+namespace {
+// The built-in run pair and a random scenario crowd of n characters on it.
+struct RunCrowd {
   anim::ClipPair clips = anim::defaultRunPair();
   anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions options;
-  options.characters = 500;
-  crowd::Crowd crowd = crowd::makeScenario(options);
+  crowd::Crowd crowd;
+  explicit RunCrowd(uint32_t n) {
+    crowd::ScenarioOptions options;
+    options.characters = n;
+    crowd = crowd::makeScenario(options);
+  }
+};
+}  // namespace
+
+TEST_CASE("recordSynthesis (the frame orchestrator) matches the CPU twin on the built-in pair") {
+  gpu::Context& ctx = test::gpuContext();
+  RunCrowd run(500);
+  auto& [clips, pair, crowd] = run;
   synth::SynthPrograms programs(ctx, pair);
   synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, crowd);
   // A small binding limit forces several pose chunks.
-  const VkDeviceSize chunkBytes = VkDeviceSize(128) * pair.jointCount() * sizeof(synth::JointMatrix);
+  const VkDeviceSize chunkBytes =
+      VkDeviceSize(128) * pair.jointCount() * sizeof(synth::JointMatrix);
   for (int f = 0; f < 3; ++f) {
-    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordSynthesis(cmd, programs, gpuSynth, 1 / 30.0f, chunkBytes); });
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, programs, gpuSynth, 1 / 30.0f, chunkBytes);
+    });
     synth::stepCrowdCpu(pair, crowd, 1 / 30.0f, 2);
   }
   std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
   synth::poseCrowdCpu(pair, crowd, cpuJoints, 2);
   auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, cpuJoints.size());
-  float worst = test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12);
+  float worst =
+      test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12);
   MESSAGE("orchestrated synthesis: max |GPU - CPU| ", worst);
   CHECK(worst <= 1e-4f);
   CHECK(ctx.validationMessageCount() == 0);
 }
 
-TEST_CASE("speed changes every T seconds: new targets drawn per epoch, applied at cycle end (GPU = CPU)") {
+TEST_CASE(
+    "speed changes every T seconds: new targets drawn per epoch, applied at cycle end (GPU = "
+    "CPU)") {
   gpu::Context& ctx = test::gpuContext();
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions options;
-  options.characters = 800;
-  crowd::Crowd crowd = crowd::makeScenario(options);
+  RunCrowd run(800);
+  auto& [clips, pair, crowd] = run;
   synth::SynthPrograms programs(ctx, pair);
   synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, crowd);
   synth::SpeedSchedule gpuSchedule{0.5f, 9, 0.2f, 0.8f, 0.1f}, cpuSchedule = gpuSchedule;
@@ -220,7 +251,9 @@ TEST_CASE("speed changes every T seconds: new targets drawn per epoch, applied a
   for (int f = 0; f < 44; ++f) {  // 1.47 s: changes at 0.5 s and 1.0 s
     anim::SpeedRetarget r = gpuSchedule.advance(dt);
     epochs += r.epoch > 0;
-    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { synth::recordSynthesis(cmd, programs, gpuSynth, dt, 1u << 27, r); });
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, programs, gpuSynth, dt, 1u << 27, r);
+    });
     synth::stepCrowdCpu(pair, crowd, dt, 2, cpuSchedule.advance(dt));
   }
   CHECK(epochs == 2);
@@ -232,30 +265,32 @@ TEST_CASE("speed changes every T seconds: new targets drawn per epoch, applied a
     REQUIRE(gpuCrowd.motion[i].y == crowd.motion[i].y);
     CHECK(crowd.motion[i].z >= 0.2f - 1e-6f);
     CHECK(crowd.motion[i].z <= 0.8f + 1e-6f);
-    CHECK(std::abs(crowd.motion[i].z * 10.0f - std::round(crowd.motion[i].z * 10.0f)) < 1e-4f);  // bucketed
+    CHECK(std::abs(crowd.motion[i].z * 10.0f - std::round(crowd.motion[i].z * 10.0f)) <
+          1e-4f);  // bucketed
     changed += crowd.motion[i].y == crowd.motion[i].z;
   }
-  CHECK(test::maxAbsDifference(&gpuCrowd.placement[0].x, &crowd.placement[0].x, crowd.size() * 4) <= 1e-4f);
+  CHECK(test::maxAbsDifference(&gpuCrowd.placement[0].x, &crowd.placement[0].x, crowd.size() * 4) <=
+        1e-4f);
   CHECK(changed > crowd.size() / 2);  // most characters finished a cycle since the last change
   CHECK(ctx.validationMessageCount() == 0);
 }
 
-TEST_CASE("coverage LOD in the synthesis: thresholds 0 equal the full path; masked joints are skipped") {
+TEST_CASE(
+    "coverage LOD in the synthesis: thresholds 0 equal the full path; masked joints are skipped") {
   gpu::Context& ctx = test::gpuContext();
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions options;
-  options.characters = 600;
-  crowd::Crowd crowd = crowd::makeScenario(options);
+  RunCrowd run(600);
+  auto& [clips, pair, crowd] = run;
   synth::SynthPrograms programs(ctx, pair);
   glm::mat4 view = glm::lookAt(glm::vec3(0, 20, -40), glm::vec3(0), glm::vec3(0, 1, 0));
   synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
   synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd);
-  synth::CrowdSynth allJoints =
-      synth::makeCrowdSynth(ctx, pair, crowd, {}, {true, synth::CoverageThresholds::uniform(0.0f), &clips.slow.skeleton});
-  synth::CrowdSynth lod = synth::makeCrowdSynth(ctx, pair, crowd, {}, {true, {}, &clips.slow.skeleton});
+  synth::CrowdSynth allJoints = synth::makeCrowdSynth(
+      ctx, pair, crowd, {}, {true, synth::CoverageThresholds::uniform(0.0f), &clips.slow.skeleton});
+  synth::CrowdSynth lod =
+      synth::makeCrowdSynth(ctx, pair, crowd, {}, {true, {}, &clips.slow.skeleton});
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, lod.joints.get(), 0, VK_WHOLE_SIZE, 0u);  // to see which joints get written
+    vkCmdFillBuffer(cmd, lod.joints.get(), 0, VK_WHOLE_SIZE,
+                    0u);  // to see which joints get written
     gpu::computeToComputeBarrier(cmd);
     synth::recordSynthesis(cmd, programs, plain, 1 / 30.0f, 1u << 27);
     synth::recordSynthesis(cmd, programs, allJoints, 1 / 30.0f, 1u << 27, {}, &camera);
@@ -278,11 +313,13 @@ TEST_CASE("coverage LOD in the synthesis: thresholds 0 equal the full path; mask
         REQUIRE(test::maxAbsDifference(got, &a[i * joints + j].row0.x, 12) == 0.0f);
       } else {
         ++skipped;
-        REQUIRE(test::maxAbsDifference(got, std::vector<float>(12, 0.0f).data(), 12) == 0.0f);  // never written
+        REQUIRE(test::maxAbsDifference(got, std::vector<float>(12, 0.0f).data(), 12) ==
+                0.0f);  // never written
       }
     }
   }
-  MESSAGE("LOD levels far/mid/near: ", levels[0], "/", levels[1], "/", levels[2], "; joints skipped ", skipped, " of ", n);
+  MESSAGE("LOD levels far/mid/near: ", levels[0], "/", levels[1], "/", levels[2],
+          "; joints skipped ", skipped, " of ", n);
   // Far characters synthesize 21 of the built-in 25 joints (every level keeps four limbs), so a
   // crowd mostly far skips about a sixth of the joints.
   CHECK(skipped > n / 8);
@@ -292,11 +329,8 @@ TEST_CASE("coverage LOD in the synthesis: thresholds 0 equal the full path; mask
 
 TEST_CASE("coverage LOD done by the root motion pass equals the coverage pass, mask for mask") {
   gpu::Context& ctx = test::gpuContext();
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions options;
-  options.characters = 900;
-  crowd::Crowd crowd = crowd::makeScenario(options);
+  RunCrowd run(900);
+  auto& [clips, pair, crowd] = run;
   synth::SynthPrograms programs(ctx, pair);
   const synth::LodOptions lodOptions{true, {}, &clips.slow.skeleton};
   synth::CrowdSynth separate = synth::makeCrowdSynth(ctx, pair, crowd, {}, lodOptions);
@@ -320,7 +354,8 @@ TEST_CASE("coverage LOD done by the root motion pass equals the coverage pass, m
     auto a = gpu::readback<synth::CoverageMask>(ctx, separate.masks, crowd.size());
     auto b = gpu::readback<synth::CoverageMask>(ctx, fused.masks, crowd.size());
     REQUIRE(std::memcmp(a.data(), b.data(), a.size() * sizeof(synth::CoverageMask)) == 0);
-    for (size_t i = 0; i < crowd.size(); ++i) levelChanges += f > 0 && a[i].level != before[i].level;
+    for (size_t i = 0; i < crowd.size(); ++i)
+      levelChanges += f > 0 && a[i].level != before[i].level;
     before = a;
   }
   // The joints this frame's masks asked for (the others hold whatever was there before).
