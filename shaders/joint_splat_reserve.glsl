@@ -57,10 +57,26 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
 }
 
+// The pixel of entry i of a box boxWidth wide at lo, the row by a float division as in
+// joint_splat_pixels.comp (lavapipe divides integers one lane at a time).
+ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
+  uint row = uint((float(i) + 0.5) / float(boxWidth));
+  return lo + ivec2(i - row * boxWidth, row);
+}
+
+// A far body's hit pixel: its visibility atomicMin and, when the entries fit, its entry.
+void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint entry) {
+  uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
+  atomicMin(visibility[pixel], packed);
+  if (fits) owners[entry] = pixel | kSplatPixelEntry;
+}
+
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than
 // through a sprite. Shaded once, where the ray through its centre hits it, and at that depth:
-// per pixel only whether the ray meets the ellipsoid (farBodyPixel), asked twice, so that only
-// the pixels hit get entries (naming them, for the resolve).
+// per pixel only whether the ray meets the ellipsoid (farBodyPixel), so that only the pixels hit
+// get entries (naming them, for the resolve). A box of at most 64 pixels keeps its hits as bits
+// and visits only those (lanes wait for the most hits, not the largest box); a larger one asks
+// each pixel again.
 void splatBody(JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
@@ -68,24 +84,32 @@ void splatBody(JointSprite s, vec3 tint) {
   uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
   mat3 inv = transpose(mat3(s.inverse0.xyz, s.inverse1.xyz, s.inverse2.xyz));
   vec3 o = inv * frame.eye.xyz + vec3(s.inverse0.w, s.inverse1.w, s.inverse2.w);
-  // One loop over the box's pixels (not rows then columns), the row by a float division as in
-  // joint_splat_pixels.comp: lanes wait for the largest box, not the tallest and the widest.
   uint hits = 0u;
-  for (uint i = 0u; i < pixelCount; ++i) {
-    uint row = uint((float(i) + 0.5) / float(boxWidth));
-    hits += farBodyPixel(o, inv, vec2(lo + ivec2(i - row * boxWidth, row)) + 0.5) ? 1u : 0u;
+  uvec2 hitBits = uvec2(0u);
+  for (uint i = 0u; i < pixelCount; ++i) {  // one loop over the box, not rows then columns
+    if (!farBodyPixel(o, inv, vec2(boxPixel(lo, boxWidth, i)) + 0.5)) continue;
+    ++hits;
+    if (i < 32u) hitBits.x |= 1u << i;
+    else if (i < 64u) hitBits.y |= 1u << (i - 32u);
   }
   uint sprite;
   bool fits;
   uint first = reserveEntries(0u, hits, sprite, fits);
   uint64_t packed = farBodyShade(s, tint);
+  if (pixelCount <= 64u) {
+    for (uint k = 0u; k < hits; ++k) {
+      bool low = hitBits.x != 0u;
+      uint i = low ? uint(findLSB(hitBits.x)) : 32u + uint(findLSB(hitBits.y));
+      if (low) hitBits.x &= hitBits.x - 1u;
+      else hitBits.y &= hitBits.y - 1u;
+      splatBodyPixel(boxPixel(lo, boxWidth, i), packed, fits, first + k);
+    }
+    return;
+  }
   for (uint i = 0u, k = 0u; i < pixelCount; ++i) {
-    uint row = uint((float(i) + 0.5) / float(boxWidth));
-    ivec2 xy = lo + ivec2(i - row * boxWidth, row);
+    ivec2 xy = boxPixel(lo, boxWidth, i);
     if (!farBodyPixel(o, inv, vec2(xy) + 0.5)) continue;
-    uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
-    atomicMin(visibility[pixel], packed);
-    if (fits) owners[first + k] = pixel | kSplatPixelEntry;
+    splatBodyPixel(xy, packed, fits, first + k);
     ++k;
   }
 }
