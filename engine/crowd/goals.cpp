@@ -226,6 +226,7 @@ std::vector<uint32_t> GoalMachine::evaluate(std::span<const glm::vec2> positions
     }
     const uint32_t* waypoint = waypoints.empty() ? nullptr : &waypoints[i];
     const bool joined = joinsCrowdAtGoal(i, positions, seconds, waypoint);
+    crowdArrivals_ += joined ? 1 : 0;
     if (step(i, positions[i], seconds, joined) || replanIfStuck(i, positions[i], seconds, waypoint))
       changed.push_back(i);
   }
@@ -377,7 +378,8 @@ bool GoalMachine::replanIfStuck(uint32_t agent, glm::vec2 p, double seconds,
     return false;
   }
   if (seconds - a.progressAt < double(scene_.stuckSeconds)) return false;
-  if (waypoint && seesWaypoint(agent, p, *waypoint)) return false;  // held back in a queue
+  if (scene_.navMesh.empty() && scene_.roadMap.empty()) return false;  // the same line again
+  if (waypoint && seesWaypoint(agent, p, *waypoint)) return false;     // held back in a queue
   plan(agent, p, seconds);
   ++stuckPlans_;
   return true;

@@ -118,7 +118,8 @@ struct GoalScene {
   // nav mesh or behind a wall; GoalMachine::evaluate), is planned again from where it stands: the
   // crowd pushed it off its path, past a corner and back behind it, or behind a wall. Walking
   // agents shrink their path by about a metre a second and queued ones see their waypoint, so
-  // plans for this are rare (none in free walking). 0: never.
+  // plans for this are rare (none in free walking; none without a nav mesh or road map, where
+  // the plan is the straight line again). 0: never.
   float stuckSeconds = 10.0f;
   float stuckDistance = 0.5f;
   // Held back like that (stuck, heading straight for its goal and seeing it) within this
@@ -174,8 +175,9 @@ class GoalMachine {
   uint32_t agentsAtGoal() const;  // agents done (in a final state, reached)
   bool allDone() const;           // every agent with goals is done
   uint64_t plans() const { return plans_; }
-  uint64_t partialPlans() const { return partialPlans_; }  // plans that fell back (nav_mesh.h)
-  uint64_t stuckPlans() const { return stuckPlans_; }      // of plans(): agents that were stuck
+  uint64_t partialPlans() const { return partialPlans_; }    // plans that fell back (nav_mesh.h)
+  uint64_t stuckPlans() const { return stuckPlans_; }        // of plans(): agents that were stuck
+  uint64_t crowdArrivals() const { return crowdArrivals_; }  // arrivals in the crowd at a goal
 
  private:
   void enter(uint32_t agent, uint32_t state, glm::vec2 p, double seconds);
@@ -194,6 +196,7 @@ class GoalMachine {
   uint64_t plans_ = 0;
   uint64_t partialPlans_ = 0;
   uint64_t stuckPlans_ = 0;
+  uint64_t crowdArrivals_ = 0;
   bool started_ = false;
 };
 

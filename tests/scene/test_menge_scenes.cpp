@@ -30,6 +30,7 @@ struct RunResult {
   bool done = false;
   uint32_t atGoal = 0;
   uint32_t atGoalAfterMinute = 0;  // at the first goal update after 60 s (or the end, if sooner)
+  uint64_t stuckPlans = 0, crowdArrivals = 0;  // twin: the goal machine's (goals.h)
   crowd::WallViolations walls;
 };
 
@@ -125,6 +126,8 @@ RunResult runTwin(const scene::SceneSetup& setup, const crowd::WallGrid* walls, 
   }
   r.done = machine.allDone();
   r.atGoal = machine.agentsAtGoal();
+  r.stuckPlans = machine.stuckPlans();
+  r.crowdArrivals = machine.crowdArrivals();
   return r;
 }
 
@@ -160,9 +163,10 @@ TEST_CASE("Menge scenes run with goals and walls: no wall crossed, all but the t
             std::string(r.done ? " (all)" : ""), " (", r.atGoalAfterMinute, " after 60 s)",
             "; wall crossings ", r.walls.crossings, ", closer than the radius ", r.walls.tooClose,
             " | twin after ", twin.seconds, " s ", twin.atGoal, " at their final goal",
-            std::string(twin.done ? " (all)" : ""), " (", twin.atGoalAfterMinute,
-            " after 60 s); wall crossings ", twin.walls.crossings, ", closer than the radius ",
-            twin.walls.tooClose);
+            std::string(twin.done ? " (all)" : ""), " (", twin.atGoalAfterMinute, " after 60 s; ",
+            twin.stuckPlans, " stuck agents planned again, ", twin.crowdArrivals,
+            " arrived in the crowd at their goal); wall crossings ", twin.walls.crossings,
+            ", closer than the radius ", twin.walls.tooClose);
     CHECK(r.walls.crossings == 0);
     CHECK(r.walls.tooClose == 0);
     CHECK(twin.walls.crossings == 0);
@@ -173,7 +177,8 @@ TEST_CASE("Menge scenes run with goals and walls: no wall crossed, all but the t
 }
 
 // The two large scenes to their end state (everyone at a final goal or waiting there), GPU path:
-// about 12 minutes on 2 cores, so not in CI; run it with --no-skip.
+// about 4 minutes on 2 cores (the trade show ends after about 6 simulated minutes), so not in
+// CI; run it with --no-skip.
 TEST_CASE("Menge stadium and tradeshow reach their end state (long)" * doctest::skip()) {
   if (!test::haveSharedData("scenes/menge")) return;
   for (const char* name : {"stadium", "tradeshow"}) {
