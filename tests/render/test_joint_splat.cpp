@@ -57,15 +57,15 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
                     std::span<const synth::CoverageMask> masks,
                     const gpu_types::CoverageParts* levels,
                     uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
-                    uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity) {
+                    uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity,
+                    float farBodyPixels = gpu_types::kSplatFarBodyPixels, float maxPixels = 12.0f,
+                    uint32_t width = 320, uint32_t height = 180) {
   const size_t characters = matrices.size() / joints;
-  const uint32_t width = 320, height = 180;
   render::DrawParams params;
   params.camera = camera;
   params.width = width;
   params.height = height;
   gpu_types::FrameUniforms frame = render::makeFrameUniforms(params);
-  const float maxPixels = 12.0f;
 
   gpu::Context& ctx = test::gpuContext();
   gpu::Buffer jointBuffer = gpu::makeStorageBuffer<synth::JointMatrix>(ctx, matrices);
@@ -78,7 +78,8 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
                     gpu::MemoryUse::DeviceLocal);
   gpu::Buffer nearList(ctx, VkDeviceSize(matrices.size()) * 4, gpu::kStorageUsage,
                        gpu::MemoryUse::DeviceLocal);
-  render::SplatPrograms programs = render::makeSplatPrograms(ctx, spriteCapacity, pixelCapacity);
+  render::SplatPrograms programs =
+      render::makeSplatPrograms(ctx, spriteCapacity, pixelCapacity, farBodyPixels);
   render::SplatLists lists = render::makeSplatLists(ctx, spriteCapacity, pixelCapacity);
   render::SplatJob job{&jointBuffer,
                        &uniforms,
@@ -120,11 +121,20 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   REQUIRE(job.validate().empty());
   gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) { job.record(cmd, programs); });
 
-  const render::SplatInputsCpu drawn =
-      render::splatInputsCpu(matrices, joints, bones, masks, levels, frame, maxPixels);
+  const render::SplatInputsCpu drawn = render::splatInputsCpu(
+      matrices, joints, bones, masks, levels, frame, maxPixels, farBodyPixels);
   if (levels) {  // the far bodies are splatted too (test_far_body.cpp bounds how they look)
-    MESSAGE(drawn.bodies.size(), " characters drawn as their far body");
+    // splatBody keeps the hits of boxes up to 64 pixels as bits and asks larger ones again
+    // (counted here by the boxes' extents, near enough to their pixel counts).
+    size_t largeBoxes = 0;
+    for (const render::FarBodyCpu& b : drawn.bodies) {
+      const render::JointSpriteCpu s = render::jointSpriteCpu(b.body, frame);
+      largeBoxes += (s.hi.x - s.lo.x + 1.0f) * (s.hi.y - s.lo.y + 1.0f) > 64.0f;
+    }
+    MESSAGE(drawn.bodies.size(), " characters drawn as their far body, ", largeBoxes,
+            " with boxes over 64 pixels");
     CHECK(drawn.bodies.size() > 20);
+    if (farBodyPixels > 24.0f) CHECK(largeBoxes > 5);
   }
   render::SplatCpuResult cpu =
       render::splatJointsCpu(drawn.joints, frame, joints, maxPixels, width, height);
@@ -223,5 +233,10 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
     CHECK(perLevel[0] > 20);
     CHECK(perLevel[1] + perLevel[2] > 20);
     checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels);
+    // Far bodies up to 40 pixels tall in a 1280x720 frame: some boxes pass the 64 pixels
+    // splatBody keeps as bits.
+    checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels,
+                   gpu_types::kSplatSpriteCapacity, gpu_types::kSplatPixelCapacity, 40.0f, 48.0f,
+                   1280, 720);
   }
 }
