@@ -1,6 +1,8 @@
 #pragma once
 // Test helper: a scene's frames through scene::recordFrame into a 320×180 offscreen target, the
 // last one read back. The render tests that compare two ways of drawing the same crowd use it.
+#include <array>
+
 #include "core/image.h"
 #include "gpu/commands.h"
 #include "gpu/timestamps.h"
@@ -30,6 +32,25 @@ inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const ren
     });
   }
   return render::readbackImage(target);
+}
+
+// One crowd animated by one pair, three frames through the per-pixel resolve (the offscreen
+// path, [0]) and through the full-screen pass (the swapchain's, [1]): the ground planes are made
+// when the view comes a second time, then reused.
+inline std::array<ImageRgba8, 2> renderBothResolves(gpu::Context& ctx, const crowd::Crowd& crowd,
+                                                    const anim::MotionPair& pair,
+                                                    const render::Camera& camera,
+                                                    const synth::LodOptions& lod) {
+  std::array<ImageRgba8, 2> images;
+  for (int copies = 0; copies < 2; ++copies) {
+    scene::SceneSetup setup;
+    setup.crowd = crowd;
+    setup.pairs.push_back(pair);
+    setup.groupFirst = {0, uint32_t(crowd.size())};
+    scene::Scene scene(ctx, std::move(setup), {}, lod);
+    images[copies] = renderFrames(ctx, scene, camera, 3, copies == 1);
+  }
+  return images;
 }
 
 }  // namespace throng::test

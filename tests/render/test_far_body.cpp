@@ -162,15 +162,7 @@ TEST_CASE("far body: its pixels reach the frame through both resolves alike") {
   synth::LodOptions lod;
   lod.enabled = true;
   lod.skeleton = &clips.slow.skeleton;
-  ImageRgba8 images[2];
-  for (int copies = 0; copies < 2; ++copies) {
-    scene::SceneSetup setup;
-    setup.crowd = crowd;
-    setup.pairs.push_back(pair);
-    setup.groupFirst = {0, uint32_t(crowd.size())};
-    scene::Scene scene(ctx, std::move(setup), {}, lod);
-    images[copies] = test::renderFrames(ctx, scene, camera, 3, copies == 1);
-  }
+  const std::array<ImageRgba8, 2> images = test::renderBothResolves(ctx, crowd, pair, camera, lod);
   const ImageDiff diff = compareImages(images[1], images[0], 2);
   MESSAGE("wide, 3000 characters at 320x180 with LOD: per-pixel resolve vs full-screen pass: mean ",
           diff.meanAbsError, ", max ", diff.maxError);

@@ -32,16 +32,8 @@ TEST_CASE("splat resolve: ground planes + per-pixel resolve equal the full-scree
   for (const char* preset : {"wide", "street"}) {
     CAPTURE(preset);
     render::Camera camera = render::cameraPreset(preset, crowd::scenarioExtent(scenario));
-    ImageRgba8 images[2];
-    for (int copies = 0; copies < 2; ++copies) {
-      scene::SceneSetup setup;
-      setup.crowd = crowd;
-      setup.pairs.push_back(pair);
-      setup.groupFirst = {0, uint32_t(crowd.size())};
-      scene::Scene scene(ctx, std::move(setup), {}, synth::LodOptions{});
-      // Three frames: the planes are made when the view comes a second time, then reused.
-      images[copies] = test::renderFrames(ctx, scene, camera, 3, copies == 1);
-    }
+    const std::array<ImageRgba8, 2> images =
+        test::renderBothResolves(ctx, crowd, pair, camera, synth::LodOptions{});
     ImageDiff diff = compareImages(images[1], images[0], 2);
     MESSAGE(std::string(preset), ": per-pixel resolve vs full-screen pass: mean ",
             diff.meanAbsError, ", max ", diff.maxError, ", pixels over 2 levels ",
