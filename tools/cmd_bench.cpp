@@ -243,7 +243,8 @@ nlohmann::json clothJson(const ClothBenchResult& r, double targetMs) {
           {"demoted", s.demoted}};
 }
 
-void runBench(BenchOptions& o) {
+// Checks the options before any row runs (a bad option or file fails first).
+void checkBenchOptions(BenchOptions& o) {
   if (o.quick) {
     o.counts = {1000};
     o.frames = 5;
@@ -260,20 +261,25 @@ void runBench(BenchOptions& o) {
   for (uint32_t n : o.frameCounts)
     if (n == 0 || n > 4000000) fail("--frame-characters: each count must be 1..4000000, got ", n);
   parseSize(o.size);
-  if (!o.cloth.empty()) secondary::readClothDatabase(o.cloth);  // a bad file fails before any row
+  if (!o.cloth.empty()) secondary::readClothDatabase(o.cloth);
   if (!o.json.empty()) ensureWritableDirectory(std::filesystem::absolute(o.json).parent_path());
   if (!o.experiments.empty()) ensureWritableDirectory(o.experiments);
+}
 
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  gpu::ContextOptions contextOptions;
-  contextOptions.device = o.device;
-  gpu::Context context(contextOptions);
-  synth::SynthPrograms programs(context, pair);
-  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-
+// What every row needs, and the rows measured so far (printed as they come).
+struct BenchSession {
+  const BenchOptions& o;
+  const gpu::Context& context;
+  const anim::ClipPair& clips;
+  const anim::MotionPair& pair;
+  const synth::SynthPrograms& programs;
+  unsigned threads = 1;
+  Progress progress;
+  long long stagesDone = 0;
   std::vector<Row> rows;
-  auto report = [&](const Row& r) {
+
+  void next(const std::string& name) { progress.stage(stagesDone++, name); }
+  void report(const Row& r) {
     rows.push_back(r);
     std::printf("%-34s %9u %14.3f %12.3f\n", r.variant.c_str(), r.characters, r.synthesisMs,
                 r.renderMs);
@@ -283,105 +289,115 @@ void runBench(BenchOptions& o) {
     if (r.renderMs > 0.0)
       std::printf("  whole frame (synthesis + render): %.2f ms\n", r.synthesisMs + r.renderMs);
     std::fflush(stdout);
-  };
-  std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
-  std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
-  // A bar with the ETA over the rows on a terminal (stderr; the table stays on stdout).
-  const std::vector<uint32_t> counts = o.clothOnly ? std::vector<uint32_t>{} : o.counts;
-  const bool others = !o.clothOnly;
+  }
+};
+
+// The rows the options ask for, for the progress bar's ETA.
+long long benchStageCount(const BenchOptions& o, unsigned threads) {
+  if (o.clothOnly) return o.cloth.empty() ? 0 : 1;
   const long long perCount = (o.wants("gpu") ? 1 : 0) + (o.wants("lod") ? 1 : 0) +
                              (o.wants("lod+cache") ? 1 : 0) +
                              (o.wants("cpu") ? (threads > 1 ? 2 : 1) : 0);
-  Progress progress(
-      "bench",
-      static_cast<long long>(counts.size()) * perCount + (others && o.wants("clip-sets") ? 1 : 0) +
-          (others && o.wants("render") ? 2 : 0) +
-          (others && o.wants("frame") ? 2 * static_cast<long long>(o.frameCounts.size()) : 0) +
-          (o.cloth.empty() ? 0 : 1));
-  long long stagesDone = 0;
-  auto next = [&](const std::string& name) { progress.stage(stagesDone++, name); };
-  const anim::Skeleton& skeleton = clips.slow.skeleton;
-  for (uint32_t n : counts) {
+  return static_cast<long long>(o.counts.size()) * perCount + (o.wants("clip-sets") ? 1 : 0) +
+         (o.wants("render") ? 2 : 0) +
+         (o.wants("frame") ? 2 * static_cast<long long>(o.frameCounts.size()) : 0) +
+         (o.cloth.empty() ? 0 : 1);
+}
+
+void runSynthesisRows(BenchSession& s) {
+  const anim::Skeleton& skeleton = s.clips.slow.skeleton;
+  for (uint32_t n : s.o.counts) {
     const std::pair<const char*, Variant> gpuRows[] = {
         {"gpu", Variant::Full}, {"lod", Variant::Lod}, {"lod+cache", Variant::LodCache}};
     for (const auto& [kind, variant] : gpuRows) {
-      if (!o.wants(kind)) continue;
-      next(concat("GPU synthesis (", kind, "), ", n, " characters"));
-      report(benchGpuSynthesis(context, programs, pair, skeleton, n, o, variant));
+      if (!s.o.wants(kind)) continue;
+      s.next(concat("GPU synthesis (", kind, "), ", n, " characters"));
+      s.report(benchGpuSynthesis(s.context, s.programs, s.pair, skeleton, n, s.o, variant));
     }
-    if (!o.wants("cpu")) continue;
-    next(concat("CPU twin, 1 thread, ", n, " characters"));
-    report(benchCpuSynthesis(pair, n, 1, o));
-    if (threads > 1) {
-      next(concat("CPU twin, ", threads, " threads, ", n, " characters"));
-      report(benchCpuSynthesis(pair, n, threads, o));
-    }
-  }
-  if (others && o.wants("clip-sets")) {
-    next("four clip sets against one");
-    const ClipSetBenchResult sets = benchClipSets(context, o.clipSetCharacters, o.frames, o.warmup);
-    report({"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames,
-            sets.onePasses});
-    report({"gpu-synthesis-lod+cache-4-clip-sets", sets.characters, sets.fourSetsMs, 0.0,
-            sets.frames, sets.fourPasses});
-    std::printf(
-        "  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
-        sets.ratioMedian, sets.ratioMin, sets.ratioMax);
-  }
-  if (others && o.wants("render")) {
-    next("synthesis and render");
-    report(benchRender(context, pair, skeleton, o, Variant::Full, o.renderCharacters));
-    next("synthesis and render with LOD and cache");
-    report(benchRender(context, pair, skeleton, o, Variant::LodCache, o.renderCharacters));
-  }
-  for (uint32_t n : others&& o.wants("frame") ? o.frameCounts : std::vector<uint32_t>{}) {
-    for (const char* camera : {"wide", "street"}) {
-      next(concat("whole frame, ", n, " characters, ", camera, " camera"));
-      report(benchRender(context, pair, skeleton, o, Variant::LodCache, n, camera));
+    if (!s.o.wants("cpu")) continue;
+    s.next(concat("CPU twin, 1 thread, ", n, " characters"));
+    s.report(benchCpuSynthesis(s.pair, n, 1, s.o));
+    if (s.threads > 1) {
+      s.next(concat("CPU twin, ", s.threads, " threads, ", n, " characters"));
+      s.report(benchCpuSynthesis(s.pair, n, s.threads, s.o));
     }
   }
-  std::optional<ClothBenchResult> cloth;
-  if (!o.cloth.empty()) {
-    ClothBenchOptions c;
-    c.cloth = o.cloth;
-    c.characters = o.renderCharacters;
-    c.size = o.size;
-    c.frames = o.frames;
-    c.warmup = o.warmup;
-    next("caped crowd");
-    cloth = benchCloth(context, c);
-    report({cloth->variant, cloth->characters, cloth->synthesisMs, cloth->renderMs, cloth->frames});
-    printClothRow(*cloth, c.targetMs);
-  } else {
-    std::printf("%s\n", kClothSkipped);
-  }
-  progress.finish();
-  printTargetRatios(rows, threads);
-  if (!o.experiments.empty()) {
-    ExperimentOptions experiment;
-    experiment.counts = o.counts;
-    // The experiments go to a million characters where memory allows: one joint buffer on
-    // the device at a time (1.2 GB at 1M × 25 joints; lavapipe's heap is 2 GiB).
-    const uint64_t millionBytes = 1000000ull * pair.jointCount() * sizeof(synth::JointMatrix);
-    if (!o.quick && context.info().deviceLocalBytes >= millionBytes + millionBytes / 4 &&
-        std::find(o.counts.begin(), o.counts.end(), 1000000u) == o.counts.end())
-      experiment.counts.push_back(1000000);
-    experiment.outDir = o.experiments;
-    if (o.quick) experiment.frames = 8;
-    runScalingExperiment(context, programs, pair, clips.slow.skeleton, experiment);
-    runCacheExperiment(context, programs, pair, experiment);
-    runHitRateExperiment(context, programs, pair, experiment);
-  }
+}
 
+void runClipSetRows(BenchSession& s) {
+  s.next("four clip sets against one");
+  const ClipSetBenchResult sets =
+      benchClipSets(s.context, s.o.clipSetCharacters, s.o.frames, s.o.warmup);
+  s.report({"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames,
+            sets.onePasses});
+  s.report({"gpu-synthesis-lod+cache-4-clip-sets", sets.characters, sets.fourSetsMs, 0.0,
+            sets.frames, sets.fourPasses});
+  std::printf(
+      "  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
+      sets.ratioMedian, sets.ratioMin, sets.ratioMax);
+}
+
+void runRenderRows(BenchSession& s) {
+  const anim::Skeleton& skeleton = s.clips.slow.skeleton;
+  if (s.o.wants("render")) {
+    s.next("synthesis and render");
+    s.report(benchRender(s.context, s.pair, skeleton, s.o, Variant::Full, s.o.renderCharacters));
+    s.next("synthesis and render with LOD and cache");
+    s.report(
+        benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, s.o.renderCharacters));
+  }
+  if (!s.o.wants("frame")) return;
+  for (uint32_t n : s.o.frameCounts)
+    for (const char* camera : {"wide", "street"}) {
+      s.next(concat("whole frame, ", n, " characters, ", camera, " camera"));
+      s.report(benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, n, camera));
+    }
+}
+
+std::optional<ClothBenchResult> runClothRow(BenchSession& s) {
+  if (s.o.cloth.empty()) {
+    std::printf("%s\n", kClothSkipped);
+    return std::nullopt;
+  }
+  ClothBenchOptions c;
+  c.cloth = s.o.cloth;
+  c.characters = s.o.renderCharacters;
+  c.size = s.o.size;
+  c.frames = s.o.frames;
+  c.warmup = s.o.warmup;
+  s.next("caped crowd");
+  ClothBenchResult cloth = benchCloth(s.context, c);
+  s.report({cloth.variant, cloth.characters, cloth.synthesisMs, cloth.renderMs, cloth.frames});
+  printClothRow(cloth, c.targetMs);
+  return cloth;
+}
+
+void runExperiments(const BenchSession& s) {
+  ExperimentOptions experiment;
+  experiment.counts = s.o.counts;
+  // The experiments go to a million characters where memory allows: one joint buffer on
+  // the device at a time (1.2 GB at 1M × 25 joints; lavapipe's heap is 2 GiB).
+  const uint64_t millionBytes = 1000000ull * s.pair.jointCount() * sizeof(synth::JointMatrix);
+  if (!s.o.quick && s.context.info().deviceLocalBytes >= millionBytes + millionBytes / 4 &&
+      std::find(s.o.counts.begin(), s.o.counts.end(), 1000000u) == s.o.counts.end())
+    experiment.counts.push_back(1000000);
+  experiment.outDir = s.o.experiments;
+  if (s.o.quick) experiment.frames = 8;
+  runScalingExperiment(s.context, s.programs, s.pair, s.clips.slow.skeleton, experiment);
+  runCacheExperiment(s.context, s.programs, s.pair, experiment);
+  runHitRateExperiment(s.context, s.programs, s.pair, experiment);
+}
+
+nlohmann::json benchJson(const BenchSession& s, const std::optional<ClothBenchResult>& cloth) {
   nlohmann::json doc;
   doc["schema"] = "throng.bench";
   doc["version"] = 1;
-  doc["device"] = context.info().name;
-  doc["driver"] = context.info().driver;
-  doc["joints_per_character"] = pair.jointCount();
-  doc["cpu_threads"] = threads;
-  doc["frames_measured"] = o.frames;
-  for (const Row& r : rows) {
+  doc["device"] = s.context.info().name;
+  doc["driver"] = s.context.info().driver;
+  doc["joints_per_character"] = s.pair.jointCount();
+  doc["cpu_threads"] = s.threads;
+  doc["frames_measured"] = s.o.frames;
+  for (const Row& r : s.rows) {
     nlohmann::json row = {{"variant", r.variant},
                           {"characters", r.characters},
                           {"synthesis_ms_median", r.synthesisMs},
@@ -398,8 +414,34 @@ void runBench(BenchOptions& o) {
     doc["cloth"] = clothJson(*cloth, ClothBenchOptions{}.targetMs);
   else
     doc["cloth"] = {{"skipped", kClothSkipped}};
+  return doc;
+}
+
+void runBench(BenchOptions& o) {
+  checkBenchOptions(o);
+  const anim::ClipPair clips = anim::defaultRunPair();
+  const anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  gpu::ContextOptions contextOptions;
+  contextOptions.device = o.device;
+  gpu::Context context(contextOptions);
+  const synth::SynthPrograms programs(context, pair);
+  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  std::printf("device: %s (%s)\n", context.info().name.c_str(), context.info().driver.c_str());
+  std::printf("%-34s %9s %14s %12s\n", "variant", "characters", "synthesis ms", "render ms");
+  // A bar with the ETA over the rows on a terminal (stderr; the table stays on stdout).
+  BenchSession s{
+      o, context, clips, pair, programs, threads, Progress("bench", benchStageCount(o, threads))};
+  if (!o.clothOnly) {
+    runSynthesisRows(s);
+    if (o.wants("clip-sets")) runClipSetRows(s);
+    runRenderRows(s);
+  }
+  const std::optional<ClothBenchResult> cloth = runClothRow(s);
+  s.progress.finish();
+  printTargetRatios(s.rows, threads);
+  if (!o.experiments.empty()) runExperiments(s);
   if (!o.json.empty()) {
-    writeTextFileAtomic(o.json, doc.dump(2) + "\n");
+    writeTextFileAtomic(o.json, benchJson(s, cloth).dump(2) + "\n");
     std::printf("wrote %s\n", o.json.c_str());
   }
 }
