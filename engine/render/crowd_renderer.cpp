@@ -102,9 +102,14 @@ void CrowdRenderer::ensureVisibility(uint32_t width, uint32_t height) {
   for (auto it = retiredVisibility_.begin(); it != retiredVisibility_.end();)
     it = --it->second == 0 ? retiredVisibility_.erase(it) : std::next(it);
   if (visibility_ && visibilityWidth_ == width && visibilityHeight_ == height) return;
-  if (visibility_) retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
+  if (visibility_) {
+    retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
+    retiredVisibility_.emplace_back(std::move(resolveList_), kFramesInFlight + 1);
+  }
   visibility_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint64_t),
                             gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  resolveList_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint32_t),
+                             gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   visibilityWidth_ = width;
   visibilityHeight_ = height;
 }
@@ -178,6 +183,7 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
                  &splatLists_.counters};
     job.walkList = &walkList_;
     job.walkCounts = &walkCounts_;
+    job.resolveList = &resolveList_;
     job.record(cmd, splat_);
     return &visibility_;
   }
@@ -276,8 +282,8 @@ void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, const DrawParams& params
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
       gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_),
-      gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, splatLists_.pixelOwners),
       gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, splatLists_.counters),
+      gpu::storageBinding(gpu_types::kRenderBindingResolveList, resolveList_),
       gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_),
       gpu::storageBinding(gpu_types::kRenderBindingResolveDraw, resolveDraw_)};
   gpu::dispatch(cmd, splat_.resolve, bindings, nullptr, 0,

@@ -91,6 +91,7 @@ class CrowdRenderer {
   SplatLists splatLists_;
   gpu::GraphicsProgram resolve_;
   gpu::Buffer visibility_;
+  gpu::Buffer resolveList_;  // the splatted pixels, each once (SplatJob::resolveList)
   gpu::Buffer draws_;        // indirect draws of the joints too wide to splat, one per chunk
   gpu::Buffer nearList_;     // their indices
   gpu::Buffer walkList_;     // characters whose joints the splat walks
