@@ -138,20 +138,108 @@ void runRender(RenderOptions& o) {
   namingOption(charactersOption(o.scene), [&] { renderFrames(context, o, in); });
 }
 
-void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
-  const Size size = in.size;
-  const std::filesystem::path& outDir = in.outDir;
-  // The scenario's crowd, the steered circle or the storyboard's crowd.
-  const std::unique_ptr<scene::Scene> scenePtr = makeScene(context, o.scene, in.clips);
-  scene::Scene& scene = *scenePtr;
-  const synth::CrowdSynth& synth = scene.synth();
-  render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
-  render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
+// Per-frame GPU times of the run (medians are printed) and its wall time per frame.
+struct RenderTimes {
+  const std::vector<double>& steerMs;
+  const std::vector<double>& synthMs;
+  const std::vector<double>& renderMs;
+  double wallMs = 0.0;
+};
+
+void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scene::Scene& scene,
+                      const gpu::Context& context, const RenderTimes& t,
+                      const FrameOutputStats& encoded) {
+  std::string where = o.pngs ? in.outDir.string() : "";
+  if (!o.video.empty()) where += (where.empty() ? "" : " and ") + o.video;
+  std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames,
+              scene.count(), scene.synth().jointCount(), in.size.width, in.size.height,
+              where.c_str());
+  if (scene.steered())
+    std::printf(
+        "GPU time per frame (median): steering %.2f ms, synthesis %.2f ms, render %.2f ms"
+        "  [%s]\n",
+        median(t.steerMs), median(t.synthMs), median(t.renderMs), context.info().name.c_str());
+  else
+    std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
+                median(t.synthMs), median(t.renderMs), context.info().name.c_str());
+  std::printf(
+      "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on %d worker%s, %.2f ms "
+      "per frame waiting for them\n",
+      t.wallMs, encoded.encodeMs / o.frames, encoded.workers, encoded.workers == 1 ? "" : "s",
+      encoded.waitedMs / o.frames);
+}
+
+// One command buffer, its fence and timestamps, reused frame after frame.
+struct FrameSubmitter {
+  gpu::Context& context;
+  gpu::CommandPool pool;
+  VkCommandBuffer cmd;
+  gpu::Fence fence;
+  gpu::TimestampPool timestamps;
+  explicit FrameSubmitter(gpu::Context& c)
+      : context(c), pool(c), cmd(pool.allocate()), fence(c), timestamps(c, 8) {}
+};
+
+// Records, submits and waits for one frame with its readback; its GPU times.
+scene::FrameTimings runOneFrame(FrameSubmitter& gpu, scene::Scene& scene,
+                                const scene::SceneStep& step, render::CrowdRenderer& renderer,
+                                secondary::ClothLayer* cloth, const scene::FrameSettings& settings,
+                                render::OffscreenTarget& target) {
+  gpu.timestamps.reset();
+  gpu::beginCommands(gpu.cmd);
+  const scene::FrameTimestamps marks = scene::recordFrame(
+      gpu.cmd, gpu.context, scene, step, renderer, cloth, settings, gpu.timestamps);
+  render::recordReadback(gpu.cmd, target);
+  renderer.passTimer().mark(gpu.cmd, "readback");
+  gpu::endCommands(gpu.cmd);
+  gpu::submit(gpu.context, gpu.cmd, gpu.fence.get());
+  gpu.fence.wait();
+  gpu.fence.reset();
+  return scene::readFrameTimings(gpu.timestamps, marks);
+}
+
+// What the run left in the scene: goals reached, the motion cache's counters.
+void printSceneSummary(const scene::Scene& scene) {
+  if (scene.hasGoals())
+    std::printf("goals: %u of %u agents reached their final goal%s\n", scene.agentsAtGoal(),
+                scene.count(), scene.goalsDone() ? " (all done)" : "");
+  if (!scene.synth().cached()) return;
+  const synth::MotionCacheStats c = synth::readCacheStats(scene.synth());
+  std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n",
+              c.hits, c.misses, c.evictions, c.entries, c.bytesUsed / 1048576.0,
+              c.budgetBytes / 1048576.0);
+}
+
+// The frame's settings for the offscreen target: the scene's camera, ground and LOD tint.
+scene::FrameSettings offscreenSettings(const RenderOptions& o, const RenderInputs& in,
+                                       render::OffscreenTarget& target) {
   scene::FrameSettings settings;
   settings.camera = in.camera;
   settings.targets = render::offscreenFrameTargets(target);
   settings.groundExtent = sceneGroundExtent(o.scene);
   settings.tintLevels = o.scene.lodTint;
+  return settings;
+}
+
+// Where the frames go: PNGs into the output folder and/or a video, encoded off the frame loop.
+FrameOutputOptions frameOutputOptions(const RenderOptions& o, const RenderInputs& in) {
+  FrameOutputOptions out;
+  if (o.pngs) out.pngFolder = in.outDir;
+  if (!o.video.empty()) out.video = o.video;
+  out.width = int(in.size.width);
+  out.height = int(in.size.height);
+  out.fps = o.fps > 0.0f ? o.fps : 1.0f / o.scene.dt;
+  return out;
+}
+
+void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
+  // The scenario's crowd, the steered circle or the storyboard's crowd.
+  const std::unique_ptr<scene::Scene> scenePtr = makeScene(context, o.scene, in.clips);
+  scene::Scene& scene = *scenePtr;
+  render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
+  render::OffscreenTarget target =
+      render::makeOffscreenTarget(context, in.size.width, in.size.height);
+  scene::FrameSettings settings = offscreenSettings(o, in, target);
   std::unique_ptr<secondary::ClothLayer> cloth;
   if (in.clothDb)
     cloth = std::make_unique<secondary::ClothLayer>(context, *in.clothDb, scene.crowd(),
@@ -159,35 +247,16 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
                                                     sceneClothOptions(o.scene));
   std::vector<secondary::ClothTimings> clothTimes;
 
-  gpu::CommandPool pool(context);
-  VkCommandBuffer cmd = pool.allocate();
-  gpu::Fence fence(context);
-  gpu::TimestampPool timestamps(context, 8);
+  FrameSubmitter gpu(context);
   std::vector<double> steerMs, synthMs, renderMs;
-  FrameOutputOptions outputOptions;
-  if (o.pngs) outputOptions.pngFolder = outDir;
-  if (!o.video.empty()) outputOptions.video = o.video;
-  outputOptions.width = int(size.width);
-  outputOptions.height = int(size.height);
-  outputOptions.fps = o.fps > 0.0f ? o.fps : 1.0f / o.scene.dt;
-  FrameOutput output(outputOptions);  // encodes on a worker: off the frame's timing path
+  FrameOutput output(frameOutputOptions(o, in));  // encodes on workers: off the frame's timing
   SceneTrajectories trajectories(o.scene, scene, uint64_t(o.frames));
   Progress progress("render", o.frames);
   const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
-    timestamps.reset();
-    const scene::SceneStep step = scene.advance(o.scene.dt);
     settings.camera = render::cameraAt(o.scene.cameraPath, float(frame) * o.scene.dt, in.camera);
-    gpu::beginCommands(cmd);
-    scene::FrameTimestamps marks =
-        scene::recordFrame(cmd, context, scene, step, renderer, cloth.get(), settings, timestamps);
-    render::recordReadback(cmd, target);
-    renderer.passTimer().mark(cmd, "readback");
-    gpu::endCommands(cmd);
-    gpu::submit(context, cmd, fence.get());
-    fence.wait();
-    fence.reset();
-    scene::FrameTimings timings = scene::readFrameTimings(timestamps, marks);
+    const scene::FrameTimings timings =
+        runOneFrame(gpu, scene, scene.advance(o.scene.dt), renderer, cloth.get(), settings, target);
     steerMs.push_back(timings.steerMs);
     synthMs.push_back(timings.synthesisMs);
     renderMs.push_back(timings.renderMs);
@@ -212,37 +281,12 @@ void renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
       o.frames;
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
-  std::string where = o.pngs ? outDir.string() : "";
-  if (!o.video.empty()) where += (where.empty() ? "" : " and ") + o.video;
-  std::printf("rendered %d frames of %u characters (%u joints each) at %ux%u into %s\n", o.frames,
-              scene.count(), synth.jointCount(), size.width, size.height, where.c_str());
-  if (scene.steered())
-    std::printf(
-        "GPU time per frame (median): steering %.2f ms, synthesis %.2f ms, render %.2f ms"
-        "  [%s]\n",
-        median(steerMs), median(synthMs), median(renderMs), context.info().name.c_str());
-  else
-    std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
-                median(synthMs), median(renderMs), context.info().name.c_str());
-  const FrameOutputStats encoded = output.stats();
-  std::printf(
-      "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on %d worker%s, %.2f ms "
-      "per frame waiting for them\n",
-      wallMs, encoded.encodeMs / o.frames, encoded.workers, encoded.workers == 1 ? "" : "s",
-      encoded.waitedMs / o.frames);
+  printRenderTimes(o, in, scene, context, {steerMs, synthMs, renderMs, wallMs}, output.stats());
   if (trajectories.enabled())
     std::printf("trajectories of %u agents over %d frames written to %s\n", scene.count(), o.frames,
                 o.scene.trajectoriesOut.c_str());
-  if (scene.hasGoals())
-    std::printf("goals: %u of %u agents reached their final goal%s\n", scene.agentsAtGoal(),
-                scene.count(), scene.goalsDone() ? " (all done)" : "");
   if (cloth) printClothSummary(*cloth, clothTimes, o.scene.cloth);
-  if (synth.cached()) {
-    synth::MotionCacheStats c = synth::readCacheStats(synth);
-    std::printf("motion cache: %u hits, %u misses, %u evictions, %u entries, %.2f of %.2f MB\n",
-                c.hits, c.misses, c.evictions, c.entries, c.bytesUsed / 1048576.0,
-                c.budgetBytes / 1048576.0);
-  }
+  printSceneSummary(scene);
 }
 
 void addRenderCommand(CLI::App& app) {
