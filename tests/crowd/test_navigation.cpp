@@ -417,9 +417,10 @@ TEST_CASE("navigation: an agent that stops getting closer along its path is plan
   CHECK(never.stuckPlans() == 0);
 }
 
-TEST_CASE("navigation: an agent told to stay where it stands has arrived on entry") {
-  // Walk to (5, 0), then stand (Menge's goal_reached into an identity state): done on entry,
-  // even if the crowd pushes it off the spot before the next evaluation.
+namespace {
+// One goal at (5, 0): walk there (arrival within 0.5 m), then stand where it arrived (Menge's
+// goal_reached into an identity state), one group of agents.
+crowd::GoalScene walkThenStand() {
   crowd::GoalScene scene;
   scene.goalSets = {crowd::GoalSet{{crowd::pointGoal({5, 0})}}};
   crowd::GoalState walk, stand;
@@ -429,6 +430,14 @@ TEST_CASE("navigation: an agent told to stay where it stands has arrived on entr
   stand.choice.kind = crowd::GoalChoice::Kind::Identity;
   stand.onArrival = crowd::GoalState::Arrival::Stop;
   scene.groups = {crowd::GoalBehavior{{walk, stand}, 0, 1.3f}};
+  return scene;
+}
+}  // namespace
+
+TEST_CASE("navigation: an agent told to stay where it stands has arrived on entry") {
+  // Walk to (5, 0), then stand (Menge's goal_reached into an identity state): done on entry,
+  // even if the crowd pushes it off the spot before the next evaluation.
+  crowd::GoalScene scene = walkThenStand();
   scene.agentGroup = {0};
   crowd::GoalMachine m(scene, 1);
   m.evaluate(V{{0, 0}}, 0.0);
@@ -456,15 +465,7 @@ TEST_CASE("navigation: straight lines on the mesh, round a corner and past a hol
 TEST_CASE("navigation: an agent held back by the crowd standing at its goal has arrived") {
   // Agent 0 reaches (5, 0) and stands there; agent 1 gets within 0.9 m of it, no nearer, and
   // is held there: after 10 s without progress it has joined the crowd at the goal.
-  crowd::GoalScene scene;
-  scene.goalSets = {crowd::GoalSet{{crowd::pointGoal({5, 0})}}};
-  crowd::GoalState walk, stand;
-  walk.onArrival = crowd::GoalState::Arrival::Wait;
-  walk.next = 1;
-  walk.reach = 0.5f;
-  stand.choice.kind = crowd::GoalChoice::Kind::Identity;
-  stand.onArrival = crowd::GoalState::Arrival::Stop;
-  scene.groups = {crowd::GoalBehavior{{walk, stand}, 0, 1.3f}};
+  crowd::GoalScene scene = walkThenStand();
   scene.agentGroup = {0, 0};
   const std::vector<uint32_t> last = {1, 1};  // both head straight for the goal
   for (const float crowdReach : {1.0f, 0.0f}) {
