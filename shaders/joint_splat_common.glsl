@@ -15,17 +15,13 @@ struct SplatSprite {
   uvec4 box;      // first pixel x, first pixel y, box width, first reserved pixel entry
 };
 
-const uint64_t kSplatEmptyPixel = 0xFFFFFFFFFFFFFFFFul;  // the visibility buffer's clear value
-
 struct SplatCounters {
   uint sprites;
   uint pixels;
-  uint resolved;  // pixels in the resolve list (joint_splat_pixels.comp)
 };
 
 // The nearest hit of pixel (x, y) with the sprite's ellipsoid, kept by a 64-bit atomicMin of
-// (depth bits << 32 | colour). True only for the pixel's first hit, so that one entry per
-// splatted pixel names it for the resolve (which reads the pixel once all hits are in).
+// (depth bits << 32 | colour). False where the ray misses.
 bool splatPixel(int x, int y, vec4 inverse0, vec4 inverse1, vec4 inverse2, vec3 tint) {
   vec3 dir = pixelRay(vec2(x, y) + 0.5, frame);
   float t;
@@ -36,7 +32,8 @@ bool splatPixel(int x, int y, vec4 inverse0, vec4 inverse1, vec4 inverse2, vec3 
   if (depth < 0.0 || depth > 1.0) return false;
   uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0));
   uint64_t packed = (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(colour);
-  return atomicMin(visibility[uint(y) * uint(frame.viewport.x) + uint(x)], packed) == kSplatEmptyPixel;
+  atomicMin(visibility[uint(y) * uint(frame.viewport.x) + uint(x)], packed);
+  return true;
 }
 
 #endif

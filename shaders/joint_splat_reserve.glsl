@@ -64,12 +64,11 @@ ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
   return lo + ivec2(i - row * boxWidth, row);
 }
 
-// A far body's hit pixel: its visibility atomicMin and, when the entries fit, its entry, which
-// names the pixel for the resolve where this was its first hit (as in joint_splat_pixels.comp).
+// A far body's hit pixel: its visibility atomicMin and, when the entries fit, its entry.
 void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint entry) {
   uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
-  bool first = atomicMin(visibility[pixel], packed) == kSplatEmptyPixel;
-  if (fits) owners[entry] = first ? pixel | kSplatPixelEntry : kSplatNoSprite;
+  atomicMin(visibility[pixel], packed);
+  if (fits) owners[entry] = pixel | kSplatPixelEntry;
 }
 
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than

@@ -1,13 +1,12 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-// The far joints, step 4 on targets that take copies: one invocation per pixel of the resolve
-// list (each splatted pixel once, as joint_splat_pixels.comp listed them) writes the pixel's
-// nearest splat hit into the frame's colour and depth planes (the ground's, copied in) where it
-// is not behind the ground; the planes are then copied into the target. So the resolve costs
-// the splatted pixels, not a full-screen fragment pass. Sprites past the work lists' capacities
-// have no entries (their pixels may be missing from the list): invocation 0 then sets the
-// fragment resolve's indirect draw (otherwise empty) to cover the screen.
+// The far joints, step 3 on targets that take copies: one invocation per reserved pixel entry
+// (its pixel, as the pixel pass left it) writes the pixel's nearest splat hit into the frame's colour and depth planes (the ground's,
+// copied in) where it is not behind the ground; the planes are then copied into the target. So
+// the resolve costs the splatted pixels, not a full-screen fragment pass. Entries of one pixel
+// write the same value. Sprites past the work lists' capacities have no entries: invocation 0
+// then sets the fragment resolve's indirect draw (otherwise empty) to cover the screen.
 #include "shared_types.h"
 #include "render_bindings.h"
 
@@ -16,8 +15,8 @@ layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms fram
 layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { uint64_t visibility[]; };
 layout(constant_id = 0) const uint kSpriteCapacity = kSplatSpriteCapacity;
 layout(constant_id = 1) const uint kPixelCapacity = kSplatPixelCapacity;
-layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { uint spriteCount; uint pixelCount; uint listed; };
-layout(std430, binding = kRenderBindingResolveList) readonly buffer ResolveList { uint resolveList[]; };
+layout(std430, binding = kRenderBindingPixelOwners) readonly buffer Owners { uint owners[]; };
+layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { uint spriteCount; uint pixelCount; };
 layout(std430, binding = kRenderBindingFramePlanes) buffer Planes { uint planes[]; };  // colour plane, then depth plane
 layout(std430, binding = kRenderBindingResolveDraw) writeonly buffer ResolveDraw { uint resolveDraw[4]; };
 
@@ -30,11 +29,14 @@ void main() {
     resolveDraw[3] = 0u;
   }
   uint width = uint(frame.viewport.x), pixels = width * uint(frame.viewport.y);
-  uint total = min(listed, pixels);
+  uint total = min(pixelCount, kPixelCapacity);
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-  for (uint k = gl_GlobalInvocationID.x; k < total; k += stride) {
-    uint i = resolveList[k];
-    uint64_t v = visibility[i];  // hit: the pixel is listed
+  for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
+    uint i = owners[entry];  // the pixel joint_splat_pixels.comp (or a far body) hit, or none
+    if (i == kSplatNoSprite) continue;
+    i &= ~kSplatPixelEntry;
+    uint64_t v = visibility[i];
+    if (v == 0xFFFFFFFFFFFFFFFFul) continue;
     uint depthBits = uint(v >> 32);
     if (uintBitsToFloat(depthBits) > uintBitsToFloat(planes[pixels + i])) continue;  // behind the ground
     planes[i] = uint(v & 0xFFFFFFFFul);

@@ -26,13 +26,12 @@ const uint kRenderBindingLodLevels = 11u;  // kDrawLodLevels: CoverageParts (uni
 const uint kRenderBindingWalls = 12u;      // walls.vert: segments (ax, az, bx, bz) as texels
 const uint kRenderBindingSprites = 13u;    // the splat's sprites (joint_splat_common.glsl)
 const uint kRenderBindingPixelOwners = 14u;  // per reserved pixel: its sprite (or pixel)
-const uint kRenderBindingSplatCounters = 15u;  // sprites, pixels reserved; pixels listed to resolve
+const uint kRenderBindingSplatCounters = 15u;  // sprites and pixels reserved this frame
 const uint kRenderBindingGroundPlanes = 16u;  // ground.comp: colour plane, depth plane
 const uint kRenderBindingFramePlanes = 17u;   // joint_splat_resolve.comp: the frame's planes
 const uint kRenderBindingResolveDraw = 18u;   // its VkDrawIndirectCommand for the fragment resolve
 const uint kRenderBindingWalkList = 19u;      // characters whose joints are splatted, per chunk
 const uint kRenderBindingWalkCounts = 20u;    // how many, a uint per chunk
-const uint kRenderBindingResolveList = 21u;   // the splatted pixels, each once, for the resolve
 
 // The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
 // pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own

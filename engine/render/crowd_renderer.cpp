@@ -102,14 +102,9 @@ void CrowdRenderer::ensureVisibility(uint32_t width, uint32_t height) {
   for (auto it = retiredVisibility_.begin(); it != retiredVisibility_.end();)
     it = --it->second == 0 ? retiredVisibility_.erase(it) : std::next(it);
   if (visibility_ && visibilityWidth_ == width && visibilityHeight_ == height) return;
-  if (visibility_) {
-    retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
-    retiredVisibility_.emplace_back(std::move(resolveList_), kFramesInFlight + 1);
-  }
+  if (visibility_) retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
   visibility_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint64_t),
                             gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  resolveList_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint32_t),
-                             gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   visibilityWidth_ = width;
   visibilityHeight_ = height;
 }
@@ -183,7 +178,6 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
                  &splatLists_.counters};
     job.walkList = &walkList_;
     job.walkCounts = &walkCounts_;
-    job.resolveList = &resolveList_;
     job.record(cmd, splat_);
     return &visibility_;
   }
@@ -199,7 +193,7 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   groundCopied_ = splats(params) && target.transferDst && groundPlanesFor(cmd, params, frameSlot);
   entriesResolved_ = groundCopied_ && !params.otherSplats;
   if (entriesResolved_) {
-    resolveEntries(cmd, frameSlot);
+    resolveEntries(cmd, params, frameSlot);
     copyPlanesIn(cmd, target, params, framePlanes_);
   } else if (groundCopied_) {
     copyPlanesIn(cmd, target, params, groundPlanes_);
@@ -264,7 +258,8 @@ bool CrowdRenderer::groundPlanesFor(VkCommandBuffer cmd, const DrawParams& param
   return true;
 }
 
-void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot) {
+void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, const DrawParams& params,
+                                   uint32_t frameSlot) {
   if (!resolveDraw_)
     resolveDraw_ =
         gpu::Buffer(*context_, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
@@ -281,8 +276,8 @@ void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot) {
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
       gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_),
+      gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, splatLists_.pixelOwners),
       gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, splatLists_.counters),
-      gpu::storageBinding(gpu_types::kRenderBindingResolveList, resolveList_),
       gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_),
       gpu::storageBinding(gpu_types::kRenderBindingResolveDraw, resolveDraw_)};
   gpu::dispatch(cmd, splat_.resolve, bindings, nullptr, 0,

@@ -91,7 +91,6 @@ class CrowdRenderer {
   SplatLists splatLists_;
   gpu::GraphicsProgram resolve_;
   gpu::Buffer visibility_;
-  gpu::Buffer resolveList_;  // the splatted pixels, each once (SplatJob::resolveList)
   gpu::Buffer draws_;        // indirect draws of the joints too wide to splat, one per chunk
   gpu::Buffer nearList_;     // their indices
   gpu::Buffer walkList_;     // characters whose joints the splat walks
@@ -109,8 +108,8 @@ class CrowdRenderer {
   void clearTargets(VkCommandBuffer cmd, const FrameTargets& target);
   // True when planes of this view exist or were recorded now (the same view twice in a row).
   bool groundPlanesFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
-  // The splat resolved into a copy of the ground planes, once per splatted pixel (resolve list).
-  void resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot);
+  // The splat resolved into a copy of the ground planes, per splatted pixel entry.
+  void resolveEntries(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
                     const gpu::Buffer& planes);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,

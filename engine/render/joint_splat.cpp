@@ -100,7 +100,6 @@ std::vector<std::string> SplatJob::validate() const {
   checkList(counters, "counters", 16);
   checkList(walkList, "walkList", std::max<VkDeviceSize>(4, VkDeviceSize(characterCount) * 4u));
   checkList(walkCounts, "walkCounts", std::max<VkDeviceSize>(4, chunks * 4u));
-  checkList(resolveList, "resolveList", VkDeviceSize(width) * height * 4u);
   return problems;
 }
 
@@ -192,7 +191,6 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
       gpu::storageBinding(gpu_types::kRenderBindingSprites, *sprites),
       gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
       gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
-      gpu::storageBinding(gpu_types::kRenderBindingResolveList, *resolveList),
   };
   gpu::dispatch(cmd, programs.pixels, pixelBindings, nullptr, 0,
                 gpu_types::kSplatPixelGroups * programs.pixels.localSizeX());

@@ -91,9 +91,6 @@ struct SplatJob {
   // character, and a count per chunk (cleared by record()).
   const gpu::Buffer* walkList = nullptr;
   const gpu::Buffer* walkCounts = nullptr;
-  // output: width × height uints, the splatted pixels each once for CrowdRenderer's resolve
-  // (joint_splat_pixels.comp), counted by the counters' third uint.
-  const gpu::Buffer* resolveList = nullptr;
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
 

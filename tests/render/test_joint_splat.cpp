@@ -31,7 +31,6 @@ TEST_CASE("SplatJob: validity") {
   CHECK(all.find("'nearList'") != std::string::npos);
   CHECK(all.find("'lodLevels'") != std::string::npos);
   CHECK(all.find("'walkList'") != std::string::npos);
-  CHECK(all.find("'resolveList'") != std::string::npos);
   CHECK(all.find("target size is zero") != std::string::npos);
 }
 
@@ -50,32 +49,6 @@ TEST_CASE("SplatJob: chunks cover the crowd exactly") {
 namespace {
 
 const gpu_types::CoverageParts kNoLevels{};
-
-// The resolve list names splatted pixels only, each once; every one of them when no joint was
-// past the work lists (the joints past them splat their own pixels, which the fragment resolve
-// covers then).
-void checkResolveList(const std::vector<uint32_t>& listed, const std::vector<uint64_t>& visibility,
-                      bool everyJointListed) {
-  std::vector<uint8_t> seen(visibility.size(), 0);
-  size_t outside = 0, twice = 0, empty = 0, covered = 0;
-  for (uint32_t pixel : listed) {
-    if (pixel >= visibility.size()) {
-      ++outside;
-      continue;
-    }
-    twice += seen[pixel]++ > 0;
-    empty += visibility[pixel] == render::kEmptyPixel;
-  }
-  for (uint64_t v : visibility) covered += v != render::kEmptyPixel;
-  MESSAGE("resolve list: ", listed.size(), " pixels of ", covered, " covered");
-  CHECK(outside == 0);
-  CHECK(twice == 0);
-  CHECK(empty == 0);
-  if (everyJointListed)
-    CHECK(listed.size() == covered);
-  else
-    CHECK(listed.size() < covered);
-}
 
 // Splats `matrices` (crowd × joints) on the GPU and with the CPU twins (drawnJointMatrices,
 // splatJointsCpu) and compares the visibility buffers and the lists of joints too wide to splat.
@@ -143,9 +116,6 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   gpu::Buffer walkCounts(ctx, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   job.walkList = &walkList;
   job.walkCounts = &walkCounts;
-  gpu::Buffer resolveList(ctx, VkDeviceSize(width) * height * 4, gpu::kStorageUsage,
-                          gpu::MemoryUse::DeviceLocal);
-  job.resolveList = &resolveList;
   job.spriteCapacity = spriteCapacity;
   job.pixelCapacity = pixelCapacity;
   REQUIRE(job.validate().empty());
@@ -172,12 +142,10 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
   auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
   auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
-  auto counters = gpu::readback<uint32_t>(ctx, lists.counters, 3);
+  auto counters = gpu::readback<uint32_t>(ctx, lists.counters, 2);
   MESSAGE("work lists: ", counters[0], " sprites (capacity ", spriteCapacity, "), ", counters[1],
-          " pixels (capacity ", pixelCapacity, "), ", counters[2], " listed for the resolve");
+          " pixels (capacity ", pixelCapacity, ")");
   CHECK(counters[0] > 0);
-  checkResolveList(gpu::readback<uint32_t>(ctx, resolveList, counters[2]), gpuVisibility,
-                   counters[0] <= spriteCapacity && counters[1] <= pixelCapacity);
   std::sort(gpuNear.begin(), gpuNear.end());
 
   // Where two ellipsoids meet at nearly the same depth, float rounding may pick the other one:
