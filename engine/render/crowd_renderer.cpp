@@ -193,7 +193,7 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   groundCopied_ = splats(params) && target.transferDst && groundPlanesFor(cmd, params, frameSlot);
   entriesResolved_ = groundCopied_ && !params.otherSplats;
   if (entriesResolved_) {
-    resolveEntries(cmd, params, frameSlot);
+    resolveEntries(cmd, frameSlot);
     copyPlanesIn(cmd, target, params, framePlanes_);
   } else if (groundCopied_) {
     copyPlanesIn(cmd, target, params, groundPlanes_);
@@ -258,8 +258,7 @@ bool CrowdRenderer::groundPlanesFor(VkCommandBuffer cmd, const DrawParams& param
   return true;
 }
 
-void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, const DrawParams& params,
-                                   uint32_t frameSlot) {
+void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot) {
   if (!resolveDraw_)
     resolveDraw_ =
         gpu::Buffer(*context_, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,

@@ -109,7 +109,7 @@ class CrowdRenderer {
   // True when planes of this view exist or were recorded now (the same view twice in a row).
   bool groundPlanesFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   // The splat resolved into a copy of the ground planes, per splatted pixel entry.
-  void resolveEntries(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
+  void resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot);
   void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
                     const gpu::Buffer& planes);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
