@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 namespace throng::gpu_types {
 using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
 using uint = uint32_t;
 using mat4 = glm::mat4;
 #define THRONG_STRUCT(name) struct name
@@ -74,6 +75,32 @@ THRONG_STRUCT(RootMotionPush) {
   uint pad0;
 };
 
+// A crowd of several clip sets synthesized in one dispatch per pass (synth/group_passes.h):
+// each group's clips and cache as the merged root-motion and cache-classify passes read them,
+// every group in one uniform table. A character's group is the last one whose firstCharacter
+// it has reached.
+const uint kSynthMaxGroups = 4u;
+THRONG_STRUCT(SynthGroupInfo) {
+  uint firstCharacter;
+  uint slowFrames;
+  uint fastFrames;
+  uint steering;          // as RootMotionPush
+  float slowDuration;
+  float fastDuration;
+  uint slowRootBase;      // the clips' root rows (one vec4 per frame) in the shared root-row buffer
+  uint fastRootBase;
+  vec4 slowCycleTravel;
+  vec4 fastCycleTravel;
+  uint requestedBase;     // the group cache's buckets in the shared requested / bucketSlot buffers
+  uint bucketSlotBase;
+  uint cacheRowCount;
+  uint cacheDataBase;
+};
+THRONG_STRUCT(SynthGroupTable) {
+  uvec4 counts;           // x: groups
+  SynthGroupInfo groups[kSynthMaxGroups];
+};
+
 // Push constants of the pose pass (blend + hierarchy + A = J·M).
 THRONG_STRUCT(PosePush) {
   uint characterCount;
@@ -118,6 +145,19 @@ THRONG_STRUCT(CachePush) {
   uint fastFrames;
   uint pad0;
   uint pad1;
+};
+
+// Push constants of the cache classify pass over every group (cache_classify_groups.comp).
+THRONG_STRUCT(ClassifyGroupsPush) {
+  uint characterCount;    // the dispatch's characters, from firstCharacter
+  uint firstCharacter;
+  uint chunkSize;         // characters per pose chunk; chunks are numbered across groups, each
+  uint bucketCount;       //   group's from its first character; buckets per cache
+  float bucketWidth;
+  uint jointCount;
+  uint pad0;
+  uint pad1;
+  uvec4 firstChunk;       // per group: its first chunk's number
 };
 
 // poseSource[character]: where the character's joint matrices come from this frame. A cached

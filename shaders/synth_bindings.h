@@ -32,6 +32,11 @@ const uint kRootMotionBindingCacheRequested = 4u;  // uint per bucket (a placeho
 const uint kRootMotionBindingCoverageParts = 5u;
 const uint kRootMotionBindingMasks = 6u;
 const uint kRootMotionBindingCoverageView = 7u;
+// root_motion_groups.comp (and _coverage): every group in one dispatch, the group table
+// (uniform SynthGroupTable) and the clips' root rows; the coverage variant binds an array of
+// kSynthMaxGroups CoverageParts at kRootMotionBindingCoverageParts.
+const uint kRootMotionBindingGroups = 8u;
+const uint kRootMotionBindingRootRows = 9u;
 const uint kRootMotionConstantJointCount = 0u;  // the texel row width
 
 // synth_pose.comp: blend, hierarchy and draw matrices per character.
@@ -75,6 +80,16 @@ const uint kCacheInsertBindingSlotBucket = 4u;
 const uint kCacheInsertBindingFreshSlots = 5u;
 const uint kCacheInsertBindingFillArgs = 8u;
 
+// cache_insert_groups.comp: every group's insert in one dispatch; the shared request flags and
+// bucket slots, the group table, then per group g each buffer at its binding + g.
+const uint kCacheInsertGroupsBindingRequested = 1u;
+const uint kCacheInsertGroupsBindingBucketSlot = 2u;
+const uint kCacheInsertGroupsBindingGroups = 3u;  // uniform SynthGroupTable
+const uint kCacheInsertGroupsBindingCounters = 8u;
+const uint kCacheInsertGroupsBindingSlotBucket = 12u;
+const uint kCacheInsertGroupsBindingFreshSlots = 16u;
+const uint kCacheInsertGroupsBindingFillArgs = 20u;
+
 // cache_fill.comp: the poses of the entries inserted this frame (plus the texels above and the
 // skeleton's constants).
 const uint kCacheFillBindingRadius = 2u;
@@ -89,6 +104,9 @@ const uint kCacheClassifyBindingBucketSlot = 3u;
 const uint kCacheClassifyBindingCharacterList = 6u;
 const uint kCacheClassifyBindingListCounts = 7u;
 const uint kCacheClassifyBindingPoseSource = 9u;
+
+// cache_classify_groups.comp also: the group table; bucketSlot is then every group's, shared.
+const uint kCacheClassifyBindingGroups = 10u;  // uniform SynthGroupTable
 
 // cache_dispatch_args.comp: the list counts as indirect dispatch sizes.
 const uint kCacheArgsBindingListCounts = 7u;

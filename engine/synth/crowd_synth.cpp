@@ -16,6 +16,8 @@ namespace {
 void checkGroups(std::span<const anim::MotionPair* const> pairs,
                  std::span<const uint32_t> groupFirst, size_t characters) {
   if (pairs.empty()) fail("a crowd needs at least one motion pair");
+  if (pairs.size() > gpu_types::kSynthMaxGroups)
+    fail("a crowd has at most ", gpu_types::kSynthMaxGroups, " clip sets, got ", pairs.size());
   if (groupFirst.size() != pairs.size() + 1 || groupFirst.front() != 0 ||
       groupFirst.back() != characters)
     fail("crowd groups must run from 0 to the ", characters, " characters, one range per pair");
@@ -33,12 +35,24 @@ gpu::Buffer makeCoverageParts(const gpu::Context& context) {
                      gpu::MemoryUse::HostVisible);
 }
 
-void writeCoverageParts(const SynthGroup& group, const anim::Skeleton& skeleton,
+void writeCoverageParts(const CrowdSynth& synth, uint32_t k, const anim::Skeleton& skeleton,
                         const CoverageThresholds& thresholds) {
+  const SynthGroup& group = synth.groups[k];
   BodyParts parts = describeBodyParts(skeleton);
   setMeanCentres(parts, *group.pair);
   CoverageParts uniform = makeCoverageParts(parts, thresholds);
   std::memcpy(group.coverageParts.mapped(), &uniform, sizeof(uniform));
+  if (synth.shared.coverageParts) writeGroupCoverageParts(synth.shared, k, uniform);
+}
+
+void makeSharedBuffers(const gpu::Context& context, CrowdSynth& synth, const LodOptions& lod) {
+  std::vector<GroupDescription> groups;
+  for (const SynthGroup& g : synth.groups)
+    groups.push_back({g.pair, &g.cache, g.first, g.steering});
+  synth.shared = makeSynthGroupBuffers(context, groups, lod.enabled, synth.cached());
+  if (lod.enabled)
+    for (uint32_t k = 0; k < synth.groups.size(); ++k)
+      writeCoverageParts(synth, k, *lod.skeleton, lod.thresholds);
 }
 
 void allocateCacheLists(const gpu::Context& context, CrowdSynth& synth, size_t characters) {
@@ -69,7 +83,33 @@ void checkPrograms(std::span<const SynthPrograms* const> programs, const CrowdSy
     if (!p) fail("synthesis: a group has no programs");
 }
 
+std::vector<uint64_t> setBudgets(std::span<const anim::MotionPair* const> pairs,
+                                 const MotionCacheOptions& cache) {
+  std::vector<uint64_t> need;
+  for (const anim::MotionPair* pair : pairs)
+    need.push_back(uint64_t(speedBucketCount(cache.bucketWidth)) * cacheRowCount(*pair) *
+                   pair->jointCount() * sizeof(JointMatrix));
+  return clipSetBudgets(need, cache.budgetBytes);
+}
+
 }  // namespace
+
+std::vector<uint64_t> clipSetBudgets(std::span<const uint64_t> needBytes, uint64_t budget) {
+  std::vector<uint64_t> budgets(needBytes.size(), budget);
+  if (needBytes.size() < 2) return budgets;
+  // Water-filling: the sets that need least get what they need, the rest share what remains.
+  std::vector<size_t> order(needBytes.size());
+  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return needBytes[a] < needBytes[b]; });
+  uint64_t remaining = budget * needBytes.size();
+  for (size_t n = 0; n < order.size(); ++n) {
+    const uint64_t share = remaining / (order.size() - n);
+    budgets[order[n]] = std::min(needBytes[order[n]], share);
+    remaining -= budgets[order[n]];
+  }
+  return budgets;
+}
 
 CrowdSynth makeCrowdSynth(const gpu::Context& context,
                           std::span<const anim::MotionPair* const> pairs,
@@ -82,20 +122,23 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context,
   VkDeviceSize bytes =
       VkDeviceSize(crowd.size()) * pairs.front()->jointCount() * sizeof(JointMatrix);
   synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  const std::vector<uint64_t> budgets = setBudgets(pairs, cache);
   for (size_t k = 0; k < pairs.size(); ++k) {
     SynthGroup group;
     group.pair = pairs[k];
     group.motion = uploadMotionPair(context, *pairs[k]);
-    group.cache = makeGpuMotionCache(context, *pairs[k], cache);
+    MotionCacheOptions options = cache;
+    options.budgetBytes = budgets[k];
+    group.cache = makeGpuMotionCache(context, *pairs[k], options);
     group.steering = crowd.steering;
     group.first = groupFirst[k];
     group.count = groupFirst[k + 1] - groupFirst[k];
-    if (lod.enabled) {
-      group.coverageParts = makeCoverageParts(context);
-      writeCoverageParts(group, *lod.skeleton, lod.thresholds);
-    }
+    if (lod.enabled) group.coverageParts = makeCoverageParts(context);
     synth.groups.push_back(std::move(group));
   }
+  if (lod.enabled)
+    for (uint32_t k = 0; k < synth.groups.size(); ++k)
+      writeCoverageParts(synth, k, *lod.skeleton, lod.thresholds);
   std::vector<GpuMotionCache*> caches;
   for (SynthGroup& group : synth.groups) caches.push_back(&group.cache);
   synth.cacheData = makeCacheData(context, caches);
@@ -109,6 +152,7 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context,
                     gpu::MemoryUse::DeviceLocal);
   }
   if (cache.enabled) allocateCacheLists(context, synth, crowd.size());
+  if (synth.sharedPasses()) makeSharedBuffers(context, synth, lod);  // after the caches' dataBase
   return synth;
 }
 
@@ -123,7 +167,8 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& p
 void setLodThresholds(CrowdSynth& synth, const anim::Skeleton& skeleton,
                       const CoverageThresholds& thresholds) {
   if (!synth.lod) return;
-  for (const SynthGroup& group : synth.groups) writeCoverageParts(group, skeleton, thresholds);
+  for (uint32_t k = 0; k < synth.groups.size(); ++k)
+    writeCoverageParts(synth, k, skeleton, thresholds);
 }
 
 MotionCacheStats readCacheStats(const CrowdSynth& synth) {
@@ -157,6 +202,20 @@ bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
     vkCmdUpdateBuffer(cmd, synth.coverageView.get(), 0, sizeof(view), &view);
     gpu::computeToComputeBarrier(cmd);
   }
+  if (synth.sharedPasses()) {
+    GroupRootMotionJob job{&synth.shared, &synth.crowd, dt, retarget};
+    if (synth.cached()) {
+      job.cache = &synth.front().cache.options;
+      job.bucketCount = synth.front().cache.bucketCount;
+    }
+    if (coverage) {
+      job.coverageView = &synth.coverageView;
+      job.masks = &synth.masks;
+    }
+    job.record(cmd, *programs.front());
+    gpu::computeToComputeBarrier(cmd);
+    return coverage;
+  }
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
     RootMotionJob job{&g.motion, g.pair, &synth.crowd, g.first, g.count, dt, g.steering, retarget};
@@ -185,21 +244,9 @@ void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> p
   gpu::computeToComputeBarrier(cmd);
 }
 
-// The cache passes of every group (the lookup was done by root motion), then the classify pass
-// over each group's pose chunks (numbered across groups), then their indirect dispatch
-// arguments.
-void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
-                         const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal) {
-  std::vector<CacheJob> jobs;
-  for (const SynthGroup& g : synth.groups)
-    jobs.push_back({&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count});
-  // Each step for every group, then one barrier.
-  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordInsert(cmd, *programs[k]);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
-  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordFill(cmd, *programs[k]);
-  vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunkTotal) * 4, 0u);
-  gpu::computeToComputeBarrier(cmd);
+// The classify pass of each group, over its pose chunks (numbered across groups).
+void recordGroupClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                         const CrowdSynth& synth, uint32_t chunk) {
   uint32_t c = 0;
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
@@ -221,6 +268,54 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
           gpu::storageBinding(gpu_types::kCacheClassifyBindingPoseSource, synth.poseSource)};
       gpu::dispatch(cmd, programs[k]->cacheClassify, bindings, push, push.characterCount);
     }
+  }
+}
+
+// The same over every group in one dispatch.
+void recordSharedClassify(VkCommandBuffer cmd, const SynthPrograms& programs,
+                          const CrowdSynth& synth, uint32_t chunk) {
+  GroupClassifyJob job{&synth.shared,
+                       &synth.crowd,
+                       &synth.characterLists,
+                       &synth.listCounts,
+                       &synth.poseSource,
+                       chunk,
+                       synth.jointCount(),
+                       synth.front().cache.bucketCount,
+                       synth.front().cache.options.bucketWidth};
+  uint32_t c = 0;
+  for (const SynthGroup& g : synth.groups) {
+    job.firstChunk.push_back(c);
+    c += (g.count + chunk - 1) / chunk;
+  }
+  job.record(cmd, programs);
+}
+
+// The cache passes of every group (the lookup was done by root motion), then the classify pass
+// over each group's pose chunks (numbered across groups), then their indirect dispatch
+// arguments.
+void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
+                         const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal) {
+  std::vector<CacheJob> jobs;
+  for (const SynthGroup& g : synth.groups)
+    jobs.push_back({&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count});
+  // Each step for every group, then one barrier.
+  if (synth.sharedPasses()) {
+    GroupInsertJob insert{&synth.shared, {}};
+    for (const SynthGroup& g : synth.groups) insert.caches.push_back(&g.cache);
+    insert.record(cmd, *programs.front());
+  } else {
+    jobs.front().recordInsert(cmd, *programs.front());
+  }
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordFill(cmd, *programs[k]);
+  vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunkTotal) * 4, 0u);
+  gpu::computeToComputeBarrier(cmd);
+  if (synth.sharedPasses()) {
+    recordSharedClassify(cmd, *programs.front(), synth, chunk);
+  } else {
+    recordGroupClassify(cmd, programs, synth, chunk);
   }
   gpu::computeToComputeBarrier(cmd);
   gpu::Binding argBindings[] = {

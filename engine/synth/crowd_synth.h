@@ -10,6 +10,7 @@
 #include "gpu/buffer.h"
 #include "gpu/timestamps.h"
 #include "synth/coverage.h"
+#include "synth/group_passes.h"
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
 #include "synth/synth_jobs.h"
@@ -55,6 +56,10 @@ struct CrowdSynth {
   gpu::Buffer masks;
   gpu::Buffer coverageView;        // uniform CoverageView
   std::vector<SynthGroup> groups;  // contiguous ranges, in order, covering every character
+  // With several groups: root motion and the cache classify run over all of them in one
+  // dispatch each, from these shared buffers (group_passes.h).
+  SynthGroupBuffers shared;
+  bool sharedPasses() const { return groups.size() > 1; }
 
   const SynthGroup& front() const { return groups.front(); }
   uint32_t jointCount() const { return front().motion.jointCount; }
@@ -62,12 +67,18 @@ struct CrowdSynth {
 };
 
 // One group per pair: pair k animates the characters [groupFirst[k], groupFirst[k + 1]) of
-// `crowd` (groupFirst has pairs.size() + 1 entries from 0 to crowd.size()). Every pair needs
-// the same joint count. The cache budget applies to each clip set. Throws Error otherwise.
+// `crowd` (groupFirst has pairs.size() + 1 entries from 0 to crowd.size()), at most
+// kSynthMaxGroups pairs. Every pair needs the same joint count. The cache budget is per clip
+// set: a crowd of k sets has k times the budget, shared by clipSetBudgets. Throws Error otherwise.
 CrowdSynth makeCrowdSynth(const gpu::Context& context,
                           std::span<const anim::MotionPair* const> pairs,
                           std::span<const uint32_t> groupFirst, const crowd::Crowd& crowd,
                           const MotionCacheOptions& cache = {}, const LodOptions& lod = {});
+// The budgets of a crowd's clip set caches: k sets share k × `budget` bytes, max-min fair by
+// what each needs to hold all its buckets (an entry's size grows with the clip's cycle), so a
+// set of short cycles leaves what it does not need to one of long cycles. A single set gets
+// `budget`. needBytes[k]: set k's bucket count × entry bytes.
+std::vector<uint64_t> clipSetBudgets(std::span<const uint64_t> needBytes, uint64_t budget);
 // One group: every character animated by `pair`.
 CrowdSynth makeCrowdSynth(const gpu::Context& context, const anim::MotionPair& pair,
                           const crowd::Crowd& crowd, const MotionCacheOptions& cache = {},

@@ -25,10 +25,16 @@ struct SynthPrograms {
   gpu::ComputeProgram cacheFill;  // specialized like `pose`
   gpu::ComputeProgram cacheClassify;
   gpu::ComputeProgram cacheArgs;
-  gpu::ComputeProgram poseCached;    // materializes A = M · cached pose (specialized: joint count)
-  gpu::ComputeProgram coverage;      // pixel-coverage LOD (coverage.h)
-  gpu::Buffer noList;                // bindings for a pose pass over a plain range
-  std::vector<int32_t> poseParents;  // the skeleton `pose` was specialized for
+  gpu::ComputeProgram poseCached;  // materializes A = M · cached pose (specialized: joint count)
+  gpu::ComputeProgram coverage;    // pixel-coverage LOD (coverage.h)
+  // The passes over every group of a crowd at once (group_passes.h): root motion without and
+  // with the coverage, the cache insert and the cache classify.
+  gpu::ComputeProgram rootMotionGroups;
+  gpu::ComputeProgram rootMotionGroupsCoverage;
+  gpu::ComputeProgram cacheInsertGroups;
+  gpu::ComputeProgram cacheClassifyGroups;
+  gpu::Buffer noList;                     // bindings for a pose pass over a plain range
+  std::vector<int32_t> poseParents;       // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
   bool poseTexelsInUniform = false;       // and where it reads the texels (motion_gpu.h)
   std::vector<uint32_t> specialization;   // everything baked in (skeleton, fixed bones, texels)

@@ -1,18 +1,26 @@
 // Synthesis over groups: several clip sets animating contiguous ranges of ONE set of crowd
 // buffers (storyboard crowds). Validity of the groups, then GPU vs the CPU twin run on the same
 // ranges, with and without the motion cache (cached characters stay cached, each group's entries
-// in its own part of the shared data buffer).
+// in its own part of the shared data buffer). Several groups run root motion, the cache insert
+// and the cache classify in one dispatch each (group_passes.h): their FIFOs and LOD masks are
+// checked against each group's own twin and pass.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "anim/default_clips.h"
 #include "core/error.h"
+#include "core/rng.h"
 #include "crowd/scenario.h"
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "synth/cpu_synth.h"
 #include "synth/crowd_synth.h"
+#include "synth/group_passes.h"
+#include "synth/motion_cache_cpu.h"
 #include "synth_fixtures.h"
 #include "test_support.h"
 
@@ -172,5 +180,130 @@ TEST_CASE("crowd groups with the motion cache: cached characters stay cached, pe
           stats.misses, ", hits ", stats.hits);
   CHECK(worst <= 1e-4f);
   CHECK(stats.misses == 3 * 21);  // every bucket of each clip set once
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("crowd groups: the shared passes' validity") {
+  CHECK(!synth::GroupRootMotionJob{}.validate().empty());
+  CHECK(!synth::GroupInsertJob{}.validate().empty());
+  CHECK(!synth::GroupClassifyJob{}.validate().empty());
+  CHECK_THROWS_AS(synth::makeSynthGroupBuffers(test::gpuContext(), {}, false, false), Error);
+  Groups g = threeGroups(50);
+  g.pairs.push_back(g.pairs[0]);
+  g.pairs.push_back(g.pairs[1]);
+  g.pointers.clear();
+  for (const anim::MotionPair& p : g.pairs) g.pointers.push_back(&p);
+  const uint32_t five[] = {0, 10, 20, 30, 40, 50};
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(test::gpuContext(), g.pointers, five, groupCrowd(50)),
+                       "a crowd has at most 4 clip sets, got 5", Error);
+}
+
+TEST_CASE("clip set budgets: k sets share k budgets, the least needy served first") {
+  const uint64_t needs[] = {10, 100, 50};
+  CHECK(synth::clipSetBudgets(needs, 40) == std::vector<uint64_t>{10, 60, 50});
+  const uint64_t small[] = {5, 7};
+  CHECK(synth::clipSetBudgets(small, 10) == std::vector<uint64_t>{5, 7});
+  const uint64_t large[] = {30, 30};
+  CHECK(synth::clipSetBudgets(large, 10) == std::vector<uint64_t>{10, 10});
+  const uint64_t one[] = {1000};
+  CHECK(synth::clipSetBudgets(one, 10) == std::vector<uint64_t>{10});
+}
+
+namespace {
+crowd::Crowd rangeOf(const crowd::Crowd& crowd, uint32_t first, uint32_t end) {
+  crowd::Crowd part;
+  part.placement.assign(crowd.placement.begin() + first, crowd.placement.begin() + end);
+  part.motion.assign(crowd.motion.begin() + first, crowd.motion.begin() + end);
+  return part;
+}
+}  // namespace
+
+TEST_CASE("crowd groups over a small cache budget: each group's FIFO equals its CPU twin") {
+  gpu::Context& ctx = test::gpuContext();
+  const uint32_t n = 600;
+  Groups g = threeGroups(n);
+  // 3 MB per set holds 4 to 7 of the 21 buckets: the slow speeds' six buckets do not all fit
+  // (misses that stay uncached), and as the characters move to fast targets at their cycle
+  // ends, entries of slow buckets no longer in use are evicted.
+  synth::MotionCacheOptions cache{true, 0.05f, 3ull << 20};
+  crowd::Crowd cpu = groupCrowd(n);
+  Rng rng(7);
+  for (glm::vec4& m : cpu.motion) {
+    m.y = synth::quantizeSpeed(rng.uniform(0.0f, 0.25f), cache.bucketWidth);
+    m.z = synth::quantizeSpeed(rng.uniform(0.75f, 1.0f), cache.bucketWidth);
+  }
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, g.pointers, g.first, cpu, cache);
+  auto programs = groupPrograms(g);
+  const std::vector<const synth::SynthPrograms*> used = pointers(programs);
+  std::vector<synth::MotionCacheCpu> twins;
+  for (size_t k = 0; k < g.pairs.size(); ++k)
+    twins.emplace_back(g.pairs[k], gpuSynth.groups[k].cache.options);
+  const float dt = 1 / 10.0f;
+  synth::MotionCacheStats before[3]{};
+  for (int f = 0; f < 12; ++f) {
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, used, gpuSynth, dt, 1u << 27);
+    });
+    auto sources = gpu::readback<uint32_t>(ctx, gpuSynth.poseSource, n);
+    for (size_t k = 0; k < g.pairs.size(); ++k) {
+      const uint32_t first = g.first[k], end = g.first[k + 1];
+      synth::stepCrowdCpu(g.pairs[k], cpu, {first, end - first}, dt, 2);
+      const crowd::Crowd part = rangeOf(cpu, first, end);
+      twins[k].update(part);
+      const synth::MotionCacheStats a = synth::readCacheStats(gpuSynth.groups[k].cache),
+                                    b = twins[k].stats();
+      CHECK(a.hits == b.hits);
+      CHECK(a.misses == b.misses);
+      CHECK(a.evictions == b.evictions);
+      CHECK(a.entries == b.entries);
+      std::vector<synth::JointMatrix> scratch(g.pairs[k].jointCount());
+      for (uint32_t i = first; i < end; ++i)
+        REQUIRE((sources[i] != gpu_types::kPoseInJoints) ==
+                twins[k].pose(part.placement[i - first], part.motion[i - first], scratch));
+      if (f == 11) before[k] = a;
+    }
+  }
+  for (size_t k = 0; k < 3; ++k) {
+    MESSAGE("group ", k, ": capacity ", gpuSynth.groups[k].cache.capacity, ", hits ",
+            before[k].hits, ", misses ", before[k].misses, ", evictions ", before[k].evictions);
+    CHECK(gpuSynth.groups[k].cache.capacity < 21);
+    CHECK(before[k].evictions > 0);
+  }
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE(
+    "crowd groups with LOD: root motion's coverage over every group equals each group's pass") {
+  gpu::Context& ctx = test::gpuContext();
+  const uint32_t n = 900;
+  Groups g = threeGroups(n);
+  const anim::ClipPair clips = anim::defaultRunPair();
+  const synth::LodOptions lod{true, {}, &clips.slow.skeleton};
+  const crowd::Crowd crowd = groupCrowd(n);
+  synth::CrowdSynth separate = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd, {}, lod);
+  synth::CrowdSynth fused = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd, {}, lod);
+  auto programs = groupPrograms(g);
+  const std::vector<const synth::SynthPrograms*> used = pointers(programs);
+  size_t onScreen = 0;
+  for (int f = 0; f < 20; ++f) {
+    const glm::vec3 eye(4.0f * std::sin(0.1f * f), 20.0f - 0.5f * f, -40.0f + 0.8f * f);
+    const glm::mat4 view = glm::lookAt(eye, glm::vec3(0.3f * f, 0, 0), glm::vec3(0, 1, 0));
+    const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      CHECK(!synth::recordRootMotionPasses(cmd, used, separate, 1 / 30.0f));
+      synth::recordPosePasses(cmd, used, separate, 1u << 27, &camera);
+      const bool covered = synth::recordRootMotionPasses(cmd, used, fused, 1 / 30.0f, {}, &camera);
+      CHECK(covered);
+      synth::recordPosePasses(cmd, used, fused, 1u << 27, &camera, nullptr, covered);
+    });
+    auto a = gpu::readback<synth::CoverageMask>(ctx, separate.masks, n);
+    auto b = gpu::readback<synth::CoverageMask>(ctx, fused.masks, n);
+    REQUIRE(std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+    onScreen = 0;
+    for (const synth::CoverageMask& m : a) onScreen += synth::maskBits(m) != 0;
+  }
+  MESSAGE("20 frames of a moving camera over 3 groups: masks equal; ", onScreen, " of ", n,
+          " characters with joints in the last");
+  CHECK(onScreen > n / 10);
   CHECK(ctx.validationMessageCount() == 0);
 }
