@@ -143,7 +143,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       .add_flag("--cache,!--no-cache", o.cache,
                 "Motion cache: characters share synthesized clips per speed bucket")
       ->capture_default_str();
-  command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB")
+  command.add_option("--cache-budget", o.cacheBudgetMb, "Motion cache budget in MB per clip set")
       ->capture_default_str()
       ->check(inRange(0, 65536, "MB"));
   command
