@@ -39,7 +39,10 @@ CacheOf cacheOf(uint i) {
   [[unroll]] for (uint k = 1u; k < kSynthMaxGroups; ++k)
     if (k < table.counts.x && i >= table.groups[k].firstCharacter) group = k;
   SynthGroupInfo g = table.groups[group];
-  uint inGroup = (i - g.firstCharacter) / push.chunkSize;
+  // (i - first) / chunkSize by a float division (lavapipe divides integer vectors lane by
+  // lane); the half keeps the quotient away from whole numbers for any approximate division
+  // (root_motion.glsl says why), exact below 2^23 characters.
+  uint inGroup = uint(floor((float(i - g.firstCharacter) + 0.5) / float(push.chunkSize)));
   return CacheOf(g.bucketSlotBase, push.bucketCount, g.cacheRowCount, g.cacheDataBase, push.firstChunk[group] + inGroup,
                  g.firstCharacter + inGroup * push.chunkSize);
 #else

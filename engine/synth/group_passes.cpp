@@ -227,6 +227,11 @@ std::vector<std::string> GroupClassifyJob::validate() const {
   if (!characterLists || !*characterLists || !listCounts || !*listCounts || !poseSource ||
       !*poseSource)
     problems.push_back("outputs 'characterLists', 'listCounts' and 'poseSource' are needed");
+  if (crowd && crowd->count >= (1u << 23))
+    problems.push_back(
+        concat("the shared classify numbers chunks of at most 2^23 characters (a "
+               "float division), the crowd has ",
+               crowd->count));
   if (chunkSize == 0 || bucketCount == 0 || !(bucketWidth > 0.0f))
     problems.push_back("chunkSize, bucketCount and bucketWidth must be positive");
   if (groups && firstChunk.size() != groups->groupCount)
