@@ -120,6 +120,14 @@ const uint kCoverageBindingJoints = 3u;
 const uint kCoverageBindingMasks = 4u;  // CoverageMask as two 64-bit words
 const uint kCoverageBindingAreas = 5u;
 
+// coverage_groups.comp: the frame's coverage over every group (the walls' frame).
+const uint kCoverageGroupsBindingGroups = 0u;  // uniform SynthGroupTable
+const uint kCoverageGroupsBindingParts = 1u;   // uniform CoverageParts[kSynthMaxGroups]
+const uint kCoverageGroupsBindingView = 2u;    // uniform CoverageView
+const uint kCoverageGroupsBindingPlacement = 3u;  // uniform texel buffer
+const uint kCoverageGroupsBindingMotion = 4u;     // uniform texel buffer
+const uint kCoverageGroupsBindingMasks = 5u;
+
 // texel_readback.comp (tests/synth): a motion texture and the parents, copied out.
 const uint kTexelReadbackBindingTexture = 0u;  // combined image sampler
 const uint kTexelReadbackBindingParents = 1u;

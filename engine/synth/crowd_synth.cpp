@@ -191,17 +191,21 @@ anim::SpeedRetarget SpeedSchedule::advance(float dt) {
 
 namespace {
 
+// This frame's camera into the buffer the shared coverage passes read.
+void recordCoverageView(VkCommandBuffer cmd, const CrowdSynth& synth,
+                        const CoverageCamera& lodCamera) {
+  // Last frame's passes have read the camera before it is replaced.
+  const CoverageView view = coverageView(lodCamera);
+  gpu::computeToComputeBarrier(cmd);
+  vkCmdUpdateBuffer(cmd, synth.coverageView.get(), 0, sizeof(view), &view);
+  gpu::computeToComputeBarrier(cmd);
+}
+
 bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                       const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget,
                       const CoverageCamera* lodCamera) {
   const bool coverage = synth.lod && lodCamera;
-  if (coverage) {
-    // Last frame's passes have read the camera before it is replaced.
-    const CoverageView view = coverageView(*lodCamera);
-    gpu::computeToComputeBarrier(cmd);
-    vkCmdUpdateBuffer(cmd, synth.coverageView.get(), 0, sizeof(view), &view);
-    gpu::computeToComputeBarrier(cmd);
-  }
+  if (coverage) recordCoverageView(cmd, synth, *lodCamera);
   if (synth.sharedPasses()) {
     GroupRootMotionJob job{&synth.shared, &synth.crowd, dt, retarget};
     if (synth.cached()) {
@@ -235,6 +239,13 @@ bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
 // frame's pose pass, which the masks then trim.
 void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                     const CrowdSynth& synth, const CoverageCamera& lodCamera) {
+  if (synth.sharedPasses()) {
+    recordCoverageView(cmd, synth, lodCamera);
+    GroupCoverageJob{&synth.shared, &synth.crowd, &synth.coverageView, &synth.masks}.record(
+        cmd, *programs.front());
+    gpu::computeToComputeBarrier(cmd);
+    return;
+  }
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];
     CoverageJob coverage{&synth.crowd, &g.coverageParts,   nullptr, &synth.masks, nullptr,

@@ -185,6 +185,35 @@ void GroupRootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& progra
                 used, push, push.characterCount);
 }
 
+std::vector<std::string> GroupCoverageJob::validate() const {
+  std::vector<std::string> problems;
+  if (!groups || !groups->table || !groups->coverageParts)
+    problems.push_back("input 'groups' (the group table and parts) is missing");
+  if (!crowd || !crowd->placementTexels || !crowd->motionTexels)
+    problems.push_back("input 'crowd' buffers or their texel views are missing");
+  if (!coverageView || !*coverageView) problems.push_back("input 'coverageView' is missing");
+  if (!masks || !*masks) problems.push_back("input/output 'masks' is missing");
+  if (crowd && masks && *masks && masks->size() < VkDeviceSize(crowd->count) * sizeof(CoverageMask))
+    problems.push_back(concat("buffer 'masks' holds ", masks->size(), " bytes, ",
+                              VkDeviceSize(crowd->count) * sizeof(CoverageMask), " needed"));
+  return problems;
+}
+
+void GroupCoverageJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
+  gpu::throwIfInvalid("GroupCoverageJob", validate());
+  const uint32_t count = crowd->count;
+  gpu::Binding bindings[] = {
+      gpu::uniformBinding(gpu_types::kCoverageGroupsBindingGroups, groups->table),
+      gpu::uniformBinding(gpu_types::kCoverageGroupsBindingParts, groups->coverageParts),
+      gpu::uniformBinding(gpu_types::kCoverageGroupsBindingView, *coverageView, 0,
+                          sizeof(CoverageView)),
+      gpu::uniformTexelBinding(gpu_types::kCoverageGroupsBindingPlacement,
+                               crowd->placementTexels.get()),
+      gpu::uniformTexelBinding(gpu_types::kCoverageGroupsBindingMotion, crowd->motionTexels.get()),
+      gpu::storageBinding(gpu_types::kCoverageGroupsBindingMasks, *masks)};
+  gpu::dispatch(cmd, programs.coverageGroups, bindings, count, count);
+}
+
 std::vector<std::string> GroupInsertJob::validate() const {
   std::vector<std::string> problems;
   if (!groups || !groups->table || !groups->requested || !groups->bucketSlot)

@@ -64,6 +64,19 @@ struct GroupRootMotionJob {
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
+// The frame's coverage LOD pass (CoverageJob without areas) of every group in one dispatch, for
+// frames that move characters between root motion and coverage (walls); the same masks as
+// GroupRootMotionJob's coverage. Twin: synth::coverageCharacter with each group's parts.
+struct GroupCoverageJob {
+  const SynthGroupBuffers* groups = nullptr;   // input: the table and every group's parts
+  const crowd::CrowdBuffers* crowd = nullptr;  // input: placement and motion (texel views)
+  const gpu::Buffer* coverageView = nullptr;   // input: uniform CoverageView, this frame's
+  const gpu::Buffer* masks = nullptr;          // input/output: CoverageMask per character
+
+  std::vector<std::string> validate() const;
+  void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
+};
+
 // The motion cache's insert step of every group in one dispatch: each group's FIFO on its own
 // cache (counters, slots, fresh slots and fill arguments) and the shared request flags and
 // bucket slots; then each group's CacheJob::recordFill as before. Twin: MotionCacheCpu::update.

@@ -91,6 +91,7 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
                        rootMotionSpecialization(pair, uniformTexelCapacity(context))),
       rootMotionGroupsCoverage(context, "root_motion_groups_coverage.comp",
                                rootMotionSpecialization(pair, uniformTexelCapacity(context))),
+      coverageGroups(context, "coverage_groups.comp"),
       cacheInsertGroups(context, "cache_insert_groups.comp"),
       cacheClassifyGroups(context, "cache_classify_groups.comp"),
       poseParents(pair.parents),

@@ -28,9 +28,10 @@ struct SynthPrograms {
   gpu::ComputeProgram poseCached;  // materializes A = M · cached pose (specialized: joint count)
   gpu::ComputeProgram coverage;    // pixel-coverage LOD (coverage.h)
   // The passes over every group of a crowd at once (group_passes.h): root motion without and
-  // with the coverage, the cache insert and the cache classify.
+  // with the coverage, the coverage alone, the cache insert and the cache classify.
   gpu::ComputeProgram rootMotionGroups;
   gpu::ComputeProgram rootMotionGroupsCoverage;
+  gpu::ComputeProgram coverageGroups;  // the coverage alone (frames with walls)
   gpu::ComputeProgram cacheInsertGroups;
   gpu::ComputeProgram cacheClassifyGroups;
   gpu::Buffer noList;                     // bindings for a pose pass over a plain range

@@ -185,6 +185,7 @@ TEST_CASE("crowd groups with the motion cache: cached characters stay cached, pe
 
 TEST_CASE("crowd groups: the shared passes' validity") {
   CHECK(!synth::GroupRootMotionJob{}.validate().empty());
+  CHECK(!synth::GroupCoverageJob{}.validate().empty());
   CHECK(!synth::GroupInsertJob{}.validate().empty());
   CHECK(!synth::GroupClassifyJob{}.validate().empty());
   CHECK_THROWS_AS(synth::makeSynthGroupBuffers(test::gpuContext(), {}, false, false), Error);
@@ -272,14 +273,16 @@ TEST_CASE("crowd groups over a small cache budget: each group's FIFO equals its 
   CHECK(ctx.validationMessageCount() == 0);
 }
 
-TEST_CASE(
-    "crowd groups with LOD: root motion's coverage over every group equals each group's pass") {
+TEST_CASE("crowd groups with LOD: the shared coverage passes equal each group's own pass") {
   gpu::Context& ctx = test::gpuContext();
   const uint32_t n = 900;
   Groups g = threeGroups(n);
   const anim::ClipPair clips = anim::defaultRunPair();
   const synth::LodOptions lod{true, {}, &clips.slow.skeleton};
   const crowd::Crowd crowd = groupCrowd(n);
+  // Each group's own coverage pass (the reference), the shared coverage pass (frames with
+  // walls) and root motion's shared coverage.
+  synth::CrowdSynth perGroup = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd, {}, lod);
   synth::CrowdSynth separate = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd, {}, lod);
   synth::CrowdSynth fused = synth::makeCrowdSynth(ctx, g.pointers, g.first, crowd, {}, lod);
   auto programs = groupPrograms(g);
@@ -290,15 +293,33 @@ TEST_CASE(
     const glm::mat4 view = glm::lookAt(eye, glm::vec3(0.3f * f, 0, 0), glm::vec3(0, 1, 0));
     const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      CHECK(!synth::recordRootMotionPasses(cmd, used, perGroup, 1 / 30.0f));
+      for (size_t k = 0; k < g.pairs.size(); ++k) {
+        const synth::SynthGroup& group = perGroup.groups[k];
+        synth::CoverageJob{&perGroup.crowd,
+                           &group.coverageParts,
+                           nullptr,
+                           &perGroup.masks,
+                           nullptr,
+                           camera,
+                           uint32_t(g.pairs[k].jointCount()),
+                           group.first,
+                           group.count}
+            .record(cmd, used[k]->coverage);
+      }
+      gpu::computeToComputeBarrier(cmd);
+      synth::recordPosePasses(cmd, used, perGroup, 1u << 27, &camera, nullptr, true);
       CHECK(!synth::recordRootMotionPasses(cmd, used, separate, 1 / 30.0f));
       synth::recordPosePasses(cmd, used, separate, 1u << 27, &camera);
       const bool covered = synth::recordRootMotionPasses(cmd, used, fused, 1 / 30.0f, {}, &camera);
       CHECK(covered);
       synth::recordPosePasses(cmd, used, fused, 1u << 27, &camera, nullptr, covered);
     });
-    auto a = gpu::readback<synth::CoverageMask>(ctx, separate.masks, n);
-    auto b = gpu::readback<synth::CoverageMask>(ctx, fused.masks, n);
+    auto a = gpu::readback<synth::CoverageMask>(ctx, perGroup.masks, n);
+    auto b = gpu::readback<synth::CoverageMask>(ctx, separate.masks, n);
+    auto c = gpu::readback<synth::CoverageMask>(ctx, fused.masks, n);
     REQUIRE(std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
+    REQUIRE(std::memcmp(a.data(), c.data(), a.size() * sizeof(a[0])) == 0);
     onScreen = 0;
     for (const synth::CoverageMask& m : a) onScreen += synth::maskBits(m) != 0;
   }
