@@ -43,7 +43,7 @@ CacheOf cacheOf(uint i) {
   // lane); the half keeps the quotient away from whole numbers for any approximate division
   // (root_motion.glsl says why), exact below 2^23 characters.
   uint inGroup = uint(floor((float(i - g.firstCharacter) + 0.5) / float(push.chunkSize)));
-  return CacheOf(g.bucketSlotBase, push.bucketCount, g.cacheRowCount, g.cacheDataBase, push.firstChunk[group] + inGroup,
+  return CacheOf(g.bucketBase, push.bucketCount, g.cacheRowCount, g.cacheDataBase, push.firstChunk[group] + inGroup,
                  g.firstCharacter + inGroup * push.chunkSize);
 #else
   return CacheOf(0u, uint(bucketSlot.length()), push.rowCount, push.dataBase, push.chunk, push.firstCharacter);

@@ -25,4 +25,4 @@ layout(push_constant) uniform Push { CachePush push; };
 #define FILL_ARGS fillArgs
 #include "cache_insert_fifo.glsl"
 
-void main() { insertCache(0u, 0u, push.rowCount); }
+void main() { insertCache(0u, push.rowCount); }

@@ -27,8 +27,8 @@ layout(std140, binding = kCacheInsertGroupsBindingGroups) uniform Groups { Synth
 
 void main() {
   uint groups = table.counts.x;
-  insertGroup0(table.groups[0].requestedBase, table.groups[0].bucketSlotBase, table.groups[0].cacheRowCount);
-  if (groups > 1u) insertGroup1(table.groups[1].requestedBase, table.groups[1].bucketSlotBase, table.groups[1].cacheRowCount);
-  if (groups > 2u) insertGroup2(table.groups[2].requestedBase, table.groups[2].bucketSlotBase, table.groups[2].cacheRowCount);
-  if (groups > 3u) insertGroup3(table.groups[3].requestedBase, table.groups[3].bucketSlotBase, table.groups[3].cacheRowCount);
+  insertGroup0(table.groups[0].bucketBase, table.groups[0].cacheRowCount);
+  if (groups > 1u) insertGroup1(table.groups[1].bucketBase, table.groups[1].cacheRowCount);
+  if (groups > 2u) insertGroup2(table.groups[2].bucketBase, table.groups[2].cacheRowCount);
+  if (groups > 3u) insertGroup3(table.groups[3].bucketBase, table.groups[3].cacheRowCount);
 }

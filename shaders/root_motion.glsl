@@ -56,7 +56,7 @@ struct Clips {
   uint slowRootBase, fastRootBase;  // groups: where each clip's root rows start
   float slowDuration, fastDuration;
   vec3 slowTravel, fastTravel;
-  uint requestedBase;  // groups: the group cache's first bucket in `requested`
+  uint bucketBase;  // groups: the group cache's first bucket in `requested`
 };
 
 Clips clipsOf(uint i, out uint group) {
@@ -66,7 +66,7 @@ Clips clipsOf(uint i, out uint group) {
     if (k < table.counts.x && i >= table.groups[k].firstCharacter) group = k;
   SynthGroupInfo g = table.groups[group];
   return Clips(g.slowFrames, g.fastFrames, g.steering, g.slowRootBase, g.fastRootBase, g.slowDuration,
-               g.fastDuration, g.slowCycleTravel.xyz, g.fastCycleTravel.xyz, g.requestedBase);
+               g.fastDuration, g.slowCycleTravel.xyz, g.fastCycleTravel.xyz, g.bucketBase);
 #else
   return Clips(push.slowFrames, push.fastFrames, push.steering, 0u, 0u, push.slowDuration, push.fastDuration,
                push.slowCycleTravel.xyz, push.fastCycleTravel.xyz, 0u);
@@ -133,7 +133,7 @@ void main() {
   motionWords[i] = toWords(m);
   // The motion cache's lookup: this frame needs the bucket of the speed weight it now has.
   if (push.cacheBucketWidth > 0.0)
-    requested[clips.requestedBase + speedBucket(speedWeight(m), push.cacheBucketWidth, push.cacheBucketCount)] = 1u;
+    requested[clips.bucketBase + speedBucket(speedWeight(m), push.cacheBucketWidth, push.cacheBucketCount)] = 1u;
 #ifdef THRONG_ROOT_MOTION_COVERAGE
 #ifdef THRONG_ROOT_MOTION_GROUPS
   coverageGroup = group;

@@ -91,8 +91,8 @@ THRONG_STRUCT(SynthGroupInfo) {
   uint fastRootBase;
   vec4 slowCycleTravel;
   vec4 fastCycleTravel;
-  uint requestedBase;     // the group cache's buckets in the shared requested / bucketSlot buffers
-  uint bucketSlotBase;
+  uint bucketBase;        // the group cache's first bucket in the shared requested and bucketSlot
+  uint pad0;
   uint cacheRowCount;
   uint cacheDataBase;
 };

@@ -255,6 +255,14 @@ void recordCoverage(VkCommandBuffer cmd, std::span<const SynthPrograms* const> p
   gpu::computeToComputeBarrier(cmd);
 }
 
+// Pose chunks are numbered across groups: each group's first chunk, then the total.
+std::vector<uint32_t> firstChunks(const CrowdSynth& synth, uint32_t chunk) {
+  std::vector<uint32_t> first{0u};
+  for (const SynthGroup& g : synth.groups)
+    first.push_back(first.back() + (g.count + chunk - 1) / chunk);
+  return first;
+}
+
 // The classify pass of each group, over its pose chunks (numbered across groups).
 void recordGroupClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                          const CrowdSynth& synth, uint32_t chunk) {
@@ -294,11 +302,8 @@ void recordSharedClassify(VkCommandBuffer cmd, const SynthPrograms& programs,
                        synth.jointCount(),
                        synth.front().cache.bucketCount,
                        synth.front().cache.options.bucketWidth};
-  uint32_t c = 0;
-  for (const SynthGroup& g : synth.groups) {
-    job.firstChunk.push_back(c);
-    c += (g.count + chunk - 1) / chunk;
-  }
+  job.firstChunk = firstChunks(synth, chunk);
+  job.firstChunk.pop_back();  // the total
   job.record(cmd, programs);
 }
 
@@ -365,12 +370,6 @@ void recordPose(VkCommandBuffer cmd, std::span<const SynthPrograms* const> progr
   }
 }
 
-uint32_t chunkCount(const CrowdSynth& synth, uint32_t chunk) {
-  uint32_t chunks = 0;
-  for (const SynthGroup& g : synth.groups) chunks += (g.count + chunk - 1) / chunk;
-  return chunks;
-}
-
 }  // namespace
 
 bool recordRootMotionPasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
@@ -392,7 +391,8 @@ void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
   if (lod && !coverageDone) recordCoverage(cmd, programs, synth, *lodCamera);
   mark();
   const uint32_t chunk = poseChunk(synth, maxBindingBytes);
-  if (synth.cached()) recordCacheClassify(cmd, programs, synth, chunk, chunkCount(synth, chunk));
+  if (synth.cached())
+    recordCacheClassify(cmd, programs, synth, chunk, firstChunks(synth, chunk).back());
   mark();
   recordPose(cmd, programs, synth, chunk, lod);
   mark();

@@ -48,22 +48,23 @@ std::vector<glm::vec4> rootRows(std::span<const GroupDescription> groups,
   return rows;
 }
 
-// Per group, `count` elements of 4 bytes from an offset that binds (the storage alignment).
-std::vector<uint32_t> alignedBases(std::span<const GroupDescription> groups,
-                                   uint64_t alignmentBytes, uint32_t& total) {
-  const uint32_t step = static_cast<uint32_t>(std::max<uint64_t>(alignmentBytes / 4, 1));
+// Each group's first bucket in the shared request flags and bucket slots, each group's on cache
+// lines of its own: root motion's threads flag buckets of different groups at once.
+std::vector<uint32_t> bucketBases(std::span<const GroupDescription> groups, uint32_t& total) {
+  constexpr uint32_t kLine = 64 / sizeof(uint32_t);
   std::vector<uint32_t> bases;
   total = 0;
   for (const GroupDescription& g : groups) {
-    total = (total + step - 1) / step * step;
+    total = (total + kLine - 1) / kLine * kLine;
     bases.push_back(total);
-    total += std::max(g.cache->bucketCount, 1u);
+    total += g.cache->bucketCount;
   }
   return bases;
 }
 
-SynthGroupTable groupTable(std::span<const GroupDescription> groups, const SynthGroupBuffers& b,
-                           std::span<const uint32_t> slowBase, std::span<const uint32_t> fastBase) {
+SynthGroupTable groupTable(std::span<const GroupDescription> groups,
+                           std::span<const uint32_t> slowBase, std::span<const uint32_t> fastBase,
+                           std::span<const uint32_t> bucketBase) {
   SynthGroupTable table{};
   table.counts.x = static_cast<uint32_t>(groups.size());
   for (size_t k = 0; k < groups.size(); ++k) {
@@ -79,8 +80,7 @@ SynthGroupTable groupTable(std::span<const GroupDescription> groups, const Synth
     info.fastRootBase = fastBase[k];
     info.slowCycleTravel = glm::vec4(pair.slow.cycleTravel, 0.0f);
     info.fastCycleTravel = glm::vec4(pair.fast.cycleTravel, 0.0f);
-    info.requestedBase = b.requestedBase.empty() ? 0u : b.requestedBase[k];
-    info.bucketSlotBase = b.bucketSlotBase.empty() ? 0u : b.bucketSlotBase[k];
+    info.bucketBase = bucketBase[k];
     info.cacheRowCount = groups[k].cache->rowCount;
     info.cacheDataBase = groups[k].cache->dataBase;
   }
@@ -98,15 +98,13 @@ SynthGroupBuffers makeSynthGroupBuffers(const gpu::Context& context,
   std::vector<uint32_t> slowBase, fastBase;
   const std::vector<glm::vec4> rows = rootRows(groups, slowBase, fastBase);
   b.rootRows = gpu::makeStorageBuffer<glm::vec4>(context, rows);
+  uint32_t buckets = 0;
+  const std::vector<uint32_t> bucketBase = bucketBases(groups, buckets);
   if (cached) {
-    const uint64_t alignment = context.info().minStorageBufferOffsetAlignment;
-    uint32_t total = 0;
-    b.requestedBase = alignedBases(groups, alignment, total);
-    b.requested = gpu::makeStorageBuffer<uint32_t>(context, std::vector<uint32_t>(total, 0u));
-    b.bucketSlotBase = b.requestedBase;
-    b.bucketSlot = gpu::makeStorageBuffer<int32_t>(context, std::vector<int32_t>(total, -1));
+    b.requested = gpu::makeStorageBuffer<uint32_t>(context, std::vector<uint32_t>(buckets, 0u));
+    b.bucketSlot = gpu::makeStorageBuffer<int32_t>(context, std::vector<int32_t>(buckets, -1));
   }
-  const SynthGroupTable table = groupTable(groups, b, slowBase, fastBase);
+  const SynthGroupTable table = groupTable(groups, slowBase, fastBase, bucketBase);
   b.table = gpu::Buffer(context, sizeof(table),
                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                         gpu::MemoryUse::DeviceLocal);

@@ -33,9 +33,8 @@ struct SynthGroupBuffers {
   gpu::Buffer table;          // uniform SynthGroupTable
   gpu::Buffer rootRows;       // each group's slow then fast clip root rows, a vec4 per frame
   gpu::Buffer coverageParts;  // LOD on: uniform CoverageParts[kSynthMaxGroups], host-visible
-  gpu::Buffer requested;      // cache on: each group's request flags (uint) from requestedBase
-  gpu::Buffer bucketSlot;     // cache on: each group's bucket slots (int) from bucketSlotBase
-  std::vector<uint32_t> requestedBase, bucketSlotBase;  // in elements, per group
+  gpu::Buffer requested;      // cache on: each group's request flags (uint) from its bucket base
+  gpu::Buffer bucketSlot;     // cache on: each group's bucket slots (int) from its bucket base
 };
 
 // Throws Error for no group, more than kSynthMaxGroups or groups out of order.
