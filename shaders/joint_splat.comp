@@ -47,9 +47,14 @@ void main() {
     splatBody(body, characterColour(character, mask));
     walks = false;
   }
-  if (walks) {  // one atomic per subgroup
+  if (walks) {  // one atomic per subgroup, and the walk's workgroups grown to cover the list
     uint at = 0u, total = subgroupAdd(1u);
-    if (subgroupElect()) at = atomicAdd(walkCounts[push.chunk], total);
+    uint args = kSplatWalkArgsWords * push.chunk;
+    if (subgroupElect()) {
+      at = atomicAdd(walkCounts[args], total);
+      uint groups = (at + total + kSplatWalkGroupSize - 1u) / kSplatWalkGroupSize;
+      atomicMax(walkCounts[args + 1u], min(groups, kSplatWalkGroups));
+    }
     walkList[push.firstCharacter + subgroupBroadcastFirst(at) + subgroupExclusiveAdd(1u)] = local;
   }
 }

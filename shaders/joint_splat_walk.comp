@@ -10,13 +10,13 @@
 // ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel of the box
 // for joint_splat_pixels.comp, which ray-casts them one pixel per invocation; a joint whose
 // reservation does not fit ray-casts its own pixels here. Joints wider than push.maxPixels are
-// listed for an indirect draw by the graphics pipeline instead. A fixed number of workgroups
-// strides over the list. CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
+// listed for an indirect draw by the graphics pipeline instead. Dispatched indirectly with as
+// many workgroups as the list needs (at most kSplatWalkGroups, which stride over a longer list). CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kSplatWalkGroupSize) in;
 layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
@@ -52,7 +52,7 @@ void walkJoints(uint local) {
 }
 
 void main() {
-  uint count = walkCounts[push.chunk];
+  uint count = walkCounts[kSplatWalkArgsWords * push.chunk];
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint k = gl_GlobalInvocationID.x; k < count; k += stride) walkJoints(walkList[push.firstCharacter + k]);
 }

@@ -31,7 +31,7 @@ const uint kRenderBindingGroundPlanes = 16u;  // ground.comp: colour plane, dept
 const uint kRenderBindingFramePlanes = 17u;   // joint_splat_resolve.comp: the frame's planes
 const uint kRenderBindingResolveDraw = 18u;   // its VkDrawIndirectCommand for the fragment resolve
 const uint kRenderBindingWalkList = 19u;      // characters whose joints are splatted, per chunk
-const uint kRenderBindingWalkCounts = 20u;    // how many, a uint per chunk
+const uint kRenderBindingWalkCounts = 20u;    // how many, and the walk's dispatch, per chunk
 
 // The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
 // pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own
@@ -47,6 +47,12 @@ const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
 const uint kSplatPixelEntry = 0x80000000u;
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 const uint kSplatWalkGroups = 256u;          // at most, of the joint walk per chunk (grid-stride)
+const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup
+// Per chunk in the walk-counts buffer: the listed characters, then the walk's
+// VkDispatchIndirectCommand (x = workgroups for the list, at most kSplatWalkGroups; y = z = 1).
+// Dispatched by the list's length, the walk costs nothing for a chunk with no listed character:
+// lavapipe runs a grid-stride loop's body once for every 8 lanes even when no lane has work.
+const uint kSplatWalkArgsWords = 4u;
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on
 // screen is splatted as one ellipsoid its standing height tall and kFarBodyWidth of it across

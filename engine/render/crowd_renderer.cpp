@@ -125,9 +125,10 @@ void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
     if (walkList_) retiredVisibility_.emplace_back(std::move(walkList_), kFramesInFlight + 1);
     walkList_ = gpu::Buffer(*context_, walkBytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   }
-  if (!walkCounts_ || walkCounts_.size() < chunks * 4) {
+  if (!walkCounts_ || walkCounts_.size() < walkCountsBytes(chunks)) {
     if (walkCounts_) retiredVisibility_.emplace_back(std::move(walkCounts_), kFramesInFlight + 1);
-    walkCounts_ = gpu::Buffer(*context_, std::max<VkDeviceSize>(16, chunks * 4), gpu::kStorageUsage,
+    walkCounts_ = gpu::Buffer(*context_, walkCountsBytes(chunks),
+                              gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                               gpu::MemoryUse::DeviceLocal);
   }
   if (!draws_ || draws_.size() < drawBytes) {

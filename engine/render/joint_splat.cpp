@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <initializer_list>
 
 #include "core/error.h"
 #include "gpu/commands.h"
@@ -48,6 +49,24 @@ SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
   return {buffer(VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes),
           buffer(VkDeviceSize(pixelCapacity) * 4u), buffer(16)};
 }
+
+VkDeviceSize walkCountsBytes(size_t chunks) {
+  return std::max<size_t>(chunks, 1) * gpu_types::kSplatWalkArgsWords * sizeof(uint32_t);
+}
+
+namespace {
+// `words` written `times` times in a row at the start of `buffer` (vkCmdUpdateBuffer, at most
+// 64 KiB per command).
+void updateRepeated(VkCommandBuffer cmd, const gpu::Buffer& buffer,
+                    std::initializer_list<uint32_t> words, size_t times) {
+  std::vector<uint32_t> data;
+  for (size_t i = 0; i < times; ++i) data.insert(data.end(), words);
+  for (size_t offset = 0; offset < data.size(); offset += 16384) {
+    const size_t count = std::min<size_t>(16384, data.size() - offset);
+    vkCmdUpdateBuffer(cmd, buffer.get(), offset * 4, count * 4, data.data() + offset);
+  }
+}
+}  // namespace
 
 std::vector<std::string> SplatJob::validate() const {
   std::vector<std::string> problems;
@@ -99,12 +118,13 @@ std::vector<std::string> SplatJob::validate() const {
   checkList(pixelOwners, "pixelOwners", VkDeviceSize(pixelCapacity) * 4u);
   checkList(counters, "counters", 16);
   checkList(walkList, "walkList", std::max<VkDeviceSize>(4, VkDeviceSize(characterCount) * 4u));
-  checkList(walkCounts, "walkCounts", std::max<VkDeviceSize>(4, chunks * 4u));
+  checkList(walkCounts, "walkCounts", walkCountsBytes(chunks));
   return problems;
 }
 
 void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program,
-                           const JointChunk& chunk, size_t c, uint32_t invocations) const {
+                           const JointChunk& chunk, size_t c, uint32_t invocations,
+                           bool walkArgs) const {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
   SplatPush push{jointCount,
@@ -144,6 +164,11 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
   for (const gpu::Binding& b : bindings)
     for (const gpu::ReflectedBinding& r : program.reflection().bindings)
       if (r.binding == b.slot) declared.push_back(b);
+  if (walkArgs) {
+    const VkDeviceSize args = (c * gpu_types::kSplatWalkArgsWords + 1) * sizeof(uint32_t);
+    gpu::dispatchIndirect(cmd, program, declared, &push, sizeof(push), *walkCounts, args);
+    return;
+  }
   gpu::dispatch(cmd, program, declared, push, invocations ? invocations : chunk.characterCount);
 }
 
@@ -157,30 +182,23 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   if (timer) timer->mark(cmd, "setup");
   vkCmdFillBuffer(cmd, visibility->get(), 0, pixels * sizeof(uint64_t), 0xFFFFFFFFu);
   vkCmdFillBuffer(cmd, counters->get(), 0, 16, 0u);
-  vkCmdFillBuffer(cmd, walkCounts->get(), 0, VK_WHOLE_SIZE, 0u);
   if (timer) timer->mark(cmd, "clear");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   const std::vector<JointChunk> chunks =
       jointChunks(characterCount, jointCount, maxStorageBufferRange);
-  std::vector<uint32_t> emptyDraws;
-  for (size_t c = 0; c < chunks.size(); ++c) emptyDraws.insert(emptyDraws.end(), {0u, 1u, 0u, 0u});
-  for (size_t offset = 0; offset < emptyDraws.size();
-       offset += 16384) {  // vkCmdUpdateBuffer ≤ 64 KiB
-    size_t words = std::min<size_t>(16384, emptyDraws.size() - offset);
-    vkCmdUpdateBuffer(cmd, draws->get(), offset * 4, words * 4, emptyDraws.data() + offset);
-  }
+  // Per chunk: an empty indirect draw {0 vertices, 1 instance}, and an empty walk list with a
+  // dispatch of no workgroups {count 0; x 0, y 1, z 1}.
+  updateRepeated(cmd, *draws, {0u, 1u, 0u, 0u}, chunks.size());
+  updateRepeated(cmd, *walkCounts, {0u, 0u, 1u, 1u}, chunks.size());
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   // Per chunk: far bodies and the walk list, then (after a barrier) the listed characters'
-  // joints, each dispatch striding over its list.
+  // joints, each dispatch sized by its list.
   for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.joints, chunks[c], c, 0);
   if (timer) timer->mark(cmd, "splat-bodies");
+  // The walk's dispatch arguments come from the bodies pass too.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  for (size_t c = 0; c < chunks.size(); ++c) {
-    const uint32_t groups =
-        std::min((chunks[c].characterCount + 63u) / 64u, gpu_types::kSplatWalkGroups);
-    recordChunk(cmd, programs.walk, chunks[c], c, groups * programs.walk.localSizeX());
-  }
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.walk, chunks[c], c, 0, true);
   if (timer) timer->mark(cmd, "splat-joints");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);

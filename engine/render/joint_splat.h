@@ -54,6 +54,9 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context,
                                 uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity,
                                 float farBodyPixels = gpu_types::kSplatFarBodyPixels);
 
+// Bytes of the walk-counts buffer for `chunks` chunks (render_bindings.h, kSplatWalkArgsWords).
+VkDeviceSize walkCountsBytes(size_t chunks);
+
 // The work lists for those capacities (device-local).
 struct SplatLists {
   gpu::Buffer sprites, pixelOwners, counters;
@@ -88,7 +91,8 @@ struct SplatJob {
   const gpu::Buffer* pixelOwners = nullptr;  // pixelCapacity uints
   const gpu::Buffer* counters = nullptr;     // 16 bytes, cleared by record()
   // The characters whose joints are walked (the rest are off screen or far bodies): a uint per
-  // character, and a count per chunk (cleared by record()).
+  // character, and per chunk their count and the walk's indirect dispatch (walkCountsBytes;
+  // reset by record(); the buffer needs VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT).
   const gpu::Buffer* walkList = nullptr;
   const gpu::Buffer* walkCounts = nullptr;
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
@@ -103,8 +107,9 @@ struct SplatJob {
  private:
   // One of the two per-character passes over a chunk: `invocations` of them, 0 for one per
   // character.
+  // walkArgs: dispatched indirectly by the chunk's walk arguments instead.
   void recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program, const JointChunk& chunk,
-                   size_t c, uint32_t invocations) const;
+                   size_t c, uint32_t invocations, bool walkArgs = false) const;
 };
 
 }  // namespace throng::render

@@ -113,7 +113,9 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   job.counters = &lists.counters;
   gpu::Buffer walkList(ctx, std::max<VkDeviceSize>(16, characters * 4), gpu::kStorageUsage,
                        gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer walkCounts(ctx, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer walkCounts(ctx, render::walkCountsBytes(1),
+                         gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+                         gpu::MemoryUse::DeviceLocal);
   job.walkList = &walkList;
   job.walkCounts = &walkCounts;
   job.spriteCapacity = spriteCapacity;
