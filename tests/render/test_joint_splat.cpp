@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "anim/default_clips.h"
@@ -191,6 +192,24 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   CHECK(differentWinner <= covered / 50);
   CHECK(cpu.nearJoints.size() > 0);
   CHECK(gpuNear == cpu.nearJoints);
+
+  // The walk list holds the characters on screen that are not far bodies, and the walk's
+  // indirect dispatch has enough workgroups for it (at most kSplatWalkGroups, striding).
+  const auto walk = gpu::readback<uint32_t>(ctx, walkCounts, gpu_types::kSplatWalkArgsWords);
+  size_t onScreen = characters;
+  if (!masks.empty())
+    onScreen = std::count_if(masks.begin(), masks.end(),
+                             [](const synth::CoverageMask& m) { return (m.lo | m.hi) != 0u; });
+  const size_t walkers = onScreen - drawn.bodies.size();
+  MESSAGE("walk list: ", walk[0], " characters (twin: ", walkers, "), ", walk[1], " workgroups");
+  if (levels)  // a body on the height threshold may round the other way on the GPU
+    CHECK(std::abs(double(walk[0]) - double(walkers)) <= 0.01 * double(walkers) + 1.0);
+  else
+    CHECK(walk[0] == walkers);
+  const uint32_t groupSize = gpu_types::kSplatWalkGroupSize;
+  CHECK(walk[1] == std::min((walk[0] + groupSize - 1) / groupSize, gpu_types::kSplatWalkGroups));
+  CHECK(walk[2] == 1u);
+  CHECK(walk[3] == 1u);
   CHECK(ctx.validationMessageCount() == 0);
 }
 
