@@ -6,7 +6,10 @@
 // Root motion (the paper's eq. 10, docs/design.md), one invocation per character: advance the phase, move the root by
 // the blended displacement between the two phases (each clip's root lerped between its rows, so
 // the step is continuous in the phase) rotated by the heading and scaled; w changes to wTarget
-// only when the cycle ends. CPU twin: anim::stepCharacter.
+// only when the cycle ends. Circle steering and new target speeds are root_motion_prep.comp's,
+// run before this pass on the steps that need them: lavapipe runs every line of a pass for
+// every character, so as branches here they cost 12% of every step (docs/performance.md).
+// CPU twin: anim::stepCharacter.
 #include "shared_types.h"
 #include "synth_bindings.h"
 #include "motion_common.glsl"
@@ -52,7 +55,7 @@ layout(push_constant) uniform Push { RootMotionPush push; };
 
 // A character's clips: the dispatch's (push constants), or its group's in the group table.
 struct Clips {
-  uint slowFrames, fastFrames, steering;
+  uint slowFrames, fastFrames;
   uint slowRootBase, fastRootBase;  // groups: where each clip's root rows start
   float slowDuration, fastDuration;
   vec3 slowTravel, fastTravel;
@@ -65,10 +68,10 @@ Clips clipsOf(uint i, out uint group) {
   [[unroll]] for (uint k = 1u; k < kSynthMaxGroups; ++k)
     if (k < table.counts.x && i >= table.groups[k].firstCharacter) group = k;
   SynthGroupInfo g = table.groups[group];
-  return Clips(g.slowFrames, g.fastFrames, g.steering, g.slowRootBase, g.fastRootBase, g.slowDuration,
+  return Clips(g.slowFrames, g.fastFrames, g.slowRootBase, g.fastRootBase, g.slowDuration,
                g.fastDuration, g.slowCycleTravel.xyz, g.fastCycleTravel.xyz, g.bucketBase);
 #else
-  return Clips(push.slowFrames, push.fastFrames, push.steering, 0u, 0u, push.slowDuration, push.fastDuration,
+  return Clips(push.slowFrames, push.fastFrames, 0u, 0u, push.slowDuration, push.fastDuration,
                push.slowCycleTravel.xyz, push.fastCycleTravel.xyz, 0u);
 #endif
 }
@@ -117,15 +120,10 @@ void main() {
   vec3 dFast = rootAt(true, clips.fastFrames, clips.fastRootBase, clips.fastTravel, phase1 * fastFrames) -
                rootAt(true, clips.fastFrames, clips.fastRootBase, clips.fastTravel, phase0 * fastFrames);
   vec3 d = dSlow * (1.0 - w) + dFast * w;
-  if (clips.steering == 1u) place.w = atan(-place.z, place.x);
   float c = cos(place.w), s = sin(place.w);
   float scale = characterScale(m);
   place.x += scale * (d.x * c + d.z * s);
   place.z += scale * (-d.x * s + d.z * c);
-  if (push.retargetEpoch > 0u) {
-    float target = retargetSpeed(i, push.retargetEpoch, push.seed, push.minSpeedWeight, push.maxSpeedWeight);
-    m = withTargetSpeedWeight(m, push.bucketWidth > 0.0 ? quantizeSpeed(target, push.bucketWidth) : target);
-  }
   float wraps = floor(phase1);
   m = withCyclePhase(m, phase1 - wraps);
   if (wraps > 0.0) m = withSpeedWeight(m, targetSpeedWeight(m));

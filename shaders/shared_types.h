@@ -58,21 +58,31 @@ THRONG_STRUCT(RootMotionPush) {
   uint characterCount;
   uint slowFrames;
   uint fastFrames;
-  uint steering;          // 0: keep heading, 1: run around a circle centred at the origin
+  uint firstCharacter;    // the group [firstCharacter, firstCharacter + characterCount)
   float dt;
   float slowDuration;     // seconds per cycle
   float fastDuration;
-  float bucketWidth;      // > 0: new target speeds are quantized to motion-cache buckets
+  float cacheBucketWidth; // > 0: also flag each character's motion-cache bucket as requested
   vec4 slowCycleTravel;   // xyz: root displacement over one slow cycle
   vec4 fastCycleTravel;
+  uint cacheBucketCount;  //   (the cache's lookup step, done here: no pass of its own)
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// Push constants of root_motion_prep.comp, the pass before root motion on the steps that steer
+// or draw new target speeds: what it changes (the heading, the target speed weight) is what
+// root motion then reads, as anim::stepCharacter does in one function.
+THRONG_STRUCT(RootMotionPrepPush) {
+  uint characterCount;
+  uint firstCharacter;    // the group [firstCharacter, firstCharacter + characterCount)
+  uint steering;          // 0: keep heading, 1: run around a circle centred at the origin
   uint retargetEpoch;     // > 0: every character draws a new target speed weight this step
   uint seed;
   float minSpeedWeight;   // range of the new targets
   float maxSpeedWeight;
-  uint firstCharacter;    // the group [firstCharacter, firstCharacter + characterCount)
-  float cacheBucketWidth; // > 0: also flag each character's motion-cache bucket as requested
-  uint cacheBucketCount;  //   (the cache's lookup step, done here: no pass of its own)
-  uint pad0;
+  float bucketWidth;      // > 0: new target speeds are quantized to motion-cache buckets
 };
 
 // A crowd of several clip sets synthesized in one dispatch per pass (synth/group_passes.h):
@@ -84,7 +94,7 @@ THRONG_STRUCT(SynthGroupInfo) {
   uint firstCharacter;
   uint slowFrames;
   uint fastFrames;
-  uint steering;          // as RootMotionPush
+  uint pad1;              // (the travel vectors start at byte 32)
   float slowDuration;
   float fastDuration;
   uint slowRootBase;      // the clips' root rows (one vec4 per frame) in the shared root-row buffer

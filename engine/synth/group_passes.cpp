@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "core/error.h"
+#include "gpu/commands.h"
 #include "gpu/job_check.h"
 #include "gpu/program.h"
 #include "shaders/synth_bindings.h"
@@ -73,7 +74,6 @@ SynthGroupTable groupTable(std::span<const GroupDescription> groups,
     info.firstCharacter = groups[k].first;
     info.slowFrames = static_cast<uint32_t>(pair.slow.frameCount);
     info.fastFrames = static_cast<uint32_t>(pair.fast.frameCount);
-    info.steering = static_cast<uint32_t>(groups[k].steering);
     info.slowDuration = pair.slow.duration();
     info.fastDuration = pair.fast.duration();
     info.slowRootBase = slowBase[k];
@@ -95,6 +95,10 @@ SynthGroupBuffers makeSynthGroupBuffers(const gpu::Context& context,
   checkGroups(groups);
   SynthGroupBuffers b;
   b.groupCount = static_cast<uint32_t>(groups.size());
+  for (const GroupDescription& g : groups) {
+    b.firsts.push_back(g.first);
+    b.steerings.push_back(g.steering);
+  }
   std::vector<uint32_t> slowBase, fastBase;
   const std::vector<glm::vec4> rows = rootRows(groups, slowBase, fastBase);
   b.rootRows = gpu::makeStorageBuffer<glm::vec4>(context, rows);
@@ -145,14 +149,17 @@ std::vector<std::string> GroupRootMotionJob::validate() const {
 
 void GroupRootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("GroupRootMotionJob", validate());
+  bool prepared = false;
+  for (uint32_t k = 0; k < groups->groupCount; ++k) {
+    const uint32_t first = groups->firsts[k];
+    const uint32_t end = k + 1 < groups->groupCount ? groups->firsts[k + 1] : crowd->count;
+    prepared |= recordRootMotionPrep(cmd, programs, *crowd, first, end - first,
+                                     groups->steerings[k], retarget);
+  }
+  if (prepared) gpu::computeToComputeBarrier(cmd);
   RootMotionPush push{};
   push.characterCount = crowd->count;
   push.dt = dt;
-  push.bucketWidth = retarget.bucketWidth;
-  push.retargetEpoch = retarget.epoch;
-  push.seed = retarget.seed;
-  push.minSpeedWeight = retarget.lo;
-  push.maxSpeedWeight = retarget.hi;
   const bool lookup = cache && cache->enabled;
   if (lookup) {
     push.cacheBucketWidth = cache->bucketWidth;

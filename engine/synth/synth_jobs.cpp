@@ -76,6 +76,7 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
                  rootMotionSpecialization(pair, uniformTexelCapacity(context))),
       rootMotionCoverage(context, "root_motion_coverage.comp",
                          rootMotionSpecialization(pair, uniformTexelCapacity(context))),
+      rootMotionPrep(context, "root_motion_prep.comp"),
       pose(context, "synth_pose.comp", poseSpecialization(pair, uniformTexelCapacity(context))),
       poseMasked(context, "synth_pose.comp",
                  poseSpecialization(pair, uniformTexelCapacity(context), true)),
@@ -172,22 +173,15 @@ void CacheJob::recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) co
 namespace {
 RootMotionPush rootMotionPush(const RootMotionJob& job) {
   const anim::MotionPair* clips = job.clips;
-  const anim::SpeedRetarget& retarget = job.retarget;
   RootMotionPush push{};
   push.characterCount =
       job.characterCount ? job.characterCount : job.crowd->count - job.firstCharacter;
   push.firstCharacter = job.firstCharacter;
   push.slowFrames = static_cast<uint32_t>(clips->slow.frameCount);
   push.fastFrames = static_cast<uint32_t>(clips->fast.frameCount);
-  push.steering = static_cast<uint32_t>(job.steering);
   push.dt = job.dt;
   push.slowDuration = clips->slow.duration();
   push.fastDuration = clips->fast.duration();
-  push.bucketWidth = retarget.bucketWidth;
-  push.retargetEpoch = retarget.epoch;
-  push.seed = retarget.seed;
-  push.minSpeedWeight = retarget.lo;
-  push.maxSpeedWeight = retarget.hi;
   push.slowCycleTravel = glm::vec4(clips->slow.cycleTravel, 0.0f);
   push.fastCycleTravel = glm::vec4(clips->fast.cycleTravel, 0.0f);
   if (job.cache && job.cache->options.enabled) {
@@ -197,6 +191,27 @@ RootMotionPush rootMotionPush(const RootMotionJob& job) {
   return push;
 }
 }  // namespace
+
+bool recordRootMotionPrep(VkCommandBuffer cmd, const SynthPrograms& programs,
+                          const crowd::CrowdBuffers& crowd, uint32_t first, uint32_t count,
+                          anim::Steering steering, const anim::SpeedRetarget& retarget) {
+  if (count == 0 || (steering == anim::Steering::KeepHeading && retarget.epoch == 0))
+    return false;
+  gpu_types::RootMotionPrepPush push{};
+  push.characterCount = count;
+  push.firstCharacter = first;
+  push.steering = static_cast<uint32_t>(steering);
+  push.retargetEpoch = retarget.epoch;
+  push.seed = retarget.seed;
+  push.minSpeedWeight = retarget.lo;
+  push.maxSpeedWeight = retarget.hi;
+  push.bucketWidth = retarget.bucketWidth;
+  const gpu::Binding bindings[] = {
+      gpu::storageBinding(gpu_types::kRootMotionBindingPlacement, crowd.placement),
+      gpu::storageBinding(gpu_types::kRootMotionBindingMotion, crowd.motion)};
+  gpu::dispatch(cmd, programs.rootMotionPrep, bindings, push, count);
+  return true;
+}
 
 std::vector<std::string> RootMotionJob::validate() const {
   std::vector<std::string> problems;
@@ -234,6 +249,9 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
          programs.poseTexelsInUniform ? "uniform" : "storage", " buffers) than this one (",
          motion->jointCount, " joints, ", motion->texelsInUniform ? "uniform" : "storage", ")");
   const RootMotionPush push = rootMotionPush(*this);
+  if (recordRootMotionPrep(cmd, programs, *crowd, push.firstCharacter, push.characterCount,
+                           steering, retarget))
+    gpu::computeToComputeBarrier(cmd);
   const bool lookup = cache && cache->options.enabled;
   gpu::Binding bindings[] = {
       gpu::storageBinding(gpu_types::kTexelsBindingSlow, motion->slowTexels),

@@ -19,6 +19,7 @@ namespace throng::synth {
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram rootMotionCoverage;  // root motion that does the frame's coverage too
+  gpu::ComputeProgram rootMotionPrep;  // before root motion: steering and new target speeds
   gpu::ComputeProgram pose;
   gpu::ComputeProgram poseMasked;  // the same with the coverage-LOD joint masks
   gpu::ComputeProgram cacheInsert;
@@ -65,8 +66,15 @@ struct RootMotionJob {
   const gpu::Buffer* masks = nullptr;          // input/output: CoverageMask per character
 
   std::vector<std::string> validate() const;
+  // Records root_motion_prep.comp first (and a barrier) when the step steers or retargets.
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
+
+// root_motion_prep.comp over characters [first, first + count) when the step steers or draws
+// new target speeds; false (nothing recorded) otherwise. The caller orders root motion after it.
+bool recordRootMotionPrep(VkCommandBuffer cmd, const SynthPrograms& programs,
+                          const crowd::CrowdBuffers& crowd, uint32_t first, uint32_t count,
+                          anim::Steering steering, const anim::SpeedRetarget& retarget);
 
 // Blend + hierarchy + A = J·M on the GPU; twin: anim::poseCharacter.
 struct PoseJob {
