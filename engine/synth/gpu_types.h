@@ -12,7 +12,8 @@ using gpu_types::RootMotionPush;
 
 static_assert(sizeof(JointMatrix) == 48, "JointMatrix must match the GLSL std430 layout");
 static_assert(sizeof(RootMotionPush) == 80, "RootMotionPush must match the GLSL push block");
-static_assert(sizeof(RootMotionPrepPush) == 32, "RootMotionPrepPush must match the GLSL push block");
+static_assert(sizeof(RootMotionPrepPush) == 32,
+              "RootMotionPrepPush must match the GLSL push block");
 static_assert(sizeof(PosePush) == 48, "PosePush must match the GLSL push block");
 static_assert(sizeof(gpu_types::CacheCounters) == 32,
               "CacheCounters must match the GLSL std430 layout");

@@ -30,9 +30,9 @@ struct GroupDescription {
 
 struct SynthGroupBuffers {
   uint32_t groupCount = 0;
-  std::vector<uint32_t> firsts;            // each group's first character
-  std::vector<anim::Steering> steerings;   // and its steering (root_motion_prep.comp)
-  gpu::Buffer table;          // uniform SynthGroupTable
+  std::vector<uint32_t> firsts;           // each group's first character
+  std::vector<anim::Steering> steerings;  // and its steering (root_motion_prep.comp)
+  gpu::Buffer table;                      // uniform SynthGroupTable
   gpu::Buffer rootRows;       // each group's slow then fast clip root rows, a vec4 per frame
   gpu::Buffer coverageParts;  // LOD on: uniform CoverageParts[kSynthMaxGroups], host-visible
   gpu::Buffer requested;      // cache on: each group's request flags (uint) from its bucket base

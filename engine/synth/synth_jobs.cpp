@@ -195,8 +195,7 @@ RootMotionPush rootMotionPush(const RootMotionJob& job) {
 bool recordRootMotionPrep(VkCommandBuffer cmd, const SynthPrograms& programs,
                           const crowd::CrowdBuffers& crowd, uint32_t first, uint32_t count,
                           anim::Steering steering, const anim::SpeedRetarget& retarget) {
-  if (count == 0 || (steering == anim::Steering::KeepHeading && retarget.epoch == 0))
-    return false;
+  if (count == 0 || (steering == anim::Steering::KeepHeading && retarget.epoch == 0)) return false;
   gpu_types::RootMotionPrepPush push{};
   push.characterCount = count;
   push.firstCharacter = first;

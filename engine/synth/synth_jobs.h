@@ -19,7 +19,7 @@ namespace throng::synth {
 struct SynthPrograms {
   gpu::ComputeProgram rootMotion;
   gpu::ComputeProgram rootMotionCoverage;  // root motion that does the frame's coverage too
-  gpu::ComputeProgram rootMotionPrep;  // before root motion: steering and new target speeds
+  gpu::ComputeProgram rootMotionPrep;      // before root motion: steering and new target speeds
   gpu::ComputeProgram pose;
   gpu::ComputeProgram poseMasked;  // the same with the coverage-LOD joint masks
   gpu::ComputeProgram cacheInsert;
