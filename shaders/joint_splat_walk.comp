@@ -11,7 +11,8 @@
 // for joint_splat_pixels.comp, which ray-casts them one pixel per invocation; a joint whose
 // reservation does not fit ray-casts its own pixels here. Joints wider than push.maxPixels are
 // listed for an indirect draw by the graphics pipeline instead. Dispatched indirectly with as
-// many workgroups as the list needs (at most kSplatWalkGroups, which stride over a longer list). CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
+// many workgroups as the list needs (at most kSplatWalkGroups, which stride over a longer list).
+// CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"

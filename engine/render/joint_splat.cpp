@@ -123,8 +123,7 @@ std::vector<std::string> SplatJob::validate() const {
 }
 
 void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program,
-                           const JointChunk& chunk, size_t c, uint32_t invocations,
-                           bool walkArgs) const {
+                           const JointChunk& chunk, size_t c, bool walkArgs) const {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
   SplatPush push{jointCount,
@@ -169,7 +168,7 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
     gpu::dispatchIndirect(cmd, program, declared, &push, sizeof(push), *walkCounts, args);
     return;
   }
-  gpu::dispatch(cmd, program, declared, push, invocations ? invocations : chunk.characterCount);
+  gpu::dispatch(cmd, program, declared, push, chunk.characterCount);
 }
 
 void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const {
@@ -193,12 +192,12 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   // Per chunk: far bodies and the walk list, then (after a barrier) the listed characters'
   // joints, each dispatch sized by its list.
-  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.joints, chunks[c], c, 0);
+  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.joints, chunks[c], c, false);
   if (timer) timer->mark(cmd, "splat-bodies");
   // The walk's dispatch arguments come from the bodies pass too.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
-  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.walk, chunks[c], c, 0, true);
+  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.walk, chunks[c], c, true);
   if (timer) timer->mark(cmd, "splat-joints");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);

@@ -105,11 +105,10 @@ struct SplatJob {
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 
  private:
-  // One of the two per-character passes over a chunk: `invocations` of them, 0 for one per
-  // character.
-  // walkArgs: dispatched indirectly by the chunk's walk arguments instead.
+  // One of the two passes over a chunk: one invocation per character, or (walkArgs) dispatched
+  // indirectly by the chunk's walk arguments.
   void recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program, const JointChunk& chunk,
-                   size_t c, uint32_t invocations, bool walkArgs = false) const;
+                   size_t c, bool walkArgs) const;
 };
 
 }  // namespace throng::render
