@@ -4,8 +4,8 @@
 #extension GL_EXT_shader_atomic_int64 : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
-// The far joints, step 1: one invocation per character. A character off screen has nothing
-// drawn; a far character a few pixels tall is one ellipsoid (joint_far_body.glsl) ray-cast here
+// The far joints, step 1: one invocation per character on screen (joint_splat_list.comp's list,
+// dispatched by its length). A far character a few pixels tall is one ellipsoid (joint_far_body.glsl) ray-cast here
 // over its box, its pixel entries naming the pixels it hit; every other character is listed
 // for joint_splat_walk.comp, which walks its joints, so that lanes walking joints are not
 // spread over subgroups of bodies. CPU twin: render::splatJointsCpu over
@@ -14,7 +14,7 @@
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kSplatBodyGroupSize) in;
 layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
@@ -32,14 +32,15 @@ layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { ui
 layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
 #include "joint_splat_reserve.glsl"
 layout(std430, binding = kRenderBindingWalkList) writeonly buffer WalkList { uint walkList[]; };
-layout(std430, binding = kRenderBindingWalkCounts) buffer WalkCounts { uint walkCounts[]; };
+layout(std430, binding = kRenderBindingListCounts) buffer ListCounts { uint listCounts[]; };
+layout(std430, binding = kRenderBindingOnScreenList) readonly buffer OnScreenList { uint onScreenList[]; };
 
 void main() {
-  uint local = gl_GlobalInvocationID.x;  // the character within the chunk
-  if (local * push.jointCount >= push.jointTotal) return;
+  uint k = gl_GlobalInvocationID.x;
+  if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatOnScreenArgs]) return;
+  uint local = onScreenList[push.firstCharacter + k];  // the character within the chunk
   uint character = local + push.firstCharacter;
   uvec4 mask = characterMask(character);
-  if ((push.flags & kDrawUseMasks) != 0u && (mask.x | mask.y) == 0u) return;  // off screen
   JointSprite body;
   bool walks = true;
   if (farBody(characterPose(character, push.flags), local * push.jointCount, push.flags, mask, frame, body) &&
@@ -49,11 +50,11 @@ void main() {
   }
   if (walks) {  // one atomic per subgroup, and the walk's workgroups grown to cover the list
     uint at = 0u, total = subgroupAdd(1u);
-    uint args = kSplatWalkArgsWords * push.chunk;
+    uint args = kSplatListArgsWords * push.chunk + kSplatWalkArgs;
     if (subgroupElect()) {
-      at = atomicAdd(walkCounts[args], total);
+      at = atomicAdd(listCounts[args], total);
       uint groups = (at + total + kSplatWalkGroupSize - 1u) / kSplatWalkGroupSize;
-      atomicMax(walkCounts[args + 1u], min(groups, kSplatWalkGroups));
+      atomicMax(listCounts[args + 1u], min(groups, kSplatWalkGroups));
     }
     walkList[push.firstCharacter + subgroupBroadcastFirst(at) + subgroupExclusiveAdd(1u)] = local;
   }

@@ -35,7 +35,7 @@ layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { ui
 layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
 #include "joint_splat_reserve.glsl"
 layout(std430, binding = kRenderBindingWalkList) readonly buffer WalkList { uint walkList[]; };
-layout(std430, binding = kRenderBindingWalkCounts) readonly buffer WalkCounts { uint walkCounts[]; };
+layout(std430, binding = kRenderBindingListCounts) readonly buffer ListCounts { uint listCounts[]; };
 
 void walkJoints(uint local) {
   uint character = local + push.firstCharacter;
@@ -53,7 +53,7 @@ void walkJoints(uint local) {
 }
 
 void main() {
-  uint count = walkCounts[kSplatWalkArgsWords * push.chunk];
+  uint count = listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs];
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint k = gl_GlobalInvocationID.x; k < count; k += stride) walkJoints(walkList[push.firstCharacter + k]);
 }

@@ -31,7 +31,8 @@ const uint kRenderBindingGroundPlanes = 16u;  // ground.comp: colour plane, dept
 const uint kRenderBindingFramePlanes = 17u;   // joint_splat_resolve.comp: the frame's planes
 const uint kRenderBindingResolveDraw = 18u;   // its VkDrawIndirectCommand for the fragment resolve
 const uint kRenderBindingWalkList = 19u;      // characters whose joints are splatted, per chunk
-const uint kRenderBindingWalkCounts = 20u;    // how many, and the walk's dispatch, per chunk
+const uint kRenderBindingListCounts = 20u;    // per chunk: each list's length and dispatch
+const uint kRenderBindingOnScreenList = 21u;  // characters on screen, per chunk
 
 // The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
 // pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own
@@ -48,11 +49,17 @@ const uint kSplatPixelEntry = 0x80000000u;
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 const uint kSplatWalkGroups = 256u;          // at most, of the joint walk per chunk (grid-stride)
 const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup
-// Per chunk in the walk-counts buffer: the listed characters, then the walk's
-// VkDispatchIndirectCommand (x = workgroups for the list, at most kSplatWalkGroups; y = z = 1).
-// Dispatched by the list's length, the walk costs nothing for a chunk with no listed character:
-// lavapipe runs a grid-stride loop's body once for every 8 lanes even when no lane has work.
-const uint kSplatWalkArgsWords = 4u;
+const uint kSplatBodyGroupSize = 64u;        // joint_splat.comp's and joint_splat_list.comp's
+// Per chunk in the list-counts buffer, two lists, each as its length followed by the
+// VkDispatchIndirectCommand of the pass that reads it (x = workgroups for the list; y = z = 1):
+// the characters on screen (joint_splat_list.comp), read by the far-body pass, and the
+// characters whose joints are walked (joint_splat.comp), read by the walk (x at most
+// kSplatWalkGroups). Dispatched by its list's length, a pass costs nothing for characters off
+// screen: lavapipe runs a pass's every line for every 8 lanes, taken or not, and a grid-stride
+// loop's body once for every 8 lanes even when no lane has work.
+const uint kSplatListArgsWords = 8u;
+const uint kSplatOnScreenArgs = 0u;
+const uint kSplatWalkArgs = 4u;
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on
 // screen is splatted as one ellipsoid its standing height tall and kFarBodyWidth of it across

@@ -52,7 +52,8 @@ struct BenchOptions {
 
 // gpu: full GPU synthesis; lod; lod+cache; cpu: the CPU twin; clip-sets: four clip sets against
 // one; render: synthesis + render of --render-characters; frame: whole frames of
-// --frame-characters with LOD + cache, wide and street camera.
+// --frame-characters with LOD + cache: wide and street camera, and overhead on a tenth of the
+// crowd.
 const std::vector<std::string> kRowKinds{"gpu",       "lod",    "lod+cache", "cpu",
                                          "clip-sets", "render", "frame"};
 
@@ -125,7 +126,7 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
 }
 
 // Synthesis and render of `characters` at --size through the scene's frame, seen by the named
-// camera preset framed around the crowd.
+// camera preset framed around the crowd, or ("overhead") from above a tenth of its ground.
 Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
                 const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant,
                 uint32_t characters, const std::string& cameraName = "wide") {
@@ -145,7 +146,10 @@ Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
   scene::FrameSettings settings;
-  settings.camera = render::cameraPreset(cameraName, crowd::scenarioExtent(scenario));
+  const float extent = crowd::scenarioExtent(scenario);
+  settings.camera = cameraName == "overhead"
+                        ? render::overheadCamera(extent, 0.1f, float(size.width) / size.height)
+                        : render::cameraPreset(cameraName, extent);
   settings.targets = render::offscreenFrameTargets(target);
   gpu::CommandPool pool(context);
   VkCommandBuffer cmd = pool.allocate();
@@ -348,7 +352,7 @@ void runRenderRows(BenchSession& s) {
   }
   if (!s.o.wants("frame")) return;
   for (uint32_t n : s.o.frameCounts)
-    for (const char* camera : {"wide", "street"}) {
+    for (const char* camera : {"wide", "street", "overhead"}) {
       s.next(concat("whole frame, ", n, " characters, ", camera, " camera"));
       s.report(benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, n, camera));
     }
@@ -463,8 +467,9 @@ void addBenchCommand(CLI::App& app) {
                   "Crowd size of the storyboard-crowd row (four clip sets against one)")
       ->capture_default_str()
       ->check(CLI::Range(1u, 4000000u));
-  cmd->add_option("--frame-characters", options->frameCounts,
-                  "Crowd sizes of the whole-frame rows (LOD + cache, wide and street camera)")
+  cmd->add_option(
+         "--frame-characters", options->frameCounts,
+         "Crowd sizes of the whole-frame rows (LOD + cache; wide, street and overhead camera)")
       ->capture_default_str();
   cmd->add_option("--rows", options->rows,
                   "Only these kinds of row: gpu, lod, lod+cache, cpu, clip-sets, render, frame "

@@ -16,7 +16,8 @@ struct Camera {
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
   glm::mat4 viewProjection(float aspect) const { return projection(aspect) * view(); }
-  // Focal length in pixels for a viewport `height` pixels tall (the paper's eq. 9, docs/design.md's f).
+  // Focal length in pixels for a viewport `height` pixels tall (the paper's eq. 9, docs/design.md's
+  // f).
   float focalLengthPixels(float height) const;
 };
 
@@ -24,6 +25,11 @@ struct Camera {
 // "closeup" (a few characters fill the frame). `extent` is the crowd's half-size in metres.
 // Throws Error naming the valid presets for anything else.
 Camera cameraPreset(const std::string& name, float extent);
+
+// Looking down on the middle of a crowd `extent` metres in half-size from the height at which
+// the view (fovYDegrees 45, `aspect` = width / height) covers `groundShare` of its square: the
+// bench's view of a big crowd of which only a part is on screen.
+Camera overheadCamera(float extent, float groundShare, float aspect);
 
 // "x,y,z" → vector; throws Error naming `what` on malformed text.
 glm::vec3 parseVec3(const std::string& text, const std::string& what);

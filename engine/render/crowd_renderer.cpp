@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 
 #include "core/error.h"
 #include "gpu/commands.h"
@@ -120,14 +121,17 @@ void CrowdRenderer::ensureLists(uint32_t characterCount, uint32_t jointCount) {
     if (nearList_) retiredVisibility_.emplace_back(std::move(nearList_), kFramesInFlight + 1);
     nearList_ = gpu::Buffer(*context_, listBytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   }
-  const VkDeviceSize walkBytes = std::max<VkDeviceSize>(16, VkDeviceSize(characterCount) * 4);
-  if (!walkList_ || walkList_.size() < walkBytes) {
-    if (walkList_) retiredVisibility_.emplace_back(std::move(walkList_), kFramesInFlight + 1);
-    walkList_ = gpu::Buffer(*context_, walkBytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  }
-  if (!walkCounts_ || walkCounts_.size() < walkCountsBytes(chunks)) {
-    if (walkCounts_) retiredVisibility_.emplace_back(std::move(walkCounts_), kFramesInFlight + 1);
-    walkCounts_ = gpu::Buffer(*context_, walkCountsBytes(chunks),
+  const VkDeviceSize characterListBytes =
+      std::max<VkDeviceSize>(16, VkDeviceSize(characterCount) * 4);
+  for (gpu::Buffer* list : {&onScreenList_, &walkList_})
+    if (!*list || list->size() < characterListBytes) {
+      if (*list) retiredVisibility_.emplace_back(std::move(*list), kFramesInFlight + 1);
+      *list = gpu::Buffer(*context_, characterListBytes, gpu::kStorageUsage,
+                          gpu::MemoryUse::DeviceLocal);
+    }
+  if (!listCounts_ || listCounts_.size() < listCountsBytes(chunks)) {
+    if (listCounts_) retiredVisibility_.emplace_back(std::move(listCounts_), kFramesInFlight + 1);
+    listCounts_ = gpu::Buffer(*context_, listCountsBytes(chunks),
                               gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                               gpu::MemoryUse::DeviceLocal);
   }
@@ -177,8 +181,9 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
                  &splatLists_.sprites,
                  &splatLists_.pixelOwners,
                  &splatLists_.counters};
+    job.onScreenList = &onScreenList_;
     job.walkList = &walkList_;
-    job.walkCounts = &walkCounts_;
+    job.listCounts = &listCounts_;
     job.record(cmd, splat_);
     return &visibility_;
   }

@@ -91,12 +91,13 @@ class CrowdRenderer {
   SplatLists splatLists_;
   gpu::GraphicsProgram resolve_;
   gpu::Buffer visibility_;
-  gpu::Buffer draws_;        // indirect draws of the joints too wide to splat, one per chunk
-  gpu::Buffer nearList_;     // their indices
-  gpu::Buffer walkList_;     // characters whose joints the splat walks
-  gpu::Buffer walkCounts_;   // how many, per chunk
-  gpu::Buffer noMasks_;      // bound when no LOD masks are given
-  gpu::Buffer noLodLevels_;  // the uniform bound when no LOD levels are given
+  gpu::Buffer draws_;         // indirect draws of the joints too wide to splat, one per chunk
+  gpu::Buffer nearList_;      // their indices
+  gpu::Buffer onScreenList_;  // characters on screen, whose bodies the splat draws
+  gpu::Buffer walkList_;      // characters whose joints the splat walks
+  gpu::Buffer listCounts_;    // both lists' lengths and dispatches, per chunk
+  gpu::Buffer noMasks_;       // bound when no LOD masks are given
+  gpu::Buffer noLodLevels_;   // the uniform bound when no LOD levels are given
   void ensureLists(uint32_t characterCount, uint32_t jointCount);
   uint32_t visibilityWidth_ = 0, visibilityHeight_ = 0;
   std::vector<std::pair<gpu::Buffer, uint32_t>>

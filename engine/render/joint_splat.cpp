@@ -35,7 +35,8 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapa
                                 uint32_t pixelCapacity, float farBodyPixels) {
   const uint32_t capacities[] = {spriteCapacity, pixelCapacity};
   const uint32_t splat[] = {spriteCapacity, pixelCapacity, std::bit_cast<uint32_t>(farBodyPixels)};
-  return {gpu::ComputeProgram(context, "joint_splat.comp", splat),
+  return {gpu::ComputeProgram(context, "joint_splat_list.comp"),
+          gpu::ComputeProgram(context, "joint_splat.comp", splat),
           gpu::ComputeProgram(context, "joint_splat_walk.comp", splat),
           gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities),
           gpu::ComputeProgram(context, "joint_splat_resolve.comp", capacities)};
@@ -50,8 +51,8 @@ SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
           buffer(VkDeviceSize(pixelCapacity) * 4u), buffer(16)};
 }
 
-VkDeviceSize walkCountsBytes(size_t chunks) {
-  return std::max<size_t>(chunks, 1) * gpu_types::kSplatWalkArgsWords * sizeof(uint32_t);
+VkDeviceSize listCountsBytes(size_t chunks) {
+  return std::max<size_t>(chunks, 1) * gpu_types::kSplatListArgsWords * sizeof(uint32_t);
 }
 
 namespace {
@@ -117,13 +118,15 @@ std::vector<std::string> SplatJob::validate() const {
   checkList(sprites, "sprites", VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes);
   checkList(pixelOwners, "pixelOwners", VkDeviceSize(pixelCapacity) * 4u);
   checkList(counters, "counters", 16);
-  checkList(walkList, "walkList", std::max<VkDeviceSize>(4, VkDeviceSize(characterCount) * 4u));
-  checkList(walkCounts, "walkCounts", walkCountsBytes(chunks));
+  const VkDeviceSize listBytes = std::max<VkDeviceSize>(4, VkDeviceSize(characterCount) * 4u);
+  checkList(onScreenList, "onScreenList", listBytes);
+  checkList(walkList, "walkList", listBytes);
+  checkList(listCounts, "listCounts", listCountsBytes(chunks));
   return problems;
 }
 
 void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program,
-                           const JointChunk& chunk, size_t c, bool walkArgs) const {
+                           const JointChunk& chunk, size_t c, int argsWord) const {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
   SplatPush push{jointCount,
@@ -156,16 +159,18 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
       gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, *pixelOwners),
       gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, *counters),
       gpu::storageBinding(gpu_types::kRenderBindingWalkList, *walkList),
-      gpu::storageBinding(gpu_types::kRenderBindingWalkCounts, *walkCounts),
+      gpu::storageBinding(gpu_types::kRenderBindingListCounts, *listCounts),
+      gpu::storageBinding(gpu_types::kRenderBindingOnScreenList, *onScreenList),
   };
-  // The two passes share the bindings; each is given the ones it declares.
+  // The passes share the bindings; each is given the ones it declares.
   std::vector<gpu::Binding> declared;
   for (const gpu::Binding& b : bindings)
     for (const gpu::ReflectedBinding& r : program.reflection().bindings)
       if (r.binding == b.slot) declared.push_back(b);
-  if (walkArgs) {
-    const VkDeviceSize args = (c * gpu_types::kSplatWalkArgsWords + 1) * sizeof(uint32_t);
-    gpu::dispatchIndirect(cmd, program, declared, &push, sizeof(push), *walkCounts, args);
+  if (argsWord >= 0) {
+    const VkDeviceSize args =
+        (c * gpu_types::kSplatListArgsWords + uint32_t(argsWord) + 1) * sizeof(uint32_t);
+    gpu::dispatchIndirect(cmd, program, declared, &push, sizeof(push), *listCounts, args);
     return;
   }
   gpu::dispatch(cmd, program, declared, push, chunk.characterCount);
@@ -185,19 +190,26 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   const std::vector<JointChunk> chunks =
       jointChunks(characterCount, jointCount, maxStorageBufferRange);
-  // Per chunk: an empty indirect draw {0 vertices, 1 instance}, and an empty walk list with a
-  // dispatch of no workgroups {count 0; x 0, y 1, z 1}.
+  // Per chunk: an empty indirect draw {0 vertices, 1 instance}, and two empty lists with
+  // dispatches of no workgroups {count 0; x 0, y 1, z 1}.
   updateRepeated(cmd, *draws, {0u, 1u, 0u, 0u}, chunks.size());
-  updateRepeated(cmd, *walkCounts, {0u, 0u, 1u, 1u}, chunks.size());
+  updateRepeated(cmd, *listCounts, {0u, 0u, 1u, 1u, 0u, 0u, 1u, 1u}, chunks.size());
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  // Per chunk: far bodies and the walk list, then (after a barrier) the listed characters'
-  // joints, each dispatch sized by its list.
-  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.joints, chunks[c], c, false);
+  // Per chunk: the characters on screen; their far bodies and the walk list; the listed
+  // characters' joints. Each pass after the first is dispatched by the list before it.
+  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.onScreen, chunks[c], c, -1);
+  if (timer) timer->mark(cmd, "splat-list");
+  const auto listBarrier = [&] {
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+  };
+  listBarrier();
+  for (size_t c = 0; c < chunks.size(); ++c)
+    recordChunk(cmd, programs.joints, chunks[c], c, gpu_types::kSplatOnScreenArgs);
   if (timer) timer->mark(cmd, "splat-bodies");
-  // The walk's dispatch arguments come from the bodies pass too.
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
-  for (size_t c = 0; c < chunks.size(); ++c) recordChunk(cmd, programs.walk, chunks[c], c, true);
+  listBarrier();
+  for (size_t c = 0; c < chunks.size(); ++c)
+    recordChunk(cmd, programs.walk, chunks[c], c, gpu_types::kSplatWalkArgs);
   if (timer) timer->mark(cmd, "splat-joints");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);

@@ -44,8 +44,10 @@ struct CachedPoseInputs {
 // joint_splat_pixels.comp (an invocation per pixel) and joint_splat_resolve.comp, specialized with
 // the work lists' capacities and the far body's height (0: every character by its joints).
 struct SplatPrograms {
-  gpu::ComputeProgram joints;  // joint_splat.comp: per character, far bodies and the walk list
-  gpu::ComputeProgram walk;    // joint_splat_walk.comp: the listed characters' joints
+  gpu::ComputeProgram onScreen;  // joint_splat_list.comp: the characters on screen
+  gpu::ComputeProgram
+      joints;  // joint_splat.comp: per character on screen, far bodies and the walk list
+  gpu::ComputeProgram walk;  // joint_splat_walk.comp: the listed characters' joints
   gpu::ComputeProgram pixels;
   gpu::ComputeProgram resolve;  // joint_splat_resolve.comp (CrowdRenderer)
 };
@@ -54,8 +56,8 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context,
                                 uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity,
                                 float farBodyPixels = gpu_types::kSplatFarBodyPixels);
 
-// Bytes of the walk-counts buffer for `chunks` chunks (render_bindings.h, kSplatWalkArgsWords).
-VkDeviceSize walkCountsBytes(size_t chunks);
+// Bytes of the list-counts buffer for `chunks` chunks (render_bindings.h, kSplatListArgsWords).
+VkDeviceSize listCountsBytes(size_t chunks);
 
 // The work lists for those capacities (device-local).
 struct SplatLists {
@@ -90,25 +92,26 @@ struct SplatJob {
   const gpu::Buffer* sprites = nullptr;      // spriteCapacity × kSplatSpriteBytes
   const gpu::Buffer* pixelOwners = nullptr;  // pixelCapacity uints
   const gpu::Buffer* counters = nullptr;     // 16 bytes, cleared by record()
-  // The characters whose joints are walked (the rest are off screen or far bodies): a uint per
-  // character, and per chunk their count and the walk's indirect dispatch (walkCountsBytes;
-  // reset by record(); the buffer needs VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT).
+  // The characters on screen and the characters whose joints are walked (the rest of those on
+  // screen are far bodies): a uint per character each, and per chunk both lists' lengths and
+  // indirect dispatches (listCountsBytes; reset by record(); the buffer needs
+  // VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT).
+  const gpu::Buffer* onScreenList = nullptr;
   const gpu::Buffer* walkList = nullptr;
-  const gpu::Buffer* walkCounts = nullptr;
+  const gpu::Buffer* listCounts = nullptr;
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
 
   std::vector<std::string> validate() const;
-  // Clears the visibility buffer and splats every character (one invocation each, chunked);
-  // leaves barriers for the
-  // fragment-shader resolve.
+  // Clears the visibility buffer, lists the characters on screen and splats them (chunked);
+  // leaves barriers for the fragment-shader resolve.
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 
  private:
-  // One of the two passes over a chunk: one invocation per character, or (walkArgs) dispatched
-  // indirectly by the chunk's walk arguments.
+  // One of the passes over a chunk: one invocation per character (argsWord < 0), or dispatched
+  // indirectly by the chunk's list at argsWord (kSplatOnScreenArgs, kSplatWalkArgs).
   void recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program, const JointChunk& chunk,
-                   size_t c, bool walkArgs) const;
+                   size_t c, int argsWord) const;
 };
 
 }  // namespace throng::render

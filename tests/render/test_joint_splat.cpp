@@ -112,13 +112,16 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   job.sprites = &lists.sprites;
   job.pixelOwners = &lists.pixelOwners;
   job.counters = &lists.counters;
+  gpu::Buffer onScreenList(ctx, std::max<VkDeviceSize>(16, characters * 4), gpu::kStorageUsage,
+                           gpu::MemoryUse::DeviceLocal);
   gpu::Buffer walkList(ctx, std::max<VkDeviceSize>(16, characters * 4), gpu::kStorageUsage,
                        gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer walkCounts(ctx, render::walkCountsBytes(1),
+  gpu::Buffer listCounts(ctx, render::listCountsBytes(1),
                          gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                          gpu::MemoryUse::DeviceLocal);
+  job.onScreenList = &onScreenList;
   job.walkList = &walkList;
-  job.walkCounts = &walkCounts;
+  job.listCounts = &listCounts;
   job.spriteCapacity = spriteCapacity;
   job.pixelCapacity = pixelCapacity;
   REQUIRE(job.validate().empty());
@@ -193,14 +196,30 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   CHECK(cpu.nearJoints.size() > 0);
   CHECK(gpuNear == cpu.nearJoints);
 
+  // The on-screen list holds exactly the characters whose mask is not empty (all of them
+  // without masks), each once, and the bodies pass is dispatched with a workgroup per
+  // kSplatBodyGroupSize of them.
+  const auto counts = gpu::readback<uint32_t>(ctx, listCounts, gpu_types::kSplatListArgsWords);
+  const uint32_t* listed = counts.data() + gpu_types::kSplatOnScreenArgs;
+  std::vector<uint32_t> twinOnScreen;
+  for (uint32_t i = 0; i < characters; ++i)
+    if (masks.empty() || (masks[i].lo | masks[i].hi) != 0u) twinOnScreen.push_back(i);
+  std::vector<uint32_t> gpuOnScreen = gpu::readback<uint32_t>(ctx, onScreenList, characters);
+  gpuOnScreen.resize(std::min<size_t>(listed[0], characters));
+  std::sort(gpuOnScreen.begin(), gpuOnScreen.end());
+  MESSAGE("on-screen list: ", listed[0], " of ", characters,
+          " characters (twin: ", twinOnScreen.size(), "), ", listed[1], " workgroups");
+  CHECK(listed[0] == twinOnScreen.size());
+  CHECK(gpuOnScreen == twinOnScreen);
+  const uint32_t bodyGroup = gpu_types::kSplatBodyGroupSize;
+  CHECK(listed[1] == (listed[0] + bodyGroup - 1) / bodyGroup);
+  CHECK(listed[2] == 1u);
+  CHECK(listed[3] == 1u);
+
   // The walk list holds the characters on screen that are not far bodies, and the walk's
   // indirect dispatch has enough workgroups for it (at most kSplatWalkGroups, striding).
-  const auto walk = gpu::readback<uint32_t>(ctx, walkCounts, gpu_types::kSplatWalkArgsWords);
-  size_t onScreen = characters;
-  if (!masks.empty())
-    onScreen = std::count_if(masks.begin(), masks.end(),
-                             [](const synth::CoverageMask& m) { return (m.lo | m.hi) != 0u; });
-  const size_t walkers = onScreen - drawn.bodies.size();
+  const uint32_t* walk = counts.data() + gpu_types::kSplatWalkArgs;
+  const size_t walkers = twinOnScreen.size() - drawn.bodies.size();
   MESSAGE("walk list: ", walk[0], " characters (twin: ", walkers, "), ", walk[1], " workgroups");
   if (levels)  // a body on the height threshold may round the other way on the GPU
     CHECK(std::abs(double(walk[0]) - double(walkers)) <= 0.01 * double(walkers) + 1.0);
@@ -253,6 +272,11 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
     MESSAGE("levels far/mid/near ", perLevel[0], "/", perLevel[1], "/", perLevel[2]);
     CHECK(perLevel[0] > 20);
     CHECK(perLevel[1] + perLevel[2] > 20);
+    const auto offScreen =
+        std::count_if(masks.begin(), masks.end(),
+                      [](const synth::CoverageMask& m) { return (m.lo | m.hi) == 0u; });
+    MESSAGE(offScreen, " characters off screen");
+    CHECK(offScreen > 20);  // the on-screen list leaves them out
     checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels);
     // Far bodies up to 40 pixels tall in a 1280x720 frame: some boxes pass the 64 pixels
     // splatBody keeps as bits.

@@ -375,3 +375,22 @@ TEST_CASE("LOD: the far and mid levels' silhouettes cover the full level's pixel
     CHECK(share >= 0.8);
   }
 }
+
+TEST_CASE("LOD: the bench's overhead camera puts about a tenth of a random crowd on screen") {
+  CHECK_THROWS_AS(render::overheadCamera(0.0f, 0.1f, 1.0f), Error);
+  CHECK_THROWS_AS(render::overheadCamera(10.0f, 0.0f, 1.0f), Error);
+  const LodBody& body = defaultBody();
+  crowd::ScenarioOptions options;
+  options.characters = 20000;
+  crowd::Crowd crowd = crowd::makeScenario(options);
+  const render::Camera camera =
+      render::overheadCamera(crowd::scenarioExtent(options), 0.1f, 1280.0f / 720.0f);
+  std::vector<synth::CoverageMask> masks(crowd.size());
+  synth::coverageCpu(lodCamera(camera), body.levels, body.jointCount, crowd, {}, masks, {});
+  const auto onScreen = std::count_if(
+      masks.begin(), masks.end(), [](const synth::CoverageMask& m) { return (m.lo | m.hi) != 0u; });
+  MESSAGE(onScreen, " of ", crowd.size(), " characters on screen");
+  // A tenth of the ground, and the characters standing at its border whose bodies reach in.
+  CHECK(onScreen > 1700);
+  CHECK(onScreen < 2600);
+}
