@@ -50,6 +50,7 @@ const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (gr
 const uint kSplatWalkGroups = 256u;          // at most, of the joint walk per chunk (grid-stride)
 const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup
 const uint kSplatBodyGroupSize = 64u;        // joint_splat.comp's and joint_splat_list.comp's
+const uint kSplatListRun = 8u;               // characters per invocation of joint_splat_list.comp
 // Per chunk in the list-counts buffer, two lists, each as its length followed by the
 // VkDispatchIndirectCommand of the pass that reads it (x = workgroups for the list; y = z = 1):
 // the characters on screen (joint_splat_list.comp), read by the far-body pass, and the

@@ -173,7 +173,9 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
     gpu::dispatchIndirect(cmd, program, declared, &push, sizeof(push), *listCounts, args);
     return;
   }
-  gpu::dispatch(cmd, program, declared, push, chunk.characterCount);
+  const uint32_t runs =
+      (chunk.characterCount + gpu_types::kSplatListRun - 1) / gpu_types::kSplatListRun;
+  gpu::dispatch(cmd, program, declared, push, runs);
 }
 
 void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const {

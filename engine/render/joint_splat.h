@@ -108,8 +108,9 @@ struct SplatJob {
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 
  private:
-  // One of the passes over a chunk: one invocation per character (argsWord < 0), or dispatched
-  // indirectly by the chunk's list at argsWord (kSplatOnScreenArgs, kSplatWalkArgs).
+  // One of the passes over a chunk: the list of characters on screen (argsWord < 0; one
+  // invocation per kSplatListRun characters), or a pass dispatched indirectly by the chunk's list
+  // at argsWord (kSplatOnScreenArgs, kSplatWalkArgs).
   void recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program, const JointChunk& chunk,
                    size_t c, int argsWord) const;
 };
