@@ -17,6 +17,8 @@ namespace throng::render {
 
 using gpu_types::SplatPush;
 static_assert(sizeof(SplatPush) == 40, "SplatPush must match the GLSL push block");
+static_assert(gpu_types::kSplatListRun <= 32,
+              "joint_splat_list.comp keeps a run's flags in 32 bits");
 
 std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount,
                                     uint32_t maxStorageBufferRange) {

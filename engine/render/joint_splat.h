@@ -45,9 +45,8 @@ struct CachedPoseInputs {
 // the work lists' capacities and the far body's height (0: every character by its joints).
 struct SplatPrograms {
   gpu::ComputeProgram onScreen;  // joint_splat_list.comp: the characters on screen
-  gpu::ComputeProgram
-      joints;  // joint_splat.comp: per character on screen, far bodies and the walk list
-  gpu::ComputeProgram walk;  // joint_splat_walk.comp: the listed characters' joints
+  gpu::ComputeProgram joints;    // joint_splat.comp: their far bodies and the walk list
+  gpu::ComputeProgram walk;      // joint_splat_walk.comp: the listed characters' joints
   gpu::ComputeProgram pixels;
   gpu::ComputeProgram resolve;  // joint_splat_resolve.comp (CrowdRenderer)
 };
