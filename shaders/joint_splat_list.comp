@@ -40,7 +40,8 @@ void main() {
     uint below = subgroupShuffle(inclusive, lane >= d ? lane - d : lane);
     inclusive += lane >= d ? below : 0u;
   }
-  uint total = subgroupShuffle(inclusive, gl_SubgroupSize - 1u);
+  // The subgroup's last lane; a subgroup wider than the workgroup has only its first lanes.
+  uint total = subgroupShuffle(inclusive, min(gl_SubgroupSize, gl_WorkGroupSize.x) - 1u);
   uint args = kSplatListArgsWords * push.chunk + kSplatOnScreenArgs;
   uint at = 0u;
   if (total > 0u && lane == 0u) {

@@ -147,6 +147,19 @@ bool deviceHasExtension(VkPhysicalDevice device, const char* extension) {
   });
 }
 
+// The subgroup size and the operations compute shaders' subgroups support (none when compute
+// shaders have no subgroup operations).
+void readSubgroups(VkPhysicalDevice device, DeviceInfo& info) {
+  VkPhysicalDeviceSubgroupProperties subgroup{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
+  vkGetPhysicalDeviceProperties2(device, &properties);
+  info.subgroupSize = subgroup.subgroupSize;
+  info.computeSubgroupOperations = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0
+                                       ? subgroup.supportedOperations
+                                       : 0;
+}
+
 // The largest VkBuffer, where the device reports it (VK_KHR_maintenance4); 0 otherwise.
 uint64_t maxBufferSize(VkPhysicalDevice device) {
   if (!deviceHasExtension(device, VK_KHR_MAINTENANCE_4_EXTENSION_NAME)) return 0;
@@ -280,6 +293,7 @@ void Context::choosePhysicalDevice(const ContextOptions& options) {
     info_.maxComputeWorkGroupCount[i] = limits.maxComputeWorkGroupCount[i];
   info_.maxMemoryAllocationSize = chosen.maintenance3.maxMemoryAllocationSize;
   info_.maxBufferSize = maxBufferSize(physical_);
+  readSubgroups(physical_, info_);
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
   for (uint32_t h = 0; h < memory_.memoryHeapCount; ++h)
     if (memory_.memoryHeaps[h].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)

@@ -41,10 +41,12 @@ struct DeviceInfo {
   uint32_t maxFramebufferWidth = 0;
   uint32_t maxFramebufferHeight = 0;
   uint32_t maxComputeWorkGroupCount[3] = {0, 0, 0};
-  uint32_t maxPushConstantsSize = 128;  // bytes (the Vulkan minimum)
+  uint32_t maxPushConstantsSize = 128;   // bytes (the Vulkan minimum)
   uint64_t maxMemoryAllocationSize = 0;  // one vkAllocateMemory (Vulkan 1.1 maintenance3)
   uint64_t maxBufferSize = 0;            // one vkCreateBuffer (VK_KHR_maintenance4); 0: unknown
   bool int64Atomics = false;  // shaderInt64 + shaderBufferInt64Atomics (the joint splat needs them)
+  uint32_t subgroupSize = 0;  // lanes per subgroup
+  VkSubgroupFeatureFlags computeSubgroupOperations = 0;  // what compute shaders' subgroups can do
   uint64_t deviceLocalBytes = 0;  // the largest device-local heap (lavapipe: system memory)
   bool isCpu() const { return type == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 };

@@ -36,6 +36,15 @@ CachedPoseInputs boundCachedPoses(const DrawParams& params, const gpu::Buffer& p
   if (params.cachedPoses.enabled()) return params.cachedPoses;
   return {&placeholder, &placeholder, &placeholder, &placeholder};
 }
+
+// The splat's passes keep 64-bit atomic minima and share work within subgroups (arithmetic,
+// ballot, shuffles); a device without them draws every joint by the graphics pipeline.
+bool splatSupportedBy(const gpu::DeviceInfo& info) {
+  const VkSubgroupFeatureFlags needed =
+      VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT |
+      VK_SUBGROUP_FEATURE_BALLOT_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
+  return info.int64Atomics && (info.computeSubgroupOperations & needed) == needed;
+}
 }  // namespace
 
 FrameUniforms makeFrameUniforms(const DrawParams& params) {
@@ -60,7 +69,7 @@ FrameUniforms makeFrameUniforms(const DrawParams& params) {
 CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
                              VkFormat depthFormat)
     : context_(&context),
-      splatSupported_(context.info().int64Atomics),
+      splatSupported_(splatSupportedBy(context.info())),
       passTimer_(std::make_unique<PassTimer>(context)) {
   gpu::GraphicsPipelineDesc jointDesc;
   jointDesc.vertexShader = "joints.vert";

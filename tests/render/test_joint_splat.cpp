@@ -60,25 +60,34 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
                     uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
                     uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity,
                     float farBodyPixels = gpu_types::kSplatFarBodyPixels, float maxPixels = 12.0f,
-                    uint32_t width = 320, uint32_t height = 180) {
+                    uint32_t width = 320, uint32_t height = 180, uint32_t chunkCharacters = 0) {
   const size_t characters = matrices.size() / joints;
+  // Chunks as the device's binding range makes them, or of chunkCharacters each.
+  gpu::Context& ctx = test::gpuContext();
+  const uint32_t bindingRange =
+      chunkCharacters > 0 ? chunkCharacters * joints * 48u : ctx.info().maxStorageBufferRange;
+  const std::vector<render::JointChunk> chunks =
+      render::jointChunks(uint32_t(characters), joints, bindingRange);
   render::DrawParams params;
   params.camera = camera;
   params.width = width;
   params.height = height;
   gpu_types::FrameUniforms frame = render::makeFrameUniforms(params);
 
-  gpu::Context& ctx = test::gpuContext();
   gpu::Buffer jointBuffer = gpu::makeStorageBuffer<synth::JointMatrix>(ctx, matrices);
   gpu::Buffer uniforms(ctx, sizeof(frame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                        gpu::MemoryUse::HostVisible);
   std::memcpy(uniforms.mapped(), &frame, sizeof(frame));
   gpu::Buffer visibility(ctx, VkDeviceSize(width) * height * 8, gpu::kStorageUsage,
                          gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer draws(ctx, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
+  gpu::Buffer draws(ctx, chunks.size() * 16,
+                    gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                     gpu::MemoryUse::DeviceLocal);
   gpu::Buffer nearList(ctx, VkDeviceSize(matrices.size()) * 4, gpu::kStorageUsage,
                        gpu::MemoryUse::DeviceLocal);
+  // Bound where the flags leave a binding unread: a buffer no pass writes, so that chunks'
+  // passes do not seem to read what earlier ones wrote.
+  gpu::Buffer unread(ctx, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   render::SplatPrograms programs =
       render::makeSplatPrograms(ctx, spriteCapacity, pixelCapacity, farBodyPixels);
   render::SplatLists lists = render::makeSplatLists(ctx, spriteCapacity, pixelCapacity);
@@ -92,10 +101,10 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
                        static_cast<uint32_t>(characters),
                        joints,
                        maxPixels,
-                       ctx.info().maxStorageBufferRange,
-                       &nearList,  // without LOD any buffer serves as the unused masks binding
+                       bindingRange,
+                       &unread,  // without LOD the masks binding is not read
                        0,
-                       {&nearList, &nearList, &nearList, &nearList}};  // no cache: placeholders
+                       {&unread, &unread, &unread, &unread}};  // no cache: placeholders
   // The LOD inputs: the levels' uniform (a placeholder the flags leave unread without LOD).
   gpu::Buffer levelsBuffer(ctx, sizeof(gpu_types::CoverageParts),
                            VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, gpu::MemoryUse::HostVisible);
@@ -116,7 +125,7 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
                            gpu::MemoryUse::DeviceLocal);
   gpu::Buffer walkList(ctx, std::max<VkDeviceSize>(16, characters * 4), gpu::kStorageUsage,
                        gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer listCounts(ctx, render::listCountsBytes(1),
+  gpu::Buffer listCounts(ctx, render::listCountsBytes(chunks.size()),
                          gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                          gpu::MemoryUse::DeviceLocal);
   job.onScreenList = &onScreenList;
@@ -146,8 +155,15 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
       render::splatJointsCpu(drawn.joints, frame, joints, maxPixels, width, height);
   render::splatFarBodiesCpu(drawn.bodies, frame, width, height, cpu.visibility);
   auto gpuVisibility = gpu::readback<uint64_t>(ctx, visibility, size_t(width) * height);
-  auto drawCommand = gpu::readback<uint32_t>(ctx, draws, 4);
-  auto gpuNear = gpu::readback<uint32_t>(ctx, nearList, drawCommand[0]);
+  // Each chunk's list of joints too wide to splat, from its first joint, chunk-local.
+  const auto drawCommands = gpu::readback<uint32_t>(ctx, draws, chunks.size() * 4);
+  const auto nearEntries = gpu::readback<uint32_t>(ctx, nearList, matrices.size());
+  std::vector<uint32_t> gpuNear;
+  for (size_t c = 0; c < chunks.size(); ++c)
+    for (uint32_t k = 0; k < drawCommands[4 * c]; ++k) {
+      const uint32_t first = chunks[c].firstCharacter * joints;
+      gpuNear.push_back(first + nearEntries[first + k]);
+    }
   auto counters = gpu::readback<uint32_t>(ctx, lists.counters, 2);
   MESSAGE("work lists: ", counters[0], " sprites (capacity ", spriteCapacity, "), ", counters[1],
           " pixels (capacity ", pixelCapacity, ")");
@@ -197,38 +213,41 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   CHECK(gpuNear == cpu.nearJoints);
 
   // The on-screen list holds exactly the characters whose mask is not empty (all of them
-  // without masks), each once, and the bodies pass is dispatched with a workgroup per
-  // kSplatBodyGroupSize of them.
-  const auto counts = gpu::readback<uint32_t>(ctx, listCounts, gpu_types::kSplatListArgsWords);
-  const uint32_t* listed = counts.data() + gpu_types::kSplatOnScreenArgs;
-  std::vector<uint32_t> twinOnScreen;
+  // without masks), each once, and each chunk's bodies pass is dispatched with a workgroup per
+  // kSplatBodyGroupSize of them. The walk list holds the characters on screen that are not far
+  // bodies, and each chunk's walk has enough workgroups for its part (at most kSplatWalkGroups,
+  // striding). Entries are chunk-local, from the chunk's first character.
+  const auto counts =
+      gpu::readback<uint32_t>(ctx, listCounts, chunks.size() * gpu_types::kSplatListArgsWords);
+  const auto onScreenEntries = gpu::readback<uint32_t>(ctx, onScreenList, characters);
+  std::vector<uint32_t> twinOnScreen, gpuOnScreen;
   for (uint32_t i = 0; i < characters; ++i)
     if (masks.empty() || (masks[i].lo | masks[i].hi) != 0u) twinOnScreen.push_back(i);
-  std::vector<uint32_t> gpuOnScreen = gpu::readback<uint32_t>(ctx, onScreenList, characters);
-  gpuOnScreen.resize(std::min<size_t>(listed[0], characters));
+  size_t walked = 0;
+  for (size_t c = 0; c < chunks.size(); ++c) {
+    const uint32_t* listed = counts.data() + c * gpu_types::kSplatListArgsWords;
+    const uint32_t* walk = listed + gpu_types::kSplatWalkArgs;
+    REQUIRE(listed[0] <= chunks[c].characterCount);
+    for (uint32_t k = 0; k < listed[0]; ++k)
+      gpuOnScreen.push_back(chunks[c].firstCharacter +
+                            onScreenEntries[chunks[c].firstCharacter + k]);
+    const uint32_t bodyGroup = gpu_types::kSplatBodyGroupSize;
+    const uint32_t walkGroup = gpu_types::kSplatWalkGroupSize;
+    CHECK(listed[1] == (listed[0] + bodyGroup - 1) / bodyGroup);
+    CHECK(walk[1] == std::min((walk[0] + walkGroup - 1) / walkGroup, gpu_types::kSplatWalkGroups));
+    CHECK((listed[2] == 1u && listed[3] == 1u && walk[2] == 1u && walk[3] == 1u));
+    walked += walk[0];
+  }
   std::sort(gpuOnScreen.begin(), gpuOnScreen.end());
-  MESSAGE("on-screen list: ", listed[0], " of ", characters,
-          " characters (twin: ", twinOnScreen.size(), "), ", listed[1], " workgroups");
-  CHECK(listed[0] == twinOnScreen.size());
+  MESSAGE("on-screen list: ", gpuOnScreen.size(), " of ", characters,
+          " characters (twin: ", twinOnScreen.size(), ") in ", chunks.size(), " chunks");
   CHECK(gpuOnScreen == twinOnScreen);
-  const uint32_t bodyGroup = gpu_types::kSplatBodyGroupSize;
-  CHECK(listed[1] == (listed[0] + bodyGroup - 1) / bodyGroup);
-  CHECK(listed[2] == 1u);
-  CHECK(listed[3] == 1u);
-
-  // The walk list holds the characters on screen that are not far bodies, and the walk's
-  // indirect dispatch has enough workgroups for it (at most kSplatWalkGroups, striding).
-  const uint32_t* walk = counts.data() + gpu_types::kSplatWalkArgs;
   const size_t walkers = twinOnScreen.size() - drawn.bodies.size();
-  MESSAGE("walk list: ", walk[0], " characters (twin: ", walkers, "), ", walk[1], " workgroups");
+  MESSAGE("walk list: ", walked, " characters (twin: ", walkers, ")");
   if (levels)  // a body on the height threshold may round the other way on the GPU
-    CHECK(std::abs(double(walk[0]) - double(walkers)) <= 0.01 * double(walkers) + 1.0);
+    CHECK(std::abs(double(walked) - double(walkers)) <= 0.01 * double(walkers) + 1.0);
   else
-    CHECK(walk[0] == walkers);
-  const uint32_t groupSize = gpu_types::kSplatWalkGroupSize;
-  CHECK(walk[1] == std::min((walk[0] + groupSize - 1) / groupSize, gpu_types::kSplatWalkGroups));
-  CHECK(walk[2] == 1u);
-  CHECK(walk[3] == 1u);
+    CHECK(walked == walkers);
   CHECK(ctx.validationMessageCount() == 0);
 }
 
@@ -283,5 +302,17 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
     checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels,
                    gpu_types::kSplatSpriteCapacity, gpu_types::kSplatPixelCapacity, 40.0f, 48.0f,
                    1280, 720);
+  }
+  SUBCASE("chunks of 128 characters: each chunk's lists, dispatches and near joints") {
+    synth::BodyParts parts = synth::describeBodyParts(clips.slow.skeleton);
+    synth::setMeanCentres(parts, pair);
+    const gpu_types::CoverageParts levels = synth::makeCoverageParts(parts, {});
+    std::vector<synth::CoverageMask> masks(crowd.size());
+    synth::coverageCpu(
+        synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane),
+        levels, joints, crowd, {}, masks, {});
+    checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels,
+                   gpu_types::kSplatSpriteCapacity, gpu_types::kSplatPixelCapacity,
+                   gpu_types::kSplatFarBodyPixels, 12.0f, 320, 180, 128);
   }
 }
