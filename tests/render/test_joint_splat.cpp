@@ -302,15 +302,7 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
     checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels,
                    gpu_types::kSplatSpriteCapacity, gpu_types::kSplatPixelCapacity, 40.0f, 48.0f,
                    1280, 720);
-  }
-  SUBCASE("chunks of 128 characters: each chunk's lists, dispatches and near joints") {
-    synth::BodyParts parts = synth::describeBodyParts(clips.slow.skeleton);
-    synth::setMeanCentres(parts, pair);
-    const gpu_types::CoverageParts levels = synth::makeCoverageParts(parts, {});
-    std::vector<synth::CoverageMask> masks(crowd.size());
-    synth::coverageCpu(
-        synth::coverageCamera(camera.view(), camera.fovYDegrees, 1280, 720, camera.nearPlane),
-        levels, joints, crowd, {}, masks, {});
+    // In chunks of 128 characters: each chunk's lists, dispatches and near joints.
     checkSplatTwin(matrices, joints, camera, parts.allMask & ~uint64_t(1 << 3), masks, &levels,
                    gpu_types::kSplatSpriteCapacity, gpu_types::kSplatPixelCapacity,
                    gpu_types::kSplatFarBodyPixels, 12.0f, 320, 180, 128);
