@@ -80,21 +80,17 @@ GridPush gridPush(const GridBuffers& grid, uint32_t agents) {
 // Subgroup lanes the steering pass shares candidates among; throws when the device's subgroups
 // lack what the pass uses.
 uint32_t subgroupChunk(const gpu::Context& context) {
-  VkPhysicalDeviceSubgroupProperties subgroup{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
-  vkGetPhysicalDeviceProperties2(context.physicalDevice(), &properties);
+  const gpu::DeviceInfo& info = context.info();
   const VkSubgroupFeatureFlags needed =
       VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT |
       VK_SUBGROUP_FEATURE_ARITHMETIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
-  if ((subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0 ||
-      (subgroup.supportedOperations & needed) != needed || subgroup.subgroupSize < 4)
+  if ((info.computeSubgroupOperations & needed) != needed || info.subgroupSize < 4)
     fail(
         "the steering pass needs compute subgroups of at least 4 lanes with vote, arithmetic and "
         "shuffle; ",
-        context.info().name, " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
-        subgroup.supportedOperations);
-  return std::min(subgroup.subgroupSize, 32u);
+        info.name, " has ", info.subgroupSize, " lanes, compute operations 0x", std::hex,
+        info.computeSubgroupOperations);
+  return std::min(info.subgroupSize, 32u);
 }
 
 }  // namespace

@@ -161,20 +161,16 @@ ClothStats readClothStats(const ClothCrowdBuffers& buffers) {
 namespace {
 // Rows the decode pass shares across a subgroup per round: min(subgroup size, kClothDecodeRows).
 std::vector<uint32_t> decodeSpecialization(const gpu::Context& context) {
-  VkPhysicalDeviceSubgroupProperties subgroup{
-      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
-  VkPhysicalDeviceProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroup};
-  vkGetPhysicalDeviceProperties2(context.physicalDevice(), &properties);
+  const gpu::DeviceInfo& info = context.info();
   const VkSubgroupFeatureFlags needed =
       VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_SHUFFLE_BIT;
-  if ((subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) == 0 ||
-      (subgroup.supportedOperations & needed) != needed || subgroup.subgroupSize < 1)
-    fail("the cloth decode pass needs compute subgroups with shuffle; ", context.info().name,
-         " has ", subgroup.subgroupSize, " lanes, operations 0x", std::hex,
-         subgroup.supportedOperations);
+  if ((info.computeSubgroupOperations & needed) != needed || info.subgroupSize < 1)
+    fail("the cloth decode pass needs compute subgroups with shuffle; ", info.name, " has ",
+         info.subgroupSize, " lanes, compute operations 0x", std::hex,
+         info.computeSubgroupOperations);
   std::vector<uint32_t> constants(gpu_types::kClothDecodeConstantLanes + 1);
   constants[gpu_types::kClothDecodeConstantLanes] =
-      std::min(subgroup.subgroupSize, gpu_types::kClothDecodeRows);
+      std::min(info.subgroupSize, gpu_types::kClothDecodeRows);
   return constants;
 }
 }  // namespace
