@@ -25,10 +25,10 @@ void main() {
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
     uint owner = owners[entry];
     if (owner == kSplatNoSprite || (owner & kSplatPixelEntry) != 0u) continue;  // none, or a far body's pixel
-    SplatSprite s = sprites[owner];
-    // The entry's row in the box by a float division: exact for boxes this small (fewer than
-    // 2^16 entries), and lavapipe divides integers one lane at a time.
-    uint local = entry - s.box.w;
+    SplatSprite s = sprites[owner & kSplatOwnerSpriteMask];
+    // The pixel's row in the box by a float division: exact for boxes this small (fewer than
+    // 2^16 pixels), and lavapipe divides integers one lane at a time.
+    uint local = owner >> kSplatOwnerPixelShift;
     uint row = uint((float(local) + 0.5) / float(s.box.z));
     int x = int(s.box.x + local - row * s.box.z), y = int(s.box.y + row);
     bool hit = splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, s.tint.xyz);

@@ -33,8 +33,58 @@ uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool
   return first;
 }
 
-// Joint `joint` (chunk-local) as sprite s: listed for the draw when too wide, else its box's
-// pixels reserved for the pixel pass (or splatted here when the work lists are full).
+// The ray through pixel centre (x, y) meets a sprite's ellipsoid where its direction d, in the
+// ellipsoid's unit-sphere space, lies in the cone from the eye o around the sphere:
+// m·|d⊥|² ≤ (d·ô)², d⊥ being d's part across ô = o / |o| and m = |o|² − 1 (hitJoint's test,
+// rearranged). d is linear in the pixel, d = dc + (x − lo.x)·dx + (y − lo.y)·dy from the box's
+// first pixel, so each row is a quadratic in x whose roots bound the row's span. Taken from the
+// box, not the screen's corner, every term stays of the box's size (the eye is hundreds of
+// radii away: from the corner, rounding would swamp them). m uses a sphere 1/256 larger, so
+// rounding never leaves out a pixel the ray-cast hits.
+struct Silhouette {
+  vec3 across0, acrossX, acrossY;  // d⊥ of dc, dx, dy
+  vec3 along;                      // d·ô of dc, dx, dy
+  float m, a;                      // a: the quadratic's x² coefficient, the same in every row
+};
+
+Silhouette silhouette(JointSprite s, ivec2 lo) {
+  mat3 inv = transpose(mat3(s.inverse0.xyz, s.inverse1.xyz, s.inverse2.xyz));
+  vec3 o = inv * frame.eye.xyz + vec3(s.inverse0.w, s.inverse1.w, s.inverse2.w);
+  vec3 axis = normalize(o);
+  vec2 ndc = (vec2(lo) + 0.5) / frame.viewport.xy * 2.0 - 1.0;
+  vec3 dc = inv * (frame.rayForward.xyz + ndc.x * frame.rayRight.xyz + ndc.y * frame.rayDown.xyz);
+  vec3 dx = inv * frame.rayRight.xyz * (2.0 / frame.viewport.x);
+  vec3 dy = inv * frame.rayDown.xyz * (2.0 / frame.viewport.y);
+  Silhouette c;
+  c.along = vec3(dot(dc, axis), dot(dx, axis), dot(dy, axis));
+  c.across0 = dc - c.along.x * axis;
+  c.acrossX = dx - c.along.y * axis;
+  c.acrossY = dy - c.along.z * axis;
+  const float grown = 1.0 + 1.0 / 256.0;
+  c.m = dot(o, o) - grown * grown;
+  c.a = c.m * dot(c.acrossX, c.acrossX) - c.along.y * c.along.y;
+  return c;
+}
+
+// The pixels x..y of row `row` whose centres the silhouette holds, within the box lo..hi
+// (x > y: none).
+ivec2 silhouetteRow(Silhouette c, int row, ivec2 lo, ivec2 hi) {
+  float rows = float(row - lo.y);
+  vec3 across = c.across0 + rows * c.acrossY;
+  float along = c.along.x + rows * c.along.z;
+  float halfB = c.m * dot(across, c.acrossX) - along * c.along.y;
+  float disc = halfB * halfB - c.a * (c.m * dot(across, across) - along * along);
+  if (!(c.a > 0.0)) return ivec2(lo.x, hi.x);  // not an ellipse (never for a sprite in front)
+  if (disc < 0.0) return ivec2(1, 0);
+  float h = sqrt(disc);
+  float first = max(ceil((-halfB - h) / c.a), 0.0), last = min(floor((-halfB + h) / c.a), float(hi.x - lo.x));
+  return first <= last ? lo.x + ivec2(int(first), int(last)) : ivec2(1, 0);
+}
+
+// Joint `joint` (chunk-local) as sprite s: listed for the draw when too wide, else an entry
+// reserved for each pixel of its box whose centre its silhouette holds (about two thirds of the
+// box: a slanted bone leaves most of it empty), for the pixel pass, or splatted here when the
+// work lists are full.
 void splatSprite(uint joint, JointSprite s, vec3 tint) {
   if (s.sizePx > push.maxPixels) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);
@@ -44,13 +94,24 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
   uint boxWidth = uint(hi.x - lo.x + 1);
-  uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
+  Silhouette c = silhouette(s, lo);
+  uint pixelCount = 0u;
+  for (int y = lo.y; y <= hi.y; ++y) {
+    ivec2 span = silhouetteRow(c, y, lo, hi);
+    pixelCount += uint(max(span.y - span.x + 1, 0));
+  }
   uint sprite;
   bool fits;
-  uint first = reserveEntries(1u, pixelCount, sprite, fits);
+  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits);
+  if (pixelCount == 0u) return;
   if (fits) {
-    for (uint i = 0u; i < pixelCount; ++i) owners[first + i] = sprite;
-    sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, first));
+    uint entry = first;
+    for (int y = lo.y; y <= hi.y; ++y) {
+      ivec2 span = silhouetteRow(c, y, lo, hi);
+      uint rowStart = uint(y - lo.y) * boxWidth - uint(lo.x);
+      for (int x = span.x; x <= span.y; ++x) owners[entry++] = sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift);
+    }
+    sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
     return;
   }
   for (int y = lo.y; y <= hi.y; ++y)

@@ -72,8 +72,11 @@ bool hitJoint(vec3 eye, vec3 dir, vec4 inverse0, vec4 inverse1, vec4 inverse2, o
   mat3 inv = transpose(mat3(inverse0.xyz, inverse1.xyz, inverse2.xyz));
   vec3 o = inv * eye + vec3(inverse0.w, inverse1.w, inverse2.w);
   vec3 d = inv * dir;
-  float a = dot(d, d), b = dot(o, d), c = dot(o, o) - 1.0;
-  float disc = b * b - a * c;
+  // b² − a·(|o|² − 1) as a − |o × d|² (Lagrange's identity): the eye is hundreds of radii from
+  // a thin bone, and b² and a·|o|² would cancel to their rounding.
+  vec3 across = cross(o, d);
+  float a = dot(d, d), b = dot(o, d);
+  float disc = a - dot(across, across);
   t = (-b - sqrt(max(disc, 0.0))) / a;
   normal = normalize(transpose(inv) * (o + t * d));
   return disc >= 0.0 && t > 0.0;

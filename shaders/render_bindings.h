@@ -46,6 +46,12 @@ const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
 // A pixel entry the joint pass ray-cast itself (a far body): the pixel's index with this bit,
 // which the pixel pass leaves alone and the resolve takes off.
 const uint kSplatPixelEntry = 0x80000000u;
+// A joint's pixel entry before the pixel pass: its sprite in the low kSplatOwnerPixelShift bits
+// and, above them, the pixel's index in the sprite's box (row-major). So the sprite capacity is
+// at most 2^18 and a box at most kSplatMaxSpritePixels wide (its indices stay below bit 31).
+const uint kSplatOwnerPixelShift = 18u;
+const uint kSplatOwnerSpriteMask = 0x3FFFFu;
+const uint kSplatMaxSpritePixels = 64u;      // the largest maxPixels a splat accepts
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 const uint kSplatWalkGroups = 256u;          // at most, of the joint walk per chunk (grid-stride)
 const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup

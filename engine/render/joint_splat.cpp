@@ -110,6 +110,12 @@ std::vector<std::string> SplatJob::validate() const {
   else if (nearList->size() < VkDeviceSize(characterCount) * jointCount * 4)
     problems.push_back("output 'nearList' is smaller than one index per joint");
   if (spriteCapacity == 0 || pixelCapacity == 0) problems.push_back("a work-list capacity is zero");
+  if (spriteCapacity > gpu_types::kSplatOwnerSpriteMask + 1u)
+    problems.push_back(concat("spriteCapacity ", spriteCapacity, " is above ",
+                              gpu_types::kSplatOwnerSpriteMask + 1u, " (a pixel entry's sprite bits)"));
+  if (!(maxPixels <= float(gpu_types::kSplatMaxSpritePixels)))
+    problems.push_back(concat("maxPixels ", maxPixels, " is above ",
+                              gpu_types::kSplatMaxSpritePixels, " (a pixel entry's box bits)"));
   const auto checkList = [&](const gpu::Buffer* list, const char* name, VkDeviceSize bytes) {
     if (!list || !*list)
       problems.push_back(concat("work list '", name, "' is missing"));

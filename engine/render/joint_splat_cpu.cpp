@@ -126,8 +126,9 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
             glm::normalize(glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) +
                            ndc.y * glm::vec3(frame.rayDown));
         glm::vec3 d = inv * dir;
-        float a = glm::dot(d, d), b = glm::dot(o, d), c = glm::dot(o, o) - 1.0f;
-        float disc = b * b - a * c;
+        const glm::vec3 across = glm::cross(o, d);  // hitJoint's well-conditioned discriminant
+        float a = glm::dot(d, d), b = glm::dot(o, d);
+        float disc = a - glm::dot(across, across);
         float t = (-b - std::sqrt(std::max(disc, 0.0f))) / a;
         if (!(disc >= 0.0f && t > 0.0f)) continue;
         glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));
