@@ -42,9 +42,9 @@ uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool
 // radii away: from the corner, rounding would swamp them). m uses a sphere 1/256 larger, so
 // rounding never leaves out a pixel the ray-cast hits.
 struct Silhouette {
-  vec3 across0, acrossX, acrossY;  // d⊥ of dc, dx, dy
-  vec3 along;                      // d·ô of dc, dx, dy
-  float m, a;                      // a: the quadratic's x² coefficient, the same in every row
+  float a, invA;         // the quadratic's x² coefficient, the same in every row, and 1 / a
+  vec2 halfB;            // its half x coefficient: halfB.x + r·halfB.y in row lo.y + r
+  vec3 c;                // its constant: c.x + r·(2·c.y + r·c.z)
 };
 
 Silhouette silhouette(JointSprite s, ivec2 lo) {
@@ -55,29 +55,29 @@ Silhouette silhouette(JointSprite s, ivec2 lo) {
   vec3 dc = inv * (frame.rayForward.xyz + ndc.x * frame.rayRight.xyz + ndc.y * frame.rayDown.xyz);
   vec3 dx = inv * frame.rayRight.xyz * (2.0 / frame.viewport.x);
   vec3 dy = inv * frame.rayDown.xyz * (2.0 / frame.viewport.y);
-  Silhouette c;
-  c.along = vec3(dot(dc, axis), dot(dx, axis), dot(dy, axis));
-  c.across0 = dc - c.along.x * axis;
-  c.acrossX = dx - c.along.y * axis;
-  c.acrossY = dy - c.along.z * axis;
+  vec3 along = vec3(dot(dc, axis), dot(dx, axis), dot(dy, axis));  // d·ô of dc, dx, dy
+  vec3 across0 = dc - along.x * axis, acrossX = dx - along.y * axis, acrossY = dy - along.z * axis;
   const float grown = 1.0 + 1.0 / 256.0;
-  c.m = dot(o, o) - grown * grown;
-  c.a = c.m * dot(c.acrossX, c.acrossX) - c.along.y * c.along.y;
+  float m = dot(o, o) - grown * grown;
+  Silhouette c;
+  c.a = m * dot(acrossX, acrossX) - along.y * along.y;
+  c.invA = 1.0 / c.a;
+  c.halfB = vec2(m * dot(across0, acrossX) - along.x * along.y, m * dot(acrossY, acrossX) - along.z * along.y);
+  c.c = vec3(m * dot(across0, across0) - along.x * along.x, m * dot(across0, acrossY) - along.x * along.z,
+             m * dot(acrossY, acrossY) - along.z * along.z);
   return c;
 }
 
 // The pixels x..y of row `row` whose centres the silhouette holds, within the box lo..hi
 // (x > y: none).
 ivec2 silhouetteRow(Silhouette c, int row, ivec2 lo, ivec2 hi) {
-  float rows = float(row - lo.y);
-  vec3 across = c.across0 + rows * c.acrossY;
-  float along = c.along.x + rows * c.along.z;
-  float halfB = c.m * dot(across, c.acrossX) - along * c.along.y;
-  float disc = halfB * halfB - c.a * (c.m * dot(across, across) - along * along);
+  float r = float(row - lo.y);
+  float halfB = c.halfB.x + r * c.halfB.y;
+  float disc = halfB * halfB - c.a * (c.c.x + r * (2.0 * c.c.y + r * c.c.z));
   if (!(c.a > 0.0)) return ivec2(lo.x, hi.x);  // not an ellipse (never for a sprite in front)
   if (disc < 0.0) return ivec2(1, 0);
   float h = sqrt(disc);
-  float first = max(ceil((-halfB - h) / c.a), 0.0), last = min(floor((-halfB + h) / c.a), float(hi.x - lo.x));
+  float first = max(ceil((-halfB - h) * c.invA), 0.0), last = min(floor((-halfB + h) * c.invA), float(hi.x - lo.x));
   return first <= last ? lo.x + ivec2(int(first), int(last)) : ivec2(1, 0);
 }
 
