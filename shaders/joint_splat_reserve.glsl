@@ -81,18 +81,15 @@ ivec2 silhouetteRow(Silhouette c, int row, ivec2 lo, ivec2 hi) {
   return first <= last ? lo.x + ivec2(int(first), int(last)) : ivec2(1, 0);
 }
 
-// Joint `joint` (chunk-local) as sprite s: listed for the draw when too wide, else an entry
-// reserved for each pixel of its box whose centre its silhouette holds (about two thirds of the
-// box: a slanted bone leaves most of it empty), for the pixel pass, or splatted here when the
-// work lists are full.
+// Joint `joint` (chunk-local) as sprite s: an entry reserved for each pixel of its box whose
+// centre its silhouette holds (about two thirds of the box: a slanted bone leaves most of it
+// empty), for the pixel pass; listed for the graphics pipeline's draw instead when it is too wide,
+// or when the work lists are full. Not splatted here in that case: lavapipe would run that loop's
+// body, ray-cast and all, for every joint with its lanes masked off.
 void splatSprite(uint joint, JointSprite s, vec3 tint) {
-  if (s.sizePx > push.maxPixels) {
-    uint slot = atomicAdd(draws[4 * push.chunk], 1u);
-    nearList[push.listBase + slot] = joint;
-    return;
-  }
-  ivec2 lo, hi;
-  if (!spriteBox(s, lo, hi)) return;
+  ivec2 lo = ivec2(0), hi = ivec2(-1);  // too wide: an empty box, so its lanes skip the rows
+  bool wide = s.sizePx > push.maxPixels;
+  if (!wide && !spriteBox(s, lo, hi)) return;
   uint boxWidth = uint(hi.x - lo.x + 1);
   Silhouette c = silhouette(s, lo);
   uint pixelCount = 0u;
@@ -103,19 +100,19 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
   uint sprite;
   bool fits;
   uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits);
-  if (pixelCount == 0u) return;
-  if (fits) {
-    uint entry = first;
-    for (int y = lo.y; y <= hi.y; ++y) {
-      ivec2 span = silhouetteRow(c, y, lo, hi);
-      uint rowStart = uint(y - lo.y) * boxWidth - uint(lo.x);
-      for (int x = span.x; x <= span.y; ++x) owners[entry++] = sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift);
-    }
-    sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
+  if (wide || !fits) {
+    uint slot = atomicAdd(draws[4 * push.chunk], 1u);
+    nearList[push.listBase + slot] = joint;
     return;
   }
-  for (int y = lo.y; y <= hi.y; ++y)
-    for (int x = lo.x; x <= hi.x; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+  if (pixelCount == 0u) return;
+  uint entry = first;
+  for (int y = lo.y; y <= hi.y; ++y) {
+    ivec2 span = silhouetteRow(c, y, lo, hi);
+    uint rowStart = uint(y - lo.y) * boxWidth - uint(lo.x);
+    for (int x = span.x; x <= span.y; ++x) owners[entry++] = sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift);
+  }
+  sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
 }
 
 // The pixel of entry i of a box boxWidth wide at lo, the row by a float division as in

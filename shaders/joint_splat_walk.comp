@@ -7,10 +7,10 @@
 // The far joints, step 2: one invocation per character joint_splat.comp listed walks its
 // joints (lanes are characters at the same joint, so a level's undrawn joints cost its lanes
 // nothing, and the character's mask, tint and pose source are read once). Each drawn joint's
-// ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel of the box
-// for joint_splat_pixels.comp, which ray-casts them one pixel per invocation; a joint whose
-// reservation does not fit ray-casts its own pixels here. Joints wider than push.maxPixels are
-// listed for an indirect draw by the graphics pipeline instead. Dispatched indirectly with as
+// ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel of its
+// silhouette for joint_splat_pixels.comp, which ray-casts them one pixel per invocation. Joints
+// wider than push.maxPixels, and joints whose reservation does not fit, are listed for an
+// indirect draw by the graphics pipeline instead. Dispatched indirectly with as
 // many workgroups as the list needs (at most kSplatWalkGroups, which stride over a longer list).
 // CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"

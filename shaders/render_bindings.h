@@ -37,8 +37,8 @@ const uint kRenderBindingOnScreenList = 21u;  // characters on screen, per chunk
 // The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
 // pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own
 // pixels and not the 2×2 lanes' idle wait. Fixed capacities (≈ 37 MB; specialization constants
-// 0 and 1 of both splat shaders, so tests can shrink them): what does not fit is splatted by the
-// joint's own invocation, as correct and slower.
+// 0 and 1 of both splat shaders, so tests can shrink them): a joint that does not fit is listed
+// for the graphics pipeline's draw, like one too wide to splat, as correct and slower.
 const uint kSplatSpriteCapacity = 262144u;
 const uint kSplatSpriteBytes = 80u;          // SplatSprite
 const uint kSplatPixelCapacity = 4194304u;   // 4 Mi pixel entries (a 1280×720 frame 4.5 times)
