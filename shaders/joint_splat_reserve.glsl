@@ -14,8 +14,10 @@ bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
 
 // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
 // joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
-// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities. Every
-// entry reserved below the pixel capacity gets an owner, a sentinel when the entries are not kept.
+// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities. The
+// caller gives every entry reserved below the pixel capacity an owner, kSplatNoSprite when the
+// entries are not kept (in the loop that writes them: a loop of its own here would run its body
+// for every caller, its lanes masked off).
 uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits) {
   uint spriteBase = 0u, firstBase = 0u;
   uint spriteTotal = subgroupAdd(spriteCount), pixelTotal = subgroupAdd(pixelCount);
@@ -26,10 +28,6 @@ uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool
   sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(spriteCount);
   uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
   fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
-  if (!fits) {
-    uint owned = first < kPixelCapacity ? min(pixelCount, kPixelCapacity - first) : 0u;
-    for (uint i = 0u; i < owned; ++i) owners[first + i] = kSplatNoSprite;
-  }
   return first;
 }
 
@@ -103,16 +101,15 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
   if (wide || !fits) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);
     nearList[push.listBase + slot] = joint;
-    return;
   }
-  if (pixelCount == 0u) return;
   uint entry = first;
   for (int y = lo.y; y <= hi.y; ++y) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
     uint rowStart = uint(y - lo.y) * boxWidth - uint(lo.x);
-    for (int x = span.x; x <= span.y; ++x) owners[entry++] = sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift);
+    for (int x = span.x; x <= span.y; ++x, ++entry)
+      if (entry < kPixelCapacity) owners[entry] = fits ? sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift) : kSplatNoSprite;
   }
-  sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
+  if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
 }
 
 // The pixel of entry i of a box boxWidth wide at lo, the row by a float division as in
@@ -122,11 +119,11 @@ ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
   return lo + ivec2(i - row * boxWidth, row);
 }
 
-// A far body's hit pixel: its visibility atomicMin and, when the entries fit, its entry.
+// A far body's hit pixel: its visibility atomicMin and its entry (none when the entries do not fit).
 void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint entry) {
   uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
   atomicMin(visibility[pixel], packed);
-  if (fits) owners[entry] = pixel | kSplatPixelEntry;
+  if (entry < kPixelCapacity) owners[entry] = fits ? pixel | kSplatPixelEntry : kSplatNoSprite;
 }
 
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than
