@@ -75,8 +75,9 @@ void splatFarBodiesCpu(std::span<const FarBodyCpu> bodies, const gpu_types::Fram
     // farBodyShade: the hit of the ray through the box's centre (its nearest approach on a miss).
     const glm::vec3 dir = glm::normalize(ray(0.5f * (s.lo + s.hi)));
     const glm::vec3 d = inv * dir;
-    const float a = glm::dot(d, d), bq = glm::dot(o, d), c = glm::dot(o, o) - 1.0f;
-    const float t = (-bq - std::sqrt(std::max(bq * bq - a * c, 0.0f))) / a;
+    const glm::vec3 across = glm::cross(o, d);  // hitJoint's discriminant, |d|² − |o × d|²
+    const float a = glm::dot(d, d), bq = glm::dot(o, d);
+    const float t = (-bq - std::sqrt(std::max(a - glm::dot(across, across), 0.0f))) / a;
     const glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));
     const glm::vec4 clip = frame.viewProjection * glm::vec4(eye + t * dir, 1.0f);
     const float depth = std::clamp(clip.z / clip.w, 0.0f, 1.0f);
@@ -88,8 +89,9 @@ void splatFarBodiesCpu(std::span<const FarBodyCpu> bodies, const gpu_types::Fram
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
         const glm::vec3 dp = inv * ray(glm::vec2(x, y) + 0.5f);  // farBodyPixel
-        const float bp = glm::dot(o, dp);
-        if (!(bp < 0.0f && bp * bp - glm::dot(dp, dp) * c >= 0.0f)) continue;
+        const glm::vec3 acrossP = glm::cross(o, dp);
+        if (!(glm::dot(o, dp) < 0.0f && glm::dot(dp, dp) - glm::dot(acrossP, acrossP) >= 0.0f))
+          continue;
         uint64_t& pixel = visibility[size_t(y) * width + x];
         pixel = std::min(pixel, packed);
       }
