@@ -6,7 +6,8 @@
 // its sprite's ellipsoid through that pixel, so neighbouring lanes do equal work whatever the
 // sprites' sizes. A fixed number of workgroups strides over the entries, so the pass needs no
 // indirect arguments. Each entry is left holding its pixel's index (kSplatNoSprite on a miss) for
-// joint_splat_resolve.comp; a far body's entries (kSplatPixelEntry) already do. CPU twin: render::splatJointsCpu.
+// joint_splat_resolve.comp. The far bodies' entries, counted down from the last (SplatCounters),
+// name their pixels already and are not visited. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -20,11 +21,11 @@ layout(std430, binding = kRenderBindingPixelOwners) buffer Owners { uint owners[
 layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { SplatCounters counters; };
 
 void main() {
-  uint total = min(counters.pixels, kPixelCapacity);
+  uint total = min(counters.pixels, spriteEntryLimit(counters));  // the sprites' entries alone
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
     uint owner = owners[entry];
-    if (owner == kSplatNoSprite || (owner & kSplatPixelEntry) != 0u) continue;  // none, or a far body's pixel
+    if (owner == kSplatNoSprite) continue;
     SplatSprite s = sprites[owner & kSplatOwnerSpriteMask];
     // The pixel's row in the box by a float division: exact for boxes this small (fewer than
     // 2^16 pixels), and lavapipe divides integers one lane at a time.

@@ -14,11 +14,11 @@ bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
 
 // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
 // joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
-// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities. The
-// caller gives every entry reserved below the pixel capacity an owner, kSplatNoSprite when the
-// entries are not kept (in the loop that writes them: a loop of its own here would run its body
-// for every caller, its lanes masked off).
-uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits) {
+// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities (the
+// entries below `limit`, where the far bodies' begin). The caller gives every entry reserved
+// below the limit an owner, kSplatNoSprite when the entries are not kept (in the loop that
+// writes them: a loop of its own here would run its body for every caller, its lanes masked off).
+uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits, out uint limit) {
   uint spriteBase = 0u, firstBase = 0u;
   uint spriteTotal = subgroupAdd(spriteCount), pixelTotal = subgroupAdd(pixelCount);
   if (subgroupElect()) {
@@ -27,7 +27,20 @@ uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool
   }
   sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(spriteCount);
   uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
-  fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
+  limit = spriteEntryLimit(counters);
+  fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= limit - min(pixelCount, limit);
+  return first;
+}
+
+// A far body's `hits` entries, one reservation per subgroup, counted down from the last entry
+// (SplatCounters): returns the body's first, as a count from the top; `fits` when all are within
+// the capacity.
+uint reserveBodyEntries(uint hits, out bool fits) {
+  uint base = 0u;
+  uint total = subgroupAdd(hits);
+  if (subgroupElect() && total > 0u) base = atomicAdd(counters.bodyPixels, total);
+  uint first = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(hits);
+  fits = first <= kPixelCapacity - min(hits, kPixelCapacity);
   return first;
 }
 
@@ -95,9 +108,9 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
     pixelCount += uint(max(span.y - span.x + 1, 0));
   }
-  uint sprite;
+  uint sprite, limit;
   bool fits;
-  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits);
+  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits, limit);
   if (wide || !fits) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);
     nearList[push.listBase + slot] = joint;
@@ -107,7 +120,7 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
     uint rowStart = uint(y - lo.y) * boxWidth - uint(lo.x);
     for (int x = span.x; x <= span.y; ++x, ++entry)
-      if (entry < kPixelCapacity) owners[entry] = fits ? sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift) : kSplatNoSprite;
+      if (entry < limit) owners[entry] = fits ? sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift) : kSplatNoSprite;
   }
   if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
 }
@@ -119,11 +132,12 @@ ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
   return lo + ivec2(i - row * boxWidth, row);
 }
 
-// A far body's hit pixel: its visibility atomicMin and its entry (none when the entries do not fit).
-void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint entry) {
+// A far body's hit pixel: its visibility atomicMin and its entry, `fromTop` entries down from the
+// last (none when the entries do not fit).
+void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint fromTop) {
   uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
   atomicMin(visibility[pixel], packed);
-  if (entry < kPixelCapacity) owners[entry] = fits ? pixel | kSplatPixelEntry : kSplatNoSprite;
+  if (fromTop < kPixelCapacity) owners[kPixelCapacity - 1u - fromTop] = fits ? pixel | kSplatPixelEntry : kSplatNoSprite;
 }
 
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than
@@ -147,9 +161,8 @@ void splatBody(JointSprite s, vec3 tint) {
     if (i < 32u) hitBits.x |= 1u << i;
     else if (i < 64u) hitBits.y |= 1u << (i - 32u);
   }
-  uint sprite;
   bool fits;
-  uint first = reserveEntries(0u, hits, sprite, fits);
+  uint first = reserveBodyEntries(hits, fits);
   uint64_t packed = farBodyShade(s, tint);
   if (pixelCount <= 64u) {
     for (uint k = 0u; k < hits; ++k) {

@@ -16,23 +16,27 @@ layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { 
 layout(constant_id = 0) const uint kSpriteCapacity = kSplatSpriteCapacity;
 layout(constant_id = 1) const uint kPixelCapacity = kSplatPixelCapacity;
 layout(std430, binding = kRenderBindingPixelOwners) readonly buffer Owners { uint owners[]; };
-layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { uint spriteCount; uint pixelCount; };
+// SplatCounters (joint_splat_common.glsl): sprites, their pixel entries from the first entry up,
+// the far bodies' from the last down.
+layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { uint spriteCount; uint pixelCount; uint bodyPixelCount; };
 layout(std430, binding = kRenderBindingFramePlanes) buffer Planes { uint planes[]; };  // colour plane, then depth plane
 layout(std430, binding = kRenderBindingResolveDraw) writeonly buffer ResolveDraw { uint resolveDraw[4]; };
 
 void main() {
+  uint bodies = min(bodyPixelCount, kPixelCapacity);
+  uint spritePixels = min(pixelCount, kPixelCapacity - bodies);
   if (gl_GlobalInvocationID.x == 0u) {
-    bool overflow = spriteCount > kSpriteCapacity || pixelCount > kPixelCapacity;
+    bool overflow = spriteCount > kSpriteCapacity || bodyPixelCount > kPixelCapacity || pixelCount > kPixelCapacity - bodies;
     resolveDraw[0] = overflow ? 3u : 0u;
     resolveDraw[1] = 1u;
     resolveDraw[2] = 0u;
     resolveDraw[3] = 0u;
   }
   uint width = uint(frame.viewport.x), pixels = width * uint(frame.viewport.y);
-  uint total = min(pixelCount, kPixelCapacity);
+  uint total = spritePixels + bodies;
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-  for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
-    uint i = owners[entry];  // the pixel joint_splat_pixels.comp (or a far body) hit, or none
+  for (uint k = gl_GlobalInvocationID.x; k < total; k += stride) {
+    uint i = owners[k < spritePixels ? k : kPixelCapacity - 1u - (k - spritePixels)];  // the pixel joint_splat_pixels.comp (or a far body) hit, or none
     if (i == kSplatNoSprite) continue;
     i &= ~kSplatPixelEntry;
     uint64_t v = visibility[i];

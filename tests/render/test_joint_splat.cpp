@@ -163,9 +163,10 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
       gpuNear.push_back(first + nearEntries[first + k]);
     }
   std::sort(gpuNear.begin(), gpuNear.end());
-  auto counters = gpu::readback<uint32_t>(ctx, lists.counters, 2);
+  auto counters = gpu::readback<uint32_t>(ctx, lists.counters, 3);
   MESSAGE("work lists: ", counters[0], " sprites (capacity ", spriteCapacity, "), ", counters[1],
-          " pixels (capacity ", pixelCapacity, ")");
+          " sprite pixels and ", counters[2], " far-body pixels (capacity ", pixelCapacity, ")");
+  if (levels) CHECK(counters[2] > 0);  // the far bodies' entries, counted apart
   CHECK(counters[0] > 0);
   // Joints the work lists cannot hold are listed for the graphics pipeline like the too-wide
   // ones: the twin splats every joint but those.
@@ -174,7 +175,7 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   std::vector<uint32_t> overflowed;
   std::set_difference(gpuNear.begin(), gpuNear.end(), wide.begin(), wide.end(),
                       std::back_inserter(overflowed));
-  const bool full = counters[0] > spriteCapacity || counters[1] > pixelCapacity;
+  const bool full = counters[0] > spriteCapacity || counters[1] + counters[2] > pixelCapacity;
   MESSAGE(overflowed.size(), " joints listed because the work lists were full");
   CHECK(full == !overflowed.empty());
   CHECK(std::includes(gpuNear.begin(), gpuNear.end(), wide.begin(), wide.end()));
