@@ -62,8 +62,7 @@ uint64_t farBodyShade(JointSprite s, vec3 tint) {
 bool farBodyPixel(vec3 o, mat3 inv, vec2 pixel) {
   vec2 ndc = pixel / frame.viewport.xy * 2.0 - 1.0;
   vec3 d = inv * (frame.rayForward.xyz + ndc.x * frame.rayRight.xyz + ndc.y * frame.rayDown.xyz);
-  vec3 across = cross(o, d);  // |d|² − |o × d|²: hitJoint's well-conditioned discriminant
-  return dot(o, d) < 0.0 && dot(d, d) - dot(across, across) >= 0.0;
+  return dot(o, d) < 0.0 && unitSphereDiscriminant(o, d) >= 0.0;
 }
 
 #endif

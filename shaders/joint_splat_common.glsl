@@ -12,7 +12,7 @@ struct SplatSprite {
   vec4 inverse1;
   vec4 inverse2;
   vec4 tint;      // xyz
-  uvec4 box;      // first pixel x, first pixel y, box width, 0
+  uvec3 box;      // first pixel x, first pixel y, box width
 };
 
 // Entries reserved: the sprites' pixel entries count up from the first entry, the far bodies'

@@ -15,10 +15,11 @@ bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
 // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
 // joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
 // pixel entry; `fits` when the sprite (if any) and every entry are below the capacities (the
-// entries below `limit`, where the far bodies' begin). The caller gives every entry reserved
-// below the limit an owner, kSplatNoSprite when the entries are not kept (in the loop that
-// writes them: a loop of its own here would run its body for every caller, its lanes masked off).
-uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits, out uint limit) {
+// entries below `limit`, where the far bodies' begin: spriteEntryLimit). The caller gives every
+// entry reserved below the limit an owner, kSplatNoSprite when the entries are not kept (in the
+// loop that writes them: a loop of its own here would run its body for every caller, its lanes
+// masked off).
+uint reserveEntries(uint spriteCount, uint pixelCount, uint limit, out uint sprite, out bool fits) {
   uint spriteBase = 0u, firstBase = 0u;
   uint spriteTotal = subgroupAdd(spriteCount), pixelTotal = subgroupAdd(pixelCount);
   if (subgroupElect()) {
@@ -27,7 +28,6 @@ uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool
   }
   sprite = subgroupBroadcastFirst(spriteBase) + subgroupExclusiveAdd(spriteCount);
   uint first = subgroupBroadcastFirst(firstBase) + subgroupExclusiveAdd(pixelCount);
-  limit = spriteEntryLimit(counters);
   fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= limit - min(pixelCount, limit);
   return first;
 }
@@ -96,8 +96,8 @@ ivec2 silhouetteRow(Silhouette c, int row, ivec2 lo, ivec2 hi) {
 // centre its silhouette holds (about two thirds of the box: a slanted bone leaves most of it
 // empty), for the pixel pass; listed for the graphics pipeline's draw instead when it is too wide,
 // or when the work lists are full. Not splatted here in that case: lavapipe would run that loop's
-// body, ray-cast and all, for every joint with its lanes masked off.
-void splatSprite(uint joint, JointSprite s, vec3 tint) {
+// body, ray-cast and all, for every joint with its lanes masked off. limit: spriteEntryLimit.
+void splatSprite(uint joint, JointSprite s, vec3 tint, uint limit) {
   ivec2 lo = ivec2(0), hi = ivec2(-1);  // too wide: an empty box, so its lanes skip the rows
   bool wide = s.sizePx > push.maxPixels;
   if (!wide && !spriteBox(s, lo, hi)) return;
@@ -108,9 +108,9 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
     pixelCount += uint(max(span.y - span.x + 1, 0));
   }
-  uint sprite, limit;
+  uint sprite;
   bool fits;
-  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits, limit);
+  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, limit, sprite, fits);
   if (wide || !fits) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);
     nearList[push.listBase + slot] = joint;
@@ -122,7 +122,7 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
     for (int x = span.x; x <= span.y; ++x, ++entry)
       if (entry < limit) owners[entry] = fits ? sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift) : kSplatNoSprite;
   }
-  if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec4(uint(lo.x), uint(lo.y), boxWidth, 0u));
+  if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec3(uint(lo.x), uint(lo.y), boxWidth));
 }
 
 // The pixel of entry i of a box boxWidth wide at lo, the row by a float division as in
@@ -137,7 +137,7 @@ ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
 void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint fromTop) {
   uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
   atomicMin(visibility[pixel], packed);
-  if (fromTop < kPixelCapacity) owners[kPixelCapacity - 1u - fromTop] = fits ? pixel | kSplatPixelEntry : kSplatNoSprite;
+  if (fromTop < kPixelCapacity) owners[kPixelCapacity - 1u - fromTop] = fits ? pixel : kSplatNoSprite;
 }
 
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than

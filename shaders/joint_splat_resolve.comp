@@ -38,7 +38,6 @@ void main() {
   for (uint k = gl_GlobalInvocationID.x; k < total; k += stride) {
     uint i = owners[k < spritePixels ? k : kPixelCapacity - 1u - (k - spritePixels)];  // the pixel joint_splat_pixels.comp (or a far body) hit, or none
     if (i == kSplatNoSprite) continue;
-    i &= ~kSplatPixelEntry;
     uint64_t v = visibility[i];
     if (v == 0xFFFFFFFFFFFFFFFFul) continue;
     uint depthBits = uint(v >> 32);

@@ -37,7 +37,8 @@ layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCou
 layout(std430, binding = kRenderBindingWalkList) readonly buffer WalkList { uint walkList[]; };
 layout(std430, binding = kRenderBindingListCounts) readonly buffer ListCounts { uint listCounts[]; };
 
-void walkJoints(uint local) {
+// limit: where the far bodies' entries begin (spriteEntryLimit).
+void walkJoints(uint local, uint limit) {
   uint character = local + push.firstCharacter;
   uint base = local * push.jointCount;  // its first joint in the chunk
   uvec4 mask = characterMask(character);
@@ -48,12 +49,13 @@ void walkJoints(uint local) {
     JointMatrix a;
     if (!drawnPoseJoint(base + j, pose, j, push.flags, mask, bones, a)) continue;
     JointSprite s = jointSprite(a, frame);
-    if (s.visible) splatSprite(base + j, s, tint);
+    if (s.visible) splatSprite(base + j, s, tint, limit);
   }
 }
 
 void main() {
   uint count = listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs];
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-  for (uint k = gl_GlobalInvocationID.x; k < count; k += stride) walkJoints(walkList[push.firstCharacter + k]);
+  uint limit = spriteEntryLimit(counters);  // every far body was reserved by the pass before
+  for (uint k = gl_GlobalInvocationID.x; k < count; k += stride) walkJoints(walkList[push.firstCharacter + k], limit);
 }

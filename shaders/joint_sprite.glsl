@@ -67,16 +67,21 @@ vec3 pixelRay(vec2 pixel, FrameUniforms frame) {
   return normalize(frame.rayForward.xyz + ndc.x * frame.rayRight.xyz + ndc.y * frame.rayDown.xyz);
 }
 
+// (o·d)² − |d|²·(|o|² − 1): ≥ 0 where the ray o + t·d meets the unit sphere, written as
+// |d|² − |o × d|² (Lagrange's identity). The eye is hundreds of radii from a thin bone, and the
+// textbook form's two terms would cancel to their rounding. CPU twin: unitSphereDiscriminantCpu.
+float unitSphereDiscriminant(vec3 o, vec3 d) {
+  vec3 across = cross(o, d);
+  return dot(d, d) - dot(across, across);
+}
+
 // Hit of the ray with the ellipsoid: true with the world hit distance and world normal.
 bool hitJoint(vec3 eye, vec3 dir, vec4 inverse0, vec4 inverse1, vec4 inverse2, out float t, out vec3 normal) {
   mat3 inv = transpose(mat3(inverse0.xyz, inverse1.xyz, inverse2.xyz));
   vec3 o = inv * eye + vec3(inverse0.w, inverse1.w, inverse2.w);
   vec3 d = inv * dir;
-  // b² − a·(|o|² − 1) as a − |o × d|² (Lagrange's identity): the eye is hundreds of radii from
-  // a thin bone, and b² and a·|o|² would cancel to their rounding.
-  vec3 across = cross(o, d);
   float a = dot(d, d), b = dot(o, d);
-  float disc = a - dot(across, across);
+  float disc = unitSphereDiscriminant(o, d);
   t = (-b - sqrt(max(disc, 0.0))) / a;
   normal = normalize(transpose(inv) * (o + t * d));
   return disc >= 0.0 && t > 0.0;

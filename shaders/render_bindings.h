@@ -43,9 +43,6 @@ const uint kSplatSpriteCapacity = 262144u;
 const uint kSplatSpriteBytes = 80u;          // SplatSprite
 const uint kSplatPixelCapacity = 4194304u;   // 4 Mi pixel entries (a 1280×720 frame 4.5 times)
 const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
-// A pixel entry the joint pass ray-cast itself (a far body): the pixel's index with this bit,
-// which the pixel pass leaves alone and the resolve takes off.
-const uint kSplatPixelEntry = 0x80000000u;
 // A joint's pixel entry before the pixel pass: its sprite in the low kSplatOwnerPixelShift bits
 // and, above them, the pixel's index in the sprite's box (row-major). So the sprite capacity is
 // at most 2^18 and a box at most kSplatMaxSpritePixels wide (its indices stay below bit 31).

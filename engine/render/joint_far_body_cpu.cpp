@@ -75,9 +75,8 @@ void splatFarBodiesCpu(std::span<const FarBodyCpu> bodies, const gpu_types::Fram
     // farBodyShade: the hit of the ray through the box's centre (its nearest approach on a miss).
     const glm::vec3 dir = glm::normalize(ray(0.5f * (s.lo + s.hi)));
     const glm::vec3 d = inv * dir;
-    const glm::vec3 across = glm::cross(o, d);  // hitJoint's discriminant, |d|² − |o × d|²
     const float a = glm::dot(d, d), bq = glm::dot(o, d);
-    const float t = (-bq - std::sqrt(std::max(a - glm::dot(across, across), 0.0f))) / a;
+    const float t = (-bq - std::sqrt(std::max(unitSphereDiscriminantCpu(o, d), 0.0f))) / a;
     const glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));
     const glm::vec4 clip = frame.viewProjection * glm::vec4(eye + t * dir, 1.0f);
     const float depth = std::clamp(clip.z / clip.w, 0.0f, 1.0f);
@@ -89,9 +88,7 @@ void splatFarBodiesCpu(std::span<const FarBodyCpu> bodies, const gpu_types::Fram
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) {
         const glm::vec3 dp = inv * ray(glm::vec2(x, y) + 0.5f);  // farBodyPixel
-        const glm::vec3 acrossP = glm::cross(o, dp);
-        if (!(glm::dot(o, dp) < 0.0f && glm::dot(dp, dp) - glm::dot(acrossP, acrossP) >= 0.0f))
-          continue;
+        if (!(glm::dot(o, dp) < 0.0f && unitSphereDiscriminantCpu(o, dp) >= 0.0f)) continue;
         uint64_t& pixel = visibility[size_t(y) * width + x];
         pixel = std::min(pixel, packed);
       }

@@ -88,6 +88,11 @@ uint32_t packColour(glm::vec4 c) {
 
 }  // namespace
 
+float unitSphereDiscriminantCpu(glm::vec3 o, glm::vec3 d) {
+  const glm::vec3 across = glm::cross(o, d);
+  return glm::dot(d, d) - glm::dot(across, across);
+}
+
 uint32_t shadeJointCpu(glm::vec3 tint, glm::vec3 n, glm::vec3 dir, glm::vec3 light) {
   float diffuse = std::max(glm::dot(n, light), 0.0f);
   float sky = 0.5f + 0.5f * n.y;
@@ -126,9 +131,8 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
             glm::normalize(glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) +
                            ndc.y * glm::vec3(frame.rayDown));
         glm::vec3 d = inv * dir;
-        const glm::vec3 across = glm::cross(o, d);  // hitJoint's well-conditioned discriminant
         float a = glm::dot(d, d), b = glm::dot(o, d);
-        float disc = a - glm::dot(across, across);
+        float disc = unitSphereDiscriminantCpu(o, d);
         float t = (-b - std::sqrt(std::max(disc, 0.0f))) / a;
         if (!(disc >= 0.0f && t > 0.0f)) continue;
         glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));

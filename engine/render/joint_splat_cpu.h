@@ -23,6 +23,9 @@ JointSpriteCpu jointSpriteCpu(const synth::JointMatrix& a, const gpu_types::Fram
 // characterTint() and shadeJoint() (packed as the visibility buffer's colour) of
 // joint_sprite.glsl.
 glm::vec3 characterTintCpu(uint32_t character);
+// unitSphereDiscriminant() of joint_sprite.glsl: ≥ 0 where the ray o + t·d meets the unit
+// sphere, as |d|² − |o × d|² (the textbook form cancels to its rounding far from a thin bone).
+float unitSphereDiscriminantCpu(glm::vec3 o, glm::vec3 d);
 uint32_t shadeJointCpu(glm::vec3 tint, glm::vec3 n, glm::vec3 dir, glm::vec3 light);
 
 struct SplatCpuResult {

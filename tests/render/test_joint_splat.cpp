@@ -170,8 +170,9 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   CHECK(counters[0] > 0);
   // Joints the work lists cannot hold are listed for the graphics pipeline like the too-wide
   // ones: the twin splats every joint but those.
-  const std::vector<uint32_t> wide =
-      render::splatJointsCpu(drawn.joints, frame, joints, maxPixels, width, height).nearJoints;
+  render::SplatCpuResult cpu =
+      render::splatJointsCpu(drawn.joints, frame, joints, maxPixels, width, height);
+  const std::vector<uint32_t> wide = cpu.nearJoints;
   std::vector<uint32_t> overflowed;
   std::set_difference(gpuNear.begin(), gpuNear.end(), wide.begin(), wide.end(),
                       std::back_inserter(overflowed));
@@ -179,10 +180,11 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   MESSAGE(overflowed.size(), " joints listed because the work lists were full");
   CHECK(full == !overflowed.empty());
   CHECK(std::includes(gpuNear.begin(), gpuNear.end(), wide.begin(), wide.end()));
-  std::vector<synth::JointMatrix> splatted = drawn.joints;
-  for (uint32_t j : overflowed) splatted[j] = synth::JointMatrix{};  // no ellipsoid: not drawn
-  render::SplatCpuResult cpu =
-      render::splatJointsCpu(splatted, frame, joints, maxPixels, width, height);
+  if (!overflowed.empty()) {
+    std::vector<synth::JointMatrix> splatted = drawn.joints;
+    for (uint32_t j : overflowed) splatted[j] = synth::JointMatrix{};  // no ellipsoid: not drawn
+    cpu = render::splatJointsCpu(splatted, frame, joints, maxPixels, width, height);
+  }
   render::splatFarBodiesCpu(drawn.bodies, frame, width, height, cpu.visibility);
 
   // Where two ellipsoids meet at nearly the same depth, float rounding may pick the other one:
