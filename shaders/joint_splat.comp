@@ -54,7 +54,7 @@ void main() {
     if (subgroupElect()) {
       at = atomicAdd(listCounts[args], total);
       uint groups = (at + total + kSplatWalkGroupSize - 1u) / kSplatWalkGroupSize;
-      atomicMax(listCounts[args + 1u], min(groups, kSplatWalkGroups));
+      atomicMax(listCounts[args + 1u], groups);
     }
     walkList[push.firstCharacter + subgroupBroadcastFirst(at) + subgroupExclusiveAdd(1u)] = local;
   }

@@ -11,7 +11,7 @@
 // silhouette for joint_splat_pixels.comp, which ray-casts them one pixel per invocation. Joints
 // wider than push.maxPixels, and joints whose reservation does not fit, are listed for an
 // indirect draw by the graphics pipeline instead. Dispatched indirectly with as
-// many workgroups as the list needs (at most kSplatWalkGroups, which stride over a longer list).
+// many workgroups as the list needs, one invocation per listed character.
 // CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"
 #include "render_bindings.h"
@@ -54,8 +54,8 @@ void walkJoints(uint local, uint limit) {
 }
 
 void main() {
-  uint count = listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs];
-  uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint k = gl_GlobalInvocationID.x;
+  if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs]) return;
   uint limit = spriteEntryLimit(counters);  // every far body was reserved by the pass before
-  for (uint k = gl_GlobalInvocationID.x; k < count; k += stride) walkJoints(walkList[push.firstCharacter + k], limit);
+  walkJoints(walkList[push.firstCharacter + k], limit);
 }

@@ -50,17 +50,17 @@ const uint kSplatOwnerPixelShift = 18u;
 const uint kSplatOwnerSpriteMask = 0x3FFFFu;
 const uint kSplatMaxSpritePixels = 64u;      // the largest maxPixels a splat accepts
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
-const uint kSplatWalkGroups = 256u;          // at most, of the joint walk per chunk (grid-stride)
 const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup
 const uint kSplatBodyGroupSize = 64u;        // joint_splat.comp's and joint_splat_list.comp's
 const uint kSplatListRun = 8u;               // characters per invocation of joint_splat_list.comp
 // Per chunk in the list-counts buffer, two lists, each as its length followed by the
 // VkDispatchIndirectCommand of the pass that reads it (x = workgroups for the list; y = z = 1):
 // the characters on screen (joint_splat_list.comp), read by the far-body pass, and the
-// characters whose joints are walked (joint_splat.comp), read by the walk (x at most
-// kSplatWalkGroups). Dispatched by its list's length, a pass costs nothing for characters off
-// screen: lavapipe runs a pass's every line for every 8 lanes, taken or not, and a grid-stride
-// loop's body once for every 8 lanes even when no lane has work.
+// characters whose joints are walked (joint_splat.comp), read by the walk (one invocation per
+// listed character; a chunk's list is short enough for any device's workgroup count, jointChunks).
+// Dispatched by its list's length, a pass costs nothing for characters off screen: lavapipe runs
+// a pass's every line for every 8 lanes, taken or not, and a grid-stride loop's body once for
+// every 8 lanes even when no lane has work.
 const uint kSplatListArgsWords = 8u;
 const uint kSplatOnScreenArgs = 0u;
 const uint kSplatWalkArgs = 4u;

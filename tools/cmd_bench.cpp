@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <thread>
@@ -296,6 +297,10 @@ struct BenchSession {
   }
 };
 
+// The whole-frame rows' cameras, one row each per --frame-characters count.
+constexpr const char* kFrameCameraNames[] = {"wide", "street", "overhead"};
+constexpr long long kFrameCameras = std::size(kFrameCameraNames);
+
 // The rows the options ask for, for the progress bar's ETA.
 long long benchStageCount(const BenchOptions& o, unsigned threads) {
   if (o.clothOnly) return o.cloth.empty() ? 0 : 1;
@@ -304,7 +309,7 @@ long long benchStageCount(const BenchOptions& o, unsigned threads) {
                              (o.wants("cpu") ? (threads > 1 ? 2 : 1) : 0);
   return static_cast<long long>(o.counts.size()) * perCount + (o.wants("clip-sets") ? 1 : 0) +
          (o.wants("render") ? 2 : 0) +
-         (o.wants("frame") ? 2 * static_cast<long long>(o.frameCounts.size()) : 0) +
+         (o.wants("frame") ? kFrameCameras * static_cast<long long>(o.frameCounts.size()) : 0) +
          (o.cloth.empty() ? 0 : 1);
 }
 
@@ -352,7 +357,7 @@ void runRenderRows(BenchSession& s) {
   }
   if (!s.o.wants("frame")) return;
   for (uint32_t n : s.o.frameCounts)
-    for (const char* camera : {"wide", "street", "overhead"}) {
+    for (const char* camera : kFrameCameraNames) {
       s.next(concat("whole frame, ", n, " characters, ", camera, " camera"));
       s.report(benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, n, camera));
     }

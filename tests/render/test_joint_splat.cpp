@@ -231,8 +231,8 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
   // The on-screen list holds exactly the characters whose mask is not empty (all of them
   // without masks), each once, and each chunk's bodies pass is dispatched with a workgroup per
   // kSplatBodyGroupSize of them. The walk list holds the characters on screen that are not far
-  // bodies, and each chunk's walk has enough workgroups for its part (at most kSplatWalkGroups,
-  // striding). Entries are chunk-local, from the chunk's first character.
+  // bodies, and each chunk's walk has a workgroup per kSplatWalkGroupSize of them. Entries are
+  // chunk-local, from the chunk's first character.
   const auto counts =
       gpu::readback<uint32_t>(ctx, listCounts, chunks.size() * gpu_types::kSplatListArgsWords);
   const auto onScreenEntries = gpu::readback<uint32_t>(ctx, onScreenList, characters);
@@ -250,7 +250,7 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
     const uint32_t bodyGroup = gpu_types::kSplatBodyGroupSize;
     const uint32_t walkGroup = gpu_types::kSplatWalkGroupSize;
     CHECK(listed[1] == (listed[0] + bodyGroup - 1) / bodyGroup);
-    CHECK(walk[1] == std::min((walk[0] + walkGroup - 1) / walkGroup, gpu_types::kSplatWalkGroups));
+    CHECK(walk[1] == (walk[0] + walkGroup - 1) / walkGroup);
     CHECK((listed[2] == 1u && listed[3] == 1u && walk[2] == 1u && walk[3] == 1u));
     walked += walk[0];
   }
