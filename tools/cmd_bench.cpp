@@ -13,6 +13,7 @@
 
 #include "bench_cloth.h"
 #include "bench_experiments.h"
+#include "bench_render_loop.h"
 #include "bench_scene.h"
 #include "command.h"
 #include "core/error.h"
@@ -54,9 +55,9 @@ struct BenchOptions {
 // gpu: full GPU synthesis; lod; lod+cache; cpu: the CPU twin; clip-sets: four clip sets against
 // one; render: synthesis + render of --render-characters; frame: whole frames of
 // --frame-characters with LOD + cache: wide and street camera, and overhead on a tenth of the
-// crowd.
+// crowd; render-loop: the default `throng render`, GPU and wall time per frame.
 const std::vector<std::string> kRowKinds{"gpu",       "lod",    "lod+cache", "cpu",
-                                         "clip-sets", "render", "frame"};
+                                         "clip-sets", "render", "frame",     "render-loop"};
 
 struct Row {
   std::string variant;
@@ -65,6 +66,7 @@ struct Row {
   double renderMs = 0.0;  // 0 when the variant does not render
   int frames = 0;
   std::optional<SynthesisPassTimes> passes;  // GPU synthesis rows: median of each pass
+  std::optional<RenderRunTimes> loop;        // the render-loop row: wall time and encoding
 };
 
 constexpr float kDt = 1.0f / 30.0f;
@@ -293,6 +295,12 @@ struct BenchSession {
                   r.passes->rootMotion, r.passes->coverage, r.passes->cache, r.passes->pose);
     if (r.renderMs > 0.0)
       std::printf("  whole frame (synthesis + render): %.2f ms\n", r.synthesisMs + r.renderMs);
+    if (r.loop)
+      std::printf(
+          "  wall per frame %.2f ms, %.2fx the GPU frame; PNG encoding %.2f ms per frame "
+          "on %d worker%s\n",
+          r.loop->wallMs, r.loop->wallMs / r.loop->gpuMs(), r.loop->encodeMs, r.loop->encodeWorkers,
+          r.loop->encodeWorkers == 1 ? "" : "s");
     std::fflush(stdout);
   }
 };
@@ -310,7 +318,7 @@ long long benchStageCount(const BenchOptions& o, unsigned threads) {
   return static_cast<long long>(o.counts.size()) * perCount + (o.wants("clip-sets") ? 1 : 0) +
          (o.wants("render") ? 2 : 0) +
          (o.wants("frame") ? kFrameCameras * static_cast<long long>(o.frameCounts.size()) : 0) +
-         (o.cloth.empty() ? 0 : 1);
+         (o.wants("render-loop") ? 1 : 0) + (o.cloth.empty() ? 0 : 1);
 }
 
 void runSynthesisRows(BenchSession& s) {
@@ -355,12 +363,17 @@ void runRenderRows(BenchSession& s) {
     s.report(
         benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, s.o.renderCharacters));
   }
-  if (!s.o.wants("frame")) return;
-  for (uint32_t n : s.o.frameCounts)
-    for (const char* camera : kFrameCameraNames) {
-      s.next(concat("whole frame, ", n, " characters, ", camera, " camera"));
-      s.report(benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, n, camera));
-    }
+  if (s.o.wants("frame"))
+    for (uint32_t n : s.o.frameCounts)
+      for (const char* camera : kFrameCameraNames) {
+        s.next(concat("whole frame, ", n, " characters, ", camera, " camera"));
+        s.report(benchRender(s.context, s.pair, skeleton, s.o, Variant::LodCache, n, camera));
+      }
+  if (!s.o.wants("render-loop")) return;
+  s.next("the default throng render");
+  const RenderRunTimes t = benchRenderLoop({s.o.device, s.o.quick});
+  s.report({"throng-render-default-pngs", t.characters, t.steerMs + t.synthesisMs, t.renderMs,
+            t.frames, std::nullopt, t});
 }
 
 std::optional<ClothBenchResult> runClothRow(BenchSession& s) {
@@ -412,6 +425,10 @@ nlohmann::json benchJson(const BenchSession& s, const std::optional<ClothBenchRe
                           {"synthesis_ms_median", r.synthesisMs},
                           {"render_ms_median", r.renderMs},
                           {"frames", r.frames}};
+    if (r.loop) {
+      row["wall_ms_per_frame"] = r.loop->wallMs;
+      row["encode_ms_per_frame"] = r.loop->encodeMs;
+    }
     if (r.passes)
       row["passes_ms_median"] = {{"root_motion", r.passes->rootMotion},
                                  {"coverage", r.passes->coverage},

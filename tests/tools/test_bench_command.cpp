@@ -18,10 +18,20 @@ using namespace throng;
 
 namespace {
 using throng::test::firstNonSnakeKey;
+
+// The render-loop row's frames go to folders named so in the temporary directory.
+size_t renderLoopFolders() {
+  size_t count = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+    if (entry.path().filename().string().rfind("throng-bench-render-", 0) == 0) ++count;
+  return count;
+}
 }  // namespace
 
 TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
   auto dir = test::freshDirectory("bench_quick");
+  const size_t foldersBefore = renderLoopFolders();
   test::CommandResult run =
       test::runThrong("bench --quick --json " + (dir / "bench.json").string() + " --experiments " +
                       (dir / "experiments").string());
@@ -39,9 +49,20 @@ TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
     CHECK(row["synthesis_ms_median"].get<double>() > 0.0);
     CHECK(row["characters"].get<int>() == 1000);
   }
-  for (const char* v :
-       {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache", "cpu-1-thread"})
+  for (const char* v : {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache",
+                        "cpu-1-thread", "throng-render-default-pngs"})
     CHECK(variants.count(v) == 1);
+  // The default `throng render` as a row: its GPU frame, wall time and encoding per frame, and
+  // its frames removed afterwards.
+  for (const auto& row : doc["results"]) {
+    if (row["variant"] != "throng-render-default-pngs") continue;
+    CHECK(row["frames"] == 5);
+    CHECK(row["render_ms_median"].get<double>() > 0.0);
+    CHECK(row["wall_ms_per_frame"].get<double>() > 0.0);
+    CHECK(row["encode_ms_per_frame"].get<double>() > 0.0);
+  }
+  CHECK(run.output.find("wall per frame") != std::string::npos);
+  CHECK(renderLoopFolders() == foldersBefore);
   CHECK(doc["joints_per_character"].get<int>() == 25);
   CHECK(run.output.find("cloth row skipped: no --cloth") != std::string::npos);
   CHECK(doc["cloth"]["skipped"].get<std::string>().find("--cloth") != std::string::npos);
