@@ -5,17 +5,16 @@
 #include <filesystem>
 #include <system_error>
 
+#include "core/error.h"
+#include "core/file_io.h"
+
 namespace throng::tools {
 namespace {
 
 // The frames' folder, removed however the run ends (the frames are not what the row is for).
 class TemporaryFolder {
  public:
-  TemporaryFolder()
-      : path_(std::filesystem::temp_directory_path() /
-              ("throng-bench-render-" + std::to_string(::getpid()))) {
-    std::filesystem::create_directories(path_);
-  }
+  TemporaryFolder() : path_(renderLoopFolder()) { ensureWritableDirectory(path_); }
   ~TemporaryFolder() {
     std::error_code ignored;
     std::filesystem::remove_all(path_, ignored);
@@ -29,6 +28,16 @@ class TemporaryFolder {
 };
 
 }  // namespace
+
+std::filesystem::path renderLoopFolder() {
+  std::error_code error;
+  const std::filesystem::path temporary = std::filesystem::temp_directory_path(error);
+  if (error)
+    fail("the render-loop row writes its frames to a temporary folder, and there is none (",
+         error.message(), "; set TMPDIR to a writable folder)");
+  ensureWritableDirectory(temporary);
+  return temporary / ("throng-bench-render-" + std::to_string(::getpid()));
+}
 
 RenderRunTimes benchRenderLoop(const RenderLoopBenchOptions& options) {
   RenderOptions o = defaultRenderOptions();

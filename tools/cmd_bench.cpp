@@ -271,6 +271,7 @@ void checkBenchOptions(BenchOptions& o) {
   if (!o.cloth.empty()) secondary::readClothDatabase(o.cloth);
   if (!o.json.empty()) ensureWritableDirectory(std::filesystem::absolute(o.json).parent_path());
   if (!o.experiments.empty()) ensureWritableDirectory(o.experiments);
+  if (!o.clothOnly && o.wants("render-loop")) renderLoopFolder();
 }
 
 // What every row needs, and the rows measured so far (printed as they come).
