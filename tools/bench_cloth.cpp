@@ -10,6 +10,7 @@
 #include "scene_storyboard.h"
 #include "secondary/cloth_gpu_layer.h"
 #include "stats.h"
+#include "warm_up.h"
 
 namespace throng::tools {
 
@@ -43,7 +44,7 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
   gpu::Fence fence(context);
   gpu::TimestampPool timestamps(context, 8);
   std::vector<double> synthMs, renderMs, frameMs, advance, mark, decode, splat, draw, total;
-  for (int f = 0; f < o.warmup + o.frames; ++f) {
+  for (WarmUp warmUp(o.warmup, o.warmupSeconds); int(frameMs.size()) < o.frames;) {
     timestamps.reset();
     const scene::SceneStep step = crowd->advance(scene.dt);
     gpu::beginCommands(cmd);
@@ -53,7 +54,7 @@ ClothBenchResult benchCloth(const gpu::Context& context, const ClothBenchOptions
     gpu::submit(context, cmd, fence.get());
     fence.wait();
     fence.reset();
-    if (f < o.warmup) continue;
+    if (!warmUp.measured()) continue;
     const scene::FrameTimings t = scene::readFrameTimings(timestamps, marks);
     const secondary::ClothTimings c = cloth.timings(0);
     synthMs.push_back(t.synthesisMs);

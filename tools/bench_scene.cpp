@@ -9,6 +9,7 @@
 #include "scene/scene.h"
 #include "stats.h"
 #include "synthesis_timer.h"
+#include "warm_up.h"
 
 namespace throng::tools {
 namespace {
@@ -51,7 +52,8 @@ std::unique_ptr<scene::Scene> makeBenchScene(const gpu::Context& context, uint32
 
 }  // namespace
 
-ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int frames, int warmup) {
+ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int frames, int warmup,
+                                 double warmupSeconds) {
   if (n == 0 || frames < 1) fail("clip-set bench: needs characters and frames");
   const anim::ClipPair run = anim::defaultRunPair();
   std::unique_ptr<scene::Scene> one = makeBenchScene(context, n, false, run.slow.skeleton);
@@ -64,12 +66,12 @@ ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int fr
   SynthesisTimer timer(context);
   std::vector<double> oneMs, fourMs, ratios;
   std::vector<SynthesisPassTimes> onePasses, fourPasses;
-  for (int f = 0; f < warmup + frames; ++f) {
+  for (WarmUp warmUp(warmup, warmupSeconds); int(ratios.size()) < frames;) {
     // Interleaved: both see the same moments of machine load.
     const double a = timer.frame(one->programs(), one->synth(), kDt, {}, &camera);
     const SynthesisPassTimes aPasses = timer.lastPasses();
     const double b = timer.frame(four->programs(), four->synth(), kDt, {}, &camera);
-    if (f < warmup) continue;
+    if (!warmUp.measured()) continue;
     onePasses.push_back(aPasses);
     fourPasses.push_back(timer.lastPasses());
     oneMs.push_back(a);

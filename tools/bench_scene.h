@@ -19,7 +19,8 @@ struct ClipSetBenchResult {
   SynthesisPassTimes onePasses, fourPasses;                  // medians of each pass
 };
 
+// warmup frames, for at least warmupSeconds (WarmUp), before `frames` measured ones.
 ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t characters, int frames,
-                                 int warmup);
+                                 int warmup, double warmupSeconds);
 
 }  // namespace throng::tools

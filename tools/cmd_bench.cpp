@@ -27,6 +27,7 @@
 #include "stats.h"
 #include "synth/cpu_synth.h"
 #include "synthesis_timer.h"
+#include "warm_up.h"
 
 namespace throng::tools {
 namespace {
@@ -36,6 +37,7 @@ struct BenchOptions {
   std::vector<uint32_t> counts{1000, 10000, 100000};
   int frames = 20;
   int warmup = 3;
+  double warmupSeconds = 0.5;  // and at least this long (a GPU's clocks rise with load)
   uint32_t renderCharacters = 10000;
   uint32_t clipSetCharacters = 8000;  // the storyboard-crowd row
   std::string size = "1280x720";
@@ -97,10 +99,10 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   SynthesisTimer timer(context);
   std::vector<double> ms;
   std::vector<SynthesisPassTimes> passes;
-  for (int f = 0; f < o.warmup + o.frames; ++f) {
+  for (WarmUp warmUp(o.warmup, o.warmupSeconds); int(ms.size()) < o.frames;) {
     double frameMs =
         timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
-    if (f < o.warmup) continue;
+    if (!warmUp.measured()) continue;
     ms.push_back(frameMs);
     passes.push_back(timer.lastPasses());
   }
@@ -159,7 +161,7 @@ Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
   gpu::Fence fence(context);
   gpu::TimestampPool timestamps(context, 4);
   std::vector<double> synthMs, renderMs;
-  for (int f = 0; f < o.warmup + o.frames; ++f) {
+  for (WarmUp warmUp(o.warmup, o.warmupSeconds); int(renderMs.size()) < o.frames;) {
     timestamps.reset();
     gpu::beginCommands(cmd);
     scene::SceneStep step;
@@ -170,7 +172,7 @@ Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
     gpu::submit(context, cmd, fence.get());
     fence.wait();
     fence.reset();
-    if (f < o.warmup) continue;
+    if (!warmUp.measured()) continue;
     scene::FrameTimings t = scene::readFrameTimings(timestamps, marks);
     synthMs.push_back(t.synthesisMs);
     renderMs.push_back(t.renderMs);
@@ -256,12 +258,14 @@ void checkBenchOptions(BenchOptions& o) {
     o.counts = {1000};
     o.frames = 5;
     o.warmup = 1;
+    o.warmupSeconds = 0.0;
     o.renderCharacters = 1000;
     o.clipSetCharacters = 1000;
     o.frameCounts = {1000};
     o.size = "320x180";
   }
-  if (o.frames < 1 || o.warmup < 0) fail("--frames must be >= 1 and --warmup >= 0");
+  if (o.frames < 1 || o.warmup < 0 || !(o.warmupSeconds >= 0.0))
+    fail("--frames must be >= 1, --warmup and --warmup-seconds >= 0");
   if (o.clothOnly && o.cloth.empty()) fail("--cloth-only needs --cloth FILE.tsc");
   for (uint32_t n : o.counts)
     if (n == 0 || n > 4000000) fail("--characters: each count must be 1..4000000, got ", n);
@@ -345,7 +349,7 @@ void runSynthesisRows(BenchSession& s) {
 void runClipSetRows(BenchSession& s) {
   s.next("four clip sets against one");
   const ClipSetBenchResult sets =
-      benchClipSets(s.context, s.o.clipSetCharacters, s.o.frames, s.o.warmup);
+      benchClipSets(s.context, s.o.clipSetCharacters, s.o.frames, s.o.warmup, s.o.warmupSeconds);
   s.report({"gpu-synthesis-lod+cache-1-clip-set", sets.characters, sets.oneSetMs, 0.0, sets.frames,
             sets.onePasses});
   s.report({"gpu-synthesis-lod+cache-4-clip-sets", sets.characters, sets.fourSetsMs, 0.0,
@@ -388,6 +392,7 @@ std::optional<ClothBenchResult> runClothRow(BenchSession& s) {
   c.size = s.o.size;
   c.frames = s.o.frames;
   c.warmup = s.o.warmup;
+  c.warmupSeconds = s.o.warmupSeconds;
   s.next("caped crowd");
   ClothBenchResult cloth = benchCloth(s.context, c);
   s.report({cloth.variant, cloth.characters, cloth.synthesisMs, cloth.renderMs, cloth.frames});
@@ -484,6 +489,10 @@ void addBenchCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--warmup", options->warmup, "Frames run before measuring")
       ->capture_default_str();
+  cmd->add_option("--warmup-seconds", options->warmupSeconds,
+                  "...and at least this long, so a GPU's clocks are up before measuring")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 60.0));
   cmd->add_option("--render-characters", options->renderCharacters, "Crowd size of the render row")
       ->capture_default_str();
   cmd->add_option("--clip-set-characters", options->clipSetCharacters,
@@ -495,8 +504,8 @@ void addBenchCommand(CLI::App& app) {
          "Crowd sizes of the whole-frame rows (LOD + cache; wide, street and overhead camera)")
       ->capture_default_str();
   cmd->add_option("--rows", options->rows,
-                  "Only these kinds of row: gpu, lod, lod+cache, cpu, clip-sets, render, frame "
-                  "(default: all)")
+                  "Only these kinds of row: gpu, lod, lod+cache, cpu, clip-sets, render, frame, "
+                  "render-loop (default: all)")
       ->check(CLI::IsMember(kRowKinds));
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
