@@ -177,6 +177,21 @@ FrameOutputOptions frameOutputOptions(const RenderOptions& o, const RenderInputs
   return out;
 }
 
+// What the run reports: medians of the GPU times, wall and encoding per frame.
+RenderRunTimes runTimes(uint32_t characters, const RenderTimes& t, const FrameOutputStats& encoded,
+                        int frames) {
+  RenderRunTimes times;
+  times.frames = frames;
+  times.characters = characters;
+  times.steerMs = median(t.steerMs);
+  times.synthesisMs = median(t.synthMs);
+  times.renderMs = median(t.renderMs);
+  times.wallMs = t.wallMs;
+  times.encodeMs = encoded.encodeMs / frames;
+  times.encodeWorkers = encoded.workers;
+  return times;
+}
+
 RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInputs& in) {
   // The scenario's crowd, the steered circle or the storyboard's crowd.
   const std::unique_ptr<scene::Scene> scenePtr = makeScene(context, o.scene, in.clips);
@@ -228,15 +243,8 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
   const FrameOutputStats encoded = output.stats();
-  RenderRunTimes times;
-  times.frames = o.frames;
-  times.characters = scene.count();
-  times.steerMs = median(steerMs);
-  times.synthesisMs = median(synthMs);
-  times.renderMs = median(renderMs);
-  times.wallMs = wallMs;
-  times.encodeMs = encoded.encodeMs / o.frames;
-  times.encodeWorkers = encoded.workers;
+  const RenderRunTimes times =
+      runTimes(scene.count(), {steerMs, synthMs, renderMs, wallMs}, encoded, o.frames);
   if (!o.report) return times;
   printRenderTimes(o, in, scene, context, {steerMs, synthMs, renderMs, wallMs}, encoded);
   if (trajectories.enabled())
