@@ -83,16 +83,8 @@ struct RenderInputs {
   render::Camera camera;
 };
 
-// Per-frame GPU times of the run (medians are printed) and its wall time per frame.
-struct RenderTimes {
-  const std::vector<double>& steerMs;
-  const std::vector<double>& synthMs;
-  const std::vector<double>& renderMs;
-  double wallMs = 0.0;
-};
-
 void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scene::Scene& scene,
-                      const gpu::Context& context, const RenderTimes& t,
+                      const gpu::Context& context, const RenderRunTimes& t,
                       const FrameOutputStats& encoded) {
   std::string where = o.pngs ? in.outDir.string() : "";
   if (!o.video.empty()) where += (where.empty() ? "" : " and ") + o.video;
@@ -103,14 +95,14 @@ void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scen
     std::printf(
         "GPU time per frame (median): steering %.2f ms, synthesis %.2f ms, render %.2f ms"
         "  [%s]\n",
-        median(t.steerMs), median(t.synthMs), median(t.renderMs), context.info().name.c_str());
+        t.steerMs, t.synthesisMs, t.renderMs, context.info().name.c_str());
   else
     std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
-                median(t.synthMs), median(t.renderMs), context.info().name.c_str());
+                t.synthesisMs, t.renderMs, context.info().name.c_str());
   std::printf(
       "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on %d worker%s, %.2f ms "
       "per frame waiting for them\n",
-      t.wallMs, encoded.encodeMs / o.frames, encoded.workers, encoded.workers == 1 ? "" : "s",
+      t.wallMs, t.encodeMs, t.encodeWorkers, t.encodeWorkers == 1 ? "" : "s",
       encoded.waitedMs / o.frames);
 }
 
@@ -178,15 +170,16 @@ FrameOutputOptions frameOutputOptions(const RenderOptions& o, const RenderInputs
 }
 
 // What the run reports: medians of the GPU times, wall and encoding per frame.
-RenderRunTimes runTimes(uint32_t characters, const RenderTimes& t, const FrameOutputStats& encoded,
-                        int frames) {
+RenderRunTimes runTimes(uint32_t characters, const std::vector<double>& steerMs,
+                        const std::vector<double>& synthMs, const std::vector<double>& renderMs,
+                        double wallMs, const FrameOutputStats& encoded, int frames) {
   RenderRunTimes times;
   times.frames = frames;
   times.characters = characters;
-  times.steerMs = median(t.steerMs);
-  times.synthesisMs = median(t.synthMs);
-  times.renderMs = median(t.renderMs);
-  times.wallMs = t.wallMs;
+  times.steerMs = median(steerMs);
+  times.synthesisMs = median(synthMs);
+  times.renderMs = median(renderMs);
+  times.wallMs = wallMs;
   times.encodeMs = encoded.encodeMs / frames;
   times.encodeWorkers = encoded.workers;
   return times;
@@ -244,9 +237,9 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
   const FrameOutputStats encoded = output.stats();
   const RenderRunTimes times =
-      runTimes(scene.count(), {steerMs, synthMs, renderMs, wallMs}, encoded, o.frames);
+      runTimes(scene.count(), steerMs, synthMs, renderMs, wallMs, encoded, o.frames);
   if (!o.report) return times;
-  printRenderTimes(o, in, scene, context, {steerMs, synthMs, renderMs, wallMs}, encoded);
+  printRenderTimes(o, in, scene, context, times, encoded);
   if (trajectories.enabled())
     std::printf("trajectories of %u agents over %d frames written to %s\n", scene.count(), o.frames,
                 o.scene.trajectoriesOut.c_str());
