@@ -4,8 +4,7 @@
 #ifndef THRONG_JOINT_SPLAT_COMMON_GLSL
 #define THRONG_JOINT_SPLAT_COMMON_GLSL
 
-layout(constant_id = 0) const uint kSpriteCapacity = kSplatSpriteCapacity;
-layout(constant_id = 1) const uint kPixelCapacity = kSplatPixelCapacity;
+#include "joint_splat_counters.glsl"
 
 struct SplatSprite {
   vec4 inverse0;  // JointSprite's world → unit-sphere rows
@@ -14,19 +13,6 @@ struct SplatSprite {
   vec4 tint;      // xyz
   uvec3 box;      // first pixel x, first pixel y, box width
 };
-
-// Entries reserved: the sprites' pixel entries count up from the first entry, the far bodies'
-// down from the last (all of a frame's bodies are reserved before any sprite), so the pixel pass
-// visits the sprites' entries only.
-struct SplatCounters {
-  uint sprites;
-  uint pixels;      // sprites' pixel entries, from entry 0 up
-  uint bodyPixels;  // far bodies' hit pixels, from entry kPixelCapacity − 1 down
-};
-
-// How many entries the far bodies hold, and the sprites may fill (the rest).
-uint bodyEntries(SplatCounters c) { return min(c.bodyPixels, kPixelCapacity); }
-uint spriteEntryLimit(SplatCounters c) { return kPixelCapacity - bodyEntries(c); }
 
 // The nearest hit of pixel (x, y) with the sprite's ellipsoid, kept by a 64-bit atomicMin of
 // (depth bits << 32 | colour). False where the ray misses.

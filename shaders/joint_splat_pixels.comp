@@ -21,7 +21,7 @@ layout(std430, binding = kRenderBindingPixelOwners) buffer Owners { uint owners[
 layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { SplatCounters counters; };
 
 void main() {
-  uint total = min(counters.pixels, spriteEntryLimit(counters));  // the sprites' entries alone
+  uint total = spriteEntries(counters);  // the sprites' entries alone
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
     uint owner = owners[entry];

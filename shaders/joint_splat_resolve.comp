@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // The far joints, step 3 on targets that take copies: one invocation per reserved pixel entry
-// (its pixel, as the pixel pass left it) writes the pixel's nearest splat hit into the frame's colour and depth planes (the ground's,
-// copied in) where it is not behind the ground; the planes are then copied into the target. So
+// (its pixel, as the pixel pass left it) writes the pixel's nearest splat hit into the frame's
+// colour and depth planes (the ground's, copied in) where it is not behind the ground; the planes are then copied into the target. So
 // the resolve costs the splatted pixels, not a full-screen fragment pass. Entries of one pixel
 // write the same value. Sprites past the work lists' capacities have no entries: invocation 0
 // then sets the fragment resolve's indirect draw (otherwise empty) to cover the screen.
@@ -13,20 +13,18 @@
 layout(local_size_x = 64) in;
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { uint64_t visibility[]; };
-layout(constant_id = 0) const uint kSpriteCapacity = kSplatSpriteCapacity;
-layout(constant_id = 1) const uint kPixelCapacity = kSplatPixelCapacity;
+#include "joint_splat_counters.glsl"
 layout(std430, binding = kRenderBindingPixelOwners) readonly buffer Owners { uint owners[]; };
-// SplatCounters (joint_splat_common.glsl): sprites, their pixel entries from the first entry up,
-// the far bodies' from the last down.
-layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { uint spriteCount; uint pixelCount; uint bodyPixelCount; };
+layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { SplatCounters counters; };
 layout(std430, binding = kRenderBindingFramePlanes) buffer Planes { uint planes[]; };  // colour plane, then depth plane
 layout(std430, binding = kRenderBindingResolveDraw) writeonly buffer ResolveDraw { uint resolveDraw[4]; };
 
 void main() {
-  uint bodies = min(bodyPixelCount, kPixelCapacity);
-  uint spritePixels = min(pixelCount, kPixelCapacity - bodies);
+  uint bodies = bodyEntries(counters);
+  uint spritePixels = spriteEntries(counters);
   if (gl_GlobalInvocationID.x == 0u) {
-    bool overflow = spriteCount > kSpriteCapacity || bodyPixelCount > kPixelCapacity || pixelCount > kPixelCapacity - bodies;
+    bool overflow = counters.sprites > kSpriteCapacity || counters.bodyPixels > kPixelCapacity ||
+                    counters.pixels > spriteEntryLimit(counters);
     resolveDraw[0] = overflow ? 3u : 0u;
     resolveDraw[1] = 1u;
     resolveDraw[2] = 0u;
@@ -36,7 +34,8 @@ void main() {
   uint total = spritePixels + bodies;
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint k = gl_GlobalInvocationID.x; k < total; k += stride) {
-    uint i = owners[k < spritePixels ? k : kPixelCapacity - 1u - (k - spritePixels)];  // the pixel joint_splat_pixels.comp (or a far body) hit, or none
+    // The pixel joint_splat_pixels.comp (or a far body) hit, or none.
+    uint i = owners[k < spritePixels ? k : kPixelCapacity - 1u - (k - spritePixels)];
     if (i == kSplatNoSprite) continue;
     uint64_t v = visibility[i];
     if (v == 0xFFFFFFFFFFFFFFFFul) continue;
