@@ -215,7 +215,9 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
     synthMs.push_back(timings.synthesisMs);
     renderMs.push_back(timings.renderMs);
     if (cloth) clothTimes.push_back(cloth->timings(0));
-    output.push(std::make_shared<ImageRgba8>(render::readbackImage(target)), frame);
+    ImageRgba8 image = output.spareImage();  // an encoded frame's buffer: no fresh allocation
+    render::readbackInto(target, image);
+    output.push(std::move(image), frame);
     // Goals: the state machines see arrivals and plan new paths between frames (the device is
     // idle here), every half simulated second.
     if (scene.hasGoals() && (frame + 1) % std::max(1, int(std::lround(0.5f / o.scene.dt))) == 0)

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/file_io.h"
 
 namespace throng {
 namespace {
@@ -55,7 +56,15 @@ void FrameOutput::rethrow() {
   }
 }
 
-void FrameOutput::push(std::shared_ptr<const ImageRgba8> frame, int index) {
+ImageRgba8 FrameOutput::spareImage() {
+  std::lock_guard lock(mutex_);
+  if (spares_.empty()) return {};
+  ImageRgba8 image = std::move(spares_.back());
+  spares_.pop_back();
+  return image;
+}
+
+void FrameOutput::push(ImageRgba8 frame, int index) {
   auto start = std::chrono::steady_clock::now();
   std::unique_lock lock(mutex_);
   changed_.wait(lock,
@@ -88,6 +97,7 @@ FrameOutputStats FrameOutput::stats() const {
 }
 
 void FrameOutput::run() {
+  PngEncoder png;  // this worker's: its buffers serve every frame it encodes
   for (;;) {
     Job job;
     {
@@ -100,7 +110,7 @@ void FrameOutput::run() {
     }
     auto start = std::chrono::steady_clock::now();
     try {
-      encode(job);
+      encode(job, png);
     } catch (...) {
       std::lock_guard lock(mutex_);
       if (!error_) error_ = std::current_exception();
@@ -114,18 +124,21 @@ void FrameOutput::run() {
       --inFlight_;
       stats_.encodeMs += millisecondsSince(start);
       ++stats_.frames;
+      // At most a queue's worth of buffers kept: as many as can be out at once.
+      if (int(spares_.size()) < options_.queueDepth) spares_.push_back(std::move(job.image));
     }
     changed_.notify_all();
   }
 }
 
-void FrameOutput::encode(const Job& job) {
+void FrameOutput::encode(const Job& job, PngEncoder& png) {
   if (options_.pngFolder) {
+    if (job.image.width <= 0 || job.image.height <= 0) fail("frame output: an empty frame");
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%04d.png", job.index);
-    writePngAtomic(*options_.pngFolder / name, *job.image);
+    writeFileAtomic(*options_.pngFolder / name, png.encode(job.image));
   }
-  if (video_) video_->write(*job.image);
+  if (video_) video_->write(job.image);
 }
 
 }  // namespace throng

@@ -4,17 +4,19 @@
 // and the workers holds at most `queueDepth` frames: a loop that outruns the encoders waits for
 // a free slot (bounded memory) and the time it waits is reported. PNG files are independent, so
 // several workers encode them at once; a video takes its frames in order, from one worker.
+// Frames are handed over by value and their buffers come back for the next ones (spareImage):
+// a long run allocates a few frames' worth of memory once, not a frame's worth every frame.
 #include <condition_variable>
 #include <deque>
 #include <exception>
 #include <filesystem>
-#include <memory>
 #include <mutex>
 #include <optional>
 #include <thread>
 #include <vector>
 
 #include "core/image.h"
+#include "core/png_encoder.h"
 #include "core/video_writer.h"
 
 namespace throng {
@@ -42,19 +44,22 @@ class FrameOutput {
   FrameOutput(const FrameOutput&) = delete;
   FrameOutput& operator=(const FrameOutput&) = delete;
 
+  // A frame buffer the workers are done with, to fill and push (its pixels are stale), or an
+  // empty image when none is free.
+  ImageRgba8 spareImage();
   // Queues a frame (its index names the PNG). Rethrows the worker's error, if any.
-  void push(std::shared_ptr<const ImageRgba8> frame, int index);
+  void push(ImageRgba8 frame, int index);
   // Drains the queue, closes the video, rethrows the worker's error.
   void finish();
   FrameOutputStats stats() const;
 
  private:
   struct Job {
-    std::shared_ptr<const ImageRgba8> image;
+    ImageRgba8 image;
     int index = 0;
   };
   void run();
-  void encode(const Job& job);
+  void encode(const Job& job, PngEncoder& png);
   void rethrow();
   void joinWorkers();
 
@@ -63,7 +68,8 @@ class FrameOutput {
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Job> queue_;
-  int inFlight_ = 0;  // frames taken by a worker and not yet encoded
+  std::vector<ImageRgba8> spares_;  // encoded frames' buffers, for spareImage
+  int inFlight_ = 0;                // frames taken by a worker and not yet encoded
   bool closing_ = false;
   std::exception_ptr error_;
   FrameOutputStats stats_;

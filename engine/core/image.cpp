@@ -6,8 +6,6 @@
 #include <limits>
 #include <memory>
 
-#include <libdeflate.h>
-
 #include "core/error.h"
 #include "core/file_io.h"
 
@@ -74,86 +72,6 @@ ImageRgba8 readPng(const std::filesystem::path& path) {
   std::copy_n(reinterpret_cast<const Rgba8*>(data), size_t(w) * h, image.pixels.data());
   stbi_image_free(data);
   return image;
-}
-
-namespace {
-// PNG chunk: length, type, data, CRC of type and data.
-void appendChunk(std::vector<uint8_t>& out, const char* type, const uint8_t* data, size_t size) {
-  const auto be32 = [&](uint32_t v) {
-    for (int shift = 24; shift >= 0; shift -= 8) out.push_back(uint8_t(v >> shift));
-  };
-  be32(uint32_t(size));
-  const size_t typeAt = out.size();
-  out.insert(out.end(), type, type + 4);
-  out.insert(out.end(), data, data + size);
-  be32(uint32_t(libdeflate_crc32(0, out.data() + typeAt, size + 4)));
-}
-
-// Rows for the compressor: RGB where every pixel is opaque (a quarter less to compress), RGBA
-// otherwise, each row with filter type 0 (none). On rendered frames no filter compresses best
-// at level 1 as well as fastest (1280x720: 0.70 MB against 0.84 MB with Sub): long runs of
-// ground colour stay runs.
-std::vector<uint8_t> filteredRows(const ImageRgba8& image, bool opaque) {
-  const size_t channels = opaque ? 3 : 4, stride = size_t(image.width) * channels + 1;
-  std::vector<uint8_t> rows(stride * size_t(image.height));
-  for (int y = 0; y < image.height; ++y) {
-    uint8_t* row = rows.data() + stride * size_t(y);
-    row[0] = 0;  // filter: none
-    const Rgba8* src = &image.pixels[size_t(y) * image.width];
-    if (!opaque) {
-      std::memcpy(row + 1, src, size_t(image.width) * 4);
-      continue;
-    }
-    for (int x = 0; x < image.width; ++x) {
-      row[1 + 3 * size_t(x)] = src[x].r;
-      row[2 + 3 * size_t(x)] = src[x].g;
-      row[3 + 3 * size_t(x)] = src[x].b;
-    }
-  }
-  return rows;
-}
-}  // namespace
-
-// libdeflate at level 1 with no row filter: a 1280×720 frame in ≈ 15 ms on one core of the
-// project's VM, where stb's writer (its own deflate) took 120 ms even at its fastest settings.
-// `throng render` encodes a frame while the next is rendered on the same cores, so the
-// encoder's time is taken from lavapipe's. Files come out smaller than stb's RGBA ones (a default
-// frame: 0.70 MB against 1.2 MB).
-std::vector<uint8_t> encodePng(const ImageRgba8& image) {
-  if (image.width <= 0 || image.height <= 0 ||
-      image.pixels.size() != size_t(image.width) * size_t(image.height))
-    fail("PNG encoding: image of ", image.width, "x", image.height, " with ", image.pixels.size(),
-         " pixels");
-  const bool opaque = std::all_of(image.pixels.begin(), image.pixels.end(),
-                                  [](const Rgba8& p) { return p.a == 255; });
-  const std::vector<uint8_t> rows = filteredRows(image, opaque);
-  std::unique_ptr<libdeflate_compressor, void (*)(libdeflate_compressor*)> compressor(
-      libdeflate_alloc_compressor(1), libdeflate_free_compressor);
-  if (!compressor) fail("PNG encoding: out of memory for the compressor");
-  std::vector<uint8_t> idat(libdeflate_zlib_compress_bound(compressor.get(), rows.size()));
-  const size_t idatSize = libdeflate_zlib_compress(compressor.get(), rows.data(), rows.size(),
-                                                   idat.data(), idat.size());
-  if (idatSize == 0) fail("PNG encoding: compression failed");
-
-  std::vector<uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  out.reserve(idatSize + 64);
-  uint8_t header[13] = {};
-  for (int k = 0; k < 4; ++k) {
-    header[k] = uint8_t(uint32_t(image.width) >> (24 - 8 * k));
-    header[4 + k] = uint8_t(uint32_t(image.height) >> (24 - 8 * k));
-  }
-  header[8] = 8;               // bits per channel
-  header[9] = opaque ? 2 : 6;  // RGB or RGBA; compression, filter and interlace methods 0
-  appendChunk(out, "IHDR", header, sizeof(header));
-  appendChunk(out, "IDAT", idat.data(), idatSize);
-  appendChunk(out, "IEND", nullptr, 0);
-  return out;
-}
-
-void writePngAtomic(const std::filesystem::path& path, const ImageRgba8& image) {
-  if (image.width <= 0 || image.height <= 0)
-    fail(path.string(), ": refusing to write an empty image");
-  writeFileAtomic(path, encodePng(image));
 }
 
 ImageDiff compareImages(const ImageRgba8& actual, const ImageRgba8& expected, int pixelThreshold) {

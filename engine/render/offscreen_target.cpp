@@ -48,9 +48,16 @@ void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target) {
                        &barrier, 0, nullptr, 0, nullptr);
 }
 
-ImageRgba8 readbackImage(const OffscreenTarget& target) {
-  ImageRgba8 image(static_cast<int>(target.width), static_cast<int>(target.height));
+void readbackInto(const OffscreenTarget& target, ImageRgba8& image) {
+  image.width = static_cast<int>(target.width);
+  image.height = static_cast<int>(target.height);
+  image.pixels.resize(size_t(target.width) * target.height);  // a recycled frame keeps its memory
   std::memcpy(image.pixels.data(), target.readback.mapped(), image.pixels.size() * sizeof(Rgba8));
+}
+
+ImageRgba8 readbackImage(const OffscreenTarget& target) {
+  ImageRgba8 image;
+  readbackInto(target, image);
   return image;
 }
 

@@ -36,5 +36,7 @@ FrameTargets offscreenFrameTargets(const OffscreenTarget& target);
 void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target);
 // After the commands completed: the pixels as an image.
 ImageRgba8 readbackImage(const OffscreenTarget& target);
+// The same into `image`, reusing its pixels' memory (a frame loop's recycled buffer).
+void readbackInto(const OffscreenTarget& target, ImageRgba8& image);
 
 }  // namespace throng::render

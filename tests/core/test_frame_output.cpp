@@ -6,11 +6,13 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <memory>
+#include <span>
 #include <string>
 
 #include "core/error.h"
+#include "core/file_io.h"
 #include "core/frame_output.h"
+#include "core/png_encoder.h"
 #include "core/video_writer.h"
 #include "test_support.h"
 
@@ -19,12 +21,11 @@ using namespace throng;
 
 namespace {
 
-std::shared_ptr<ImageRgba8> gradientFrame(int w, int h, int t) {
-  auto image = std::make_shared<ImageRgba8>(w, h);
+ImageRgba8 gradientFrame(int w, int h, int t) {
+  ImageRgba8 image(w, h);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      image->at(x, y) = {uint8_t((x * 4 + t * 8) & 255), uint8_t(y * 4), uint8_t(t * 16 & 255),
-                         255};
+      image.at(x, y) = {uint8_t((x * 4 + t * 8) & 255), uint8_t(y * 4), uint8_t(t * 16 & 255), 255};
   return image;
 }
 
@@ -86,7 +87,7 @@ TEST_CASE("video: frames become an H.264 MP4 that ffprobe reads, with the right 
   fs::path video = dir / "out.mp4";
   {
     VideoWriter writer(video, {64, 48, 30.0});
-    for (int t = 0; t < 12; ++t) writer.write(*gradientFrame(64, 48, t));
+    for (int t = 0; t < 12; ++t) writer.write(gradientFrame(64, 48, t));
     CHECK_FALSE(fs::exists(video));  // nothing under the final name before it is complete
     writer.finish();
   }
@@ -94,7 +95,7 @@ TEST_CASE("video: frames become an H.264 MP4 that ffprobe reads, with the right 
   int others = 0;
   for (const auto& entry : fs::directory_iterator(dir)) others += entry.path() != video;
   CHECK(others == 0);  // no temporary or log file left behind
-  CHECK_THROWS_WITH_AS(VideoWriter(video, {64, 48, 30.0}).write(*gradientFrame(32, 48, 0)),
+  CHECK_THROWS_WITH_AS(VideoWriter(video, {64, 48, 30.0}).write(gradientFrame(32, 48, 0)),
                        doctest::Contains("frame of 32x48"), Error);
   fs::remove_all(dir);
 }
@@ -106,7 +107,7 @@ TEST_CASE("video: an odd frame size is padded to even sides") {
   }
   fs::path dir = freshFolder("video_odd");
   VideoWriter writer(dir / "odd.mp4", {33, 21, 24.0});
-  for (int t = 0; t < 3; ++t) writer.write(*gradientFrame(33, 21, t));
+  for (int t = 0; t < 3; ++t) writer.write(gradientFrame(33, 21, t));
   writer.finish();
   CHECK(probe(dir / "odd.mp4") == "h264,34,22,3");
   fs::remove_all(dir);
@@ -120,7 +121,7 @@ TEST_CASE("video: an abandoned writer leaves no file under the final name or tem
   fs::path dir = freshFolder("video_abandon");
   {
     VideoWriter writer(dir / "gone.mp4", {64, 48, 30.0});
-    writer.write(*gradientFrame(64, 48, 0));
+    writer.write(gradientFrame(64, 48, 0));
   }
   CHECK(fs::is_empty(dir));
   fs::remove_all(dir);
@@ -146,7 +147,7 @@ TEST_CASE("frame output: PNGs and video from a worker, bounded queue, stats") {
   CHECK(stats.encodeMs > 0.0);
   CHECK(fs::exists(dir / "frame_0000.png"));
   CHECK(fs::exists(dir / "frame_0008.png"));
-  CHECK(readPng(dir / "frame_0004.png").at(10, 10) == gradientFrame(64, 48, 4)->at(10, 10));
+  CHECK(readPng(dir / "frame_0004.png").at(10, 10) == gradientFrame(64, 48, 4).at(10, 10));
   CHECK(probe(dir / "clip.mp4") == "h264,64,48,9");
   fs::remove_all(dir);
 }
@@ -170,7 +171,7 @@ TEST_CASE("frame output: several PNG workers write every frame once, in its own 
     std::snprintf(name, sizeof(name), "frame_%04d.png", t);
     CAPTURE(t);
     REQUIRE(fs::exists(dir / name));
-    CHECK(readPng(dir / name).pixels == gradientFrame(40, 30, t)->pixels);
+    CHECK(readPng(dir / name).pixels == gradientFrame(40, 30, t).pixels);
   }
   // A video keeps one worker: its frames go in order.
   FrameOutputOptions video = options;
@@ -203,23 +204,75 @@ TEST_CASE("frame output: a failing encoder's error reaches the frame loop") {
 TEST_CASE("png: what encodePng writes reads back pixel for pixel (RGB and RGBA)") {
   fs::path dir = freshFolder("png_round_trip");
   SUBCASE("opaque: written as RGB") {
-    auto image = gradientFrame(37, 23, 5);
-    image->at(3, 4) = {250, 1, 128, 255};
-    std::vector<uint8_t> bytes = encodePng(*image);
+    ImageRgba8 image = gradientFrame(37, 23, 5);
+    image.at(3, 4) = {250, 1, 128, 255};
+    std::vector<uint8_t> bytes = encodePng(image);
     REQUIRE(bytes.size() > 33);
     CHECK(bytes[25] == 2);  // IHDR colour type: RGB
-    writePngAtomic(dir / "rgb.png", *image);
+    writePngAtomic(dir / "rgb.png", image);
     ImageRgba8 back = readPng(dir / "rgb.png");
     CHECK(back.width == 37);
     CHECK(back.height == 23);
-    CHECK(back.pixels == image->pixels);
+    CHECK(back.pixels == image.pixels);
   }
   SUBCASE("one translucent pixel: written as RGBA") {
-    auto image = gradientFrame(16, 9, 2);
-    image->at(15, 8).a = 7;
-    CHECK(encodePng(*image)[25] == 6);  // RGBA
-    writePngAtomic(dir / "rgba.png", *image);
-    CHECK(readPng(dir / "rgba.png").pixels == image->pixels);
+    ImageRgba8 image = gradientFrame(16, 9, 2);
+    image.at(15, 8).a = 7;
+    CHECK(encodePng(image)[25] == 6);  // RGBA
+    writePngAtomic(dir / "rgba.png", image);
+    CHECK(readPng(dir / "rgba.png").pixels == image.pixels);
   }
   CHECK_THROWS_AS(encodePng(ImageRgba8()), Error);
+}
+
+TEST_CASE("png: one encoder, image after image, writes each as a fresh one would") {
+  fs::path dir = freshFolder("png_encoder_reuse");
+  PngEncoder encoder;
+  // Sizes and kinds in an order that makes the kept buffers shrink, grow and change layout.
+  ImageRgba8 translucent = gradientFrame(9, 5, 1);
+  translucent.at(0, 0).a = 0;
+  const ImageRgba8 images[] = {gradientFrame(64, 48, 3), gradientFrame(7, 3, 4), translucent,
+                               gradientFrame(65, 49, 6), gradientFrame(1, 1, 7)};
+  int k = 0;
+  for (const ImageRgba8& image : images) {
+    const std::span<const uint8_t> bytes = encoder.encode(image);
+    CHECK(std::vector<uint8_t>(bytes.begin(), bytes.end()) == encodePng(image));
+    const fs::path file = dir / concat("image_", k++, ".png");
+    writeFileAtomic(file, bytes);
+    const ImageRgba8 back = readPng(file);
+    CHECK(back.width == image.width);
+    CHECK(back.height == image.height);
+    CHECK(back.pixels == image.pixels);
+  }
+  CHECK_THROWS_AS(encoder.encode(ImageRgba8()), Error);
+  fs::remove_all(dir);
+}
+
+TEST_CASE(
+    "frame output: encoded frames' buffers come back as spare images, at most a queue's worth") {
+  fs::path dir = freshFolder("frame_output_spares");
+  FrameOutputOptions options;
+  options.pngFolder = dir;
+  options.width = 24;
+  options.height = 16;
+  options.workers = 1;
+  options.queueDepth = 2;
+  FrameOutput output(options);
+  CHECK(output.spareImage().pixels.empty());  // nothing encoded yet
+  for (int t = 0; t < 8; ++t) {
+    ImageRgba8 frame = output.spareImage();  // filled over, whatever it held
+    frame = gradientFrame(24, 16, t);
+    output.push(std::move(frame), t);
+  }
+  output.finish();
+  int spares = 0;
+  for (ImageRgba8 spare = output.spareImage(); !spare.pixels.empty(); spare = output.spareImage()) {
+    CHECK(spare.pixels.size() == size_t(24 * 16));  // a whole frame's buffer
+    ++spares;
+  }
+  CHECK(spares >= 1);
+  CHECK(spares <= 2);  // the queue's depth
+  for (int t = 0; t < 8; ++t)
+    CHECK(readPng(dir / concat("frame_000", t, ".png")).pixels == gradientFrame(24, 16, t).pixels);
+  fs::remove_all(dir);
 }
