@@ -53,6 +53,11 @@ bool haveFfmpeg() {
   return std::system("ffmpeg -version >/dev/null 2>&1") == 0;
 }
 
+// PNG frames of w×h into `folder` by `workers` workers with a queue `depth` frames deep.
+FrameOutputOptions pngOptions(const fs::path& folder, int w, int h, int workers, int depth) {
+  return {.pngFolder = folder, .width = w, .height = h, .queueDepth = depth, .workers = workers};
+}
+
 fs::path freshFolder(const char* name) {
   fs::path dir = fs::temp_directory_path() / concat("throng_", name, "_", ::getpid());
   fs::remove_all(dir);
@@ -154,12 +159,7 @@ TEST_CASE("frame output: PNGs and video from a worker, bounded queue, stats") {
 
 TEST_CASE("frame output: several PNG workers write every frame once, in its own file") {
   fs::path dir = freshFolder("frame_output_workers");
-  FrameOutputOptions options;
-  options.pngFolder = dir;
-  options.width = 40;
-  options.height = 30;
-  options.workers = 4;
-  options.queueDepth = 1;  // raised to keep every worker busy
+  const FrameOutputOptions options = pngOptions(dir, 40, 30, 4, 1);  // depth raised to 5
   FrameOutput output(options);
   for (int t = 0; t < 24; ++t) output.push(gradientFrame(40, 30, t), t);
   output.finish();
@@ -251,13 +251,7 @@ TEST_CASE("png: one encoder, image after image, writes each as a fresh one would
 TEST_CASE(
     "frame output: encoded frames' buffers come back as spare images, at most a queue's worth") {
   fs::path dir = freshFolder("frame_output_spares");
-  FrameOutputOptions options;
-  options.pngFolder = dir;
-  options.width = 24;
-  options.height = 16;
-  options.workers = 1;
-  options.queueDepth = 2;
-  FrameOutput output(options);
+  FrameOutput output(pngOptions(dir, 24, 16, 1, 2));
   CHECK(output.spareImage().pixels.empty());  // nothing encoded yet
   for (int t = 0; t < 8; ++t) {
     ImageRgba8 frame = output.spareImage();  // filled over, whatever it held
