@@ -28,7 +28,7 @@ layout(push_constant) uniform Push { SplatPush push; };
 #include "joint_far_body.glsl"
 #include "joint_splat_common.glsl"
 layout(std430, binding = kRenderBindingSprites) writeonly buffer Sprites { SplatSprite sprites[]; };
-layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { uint owners[]; };
+layout(std430, binding = kRenderBindingPixelOwners) writeonly buffer Owners { uint64_t owners[]; };
 layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCounters counters; };
 #include "joint_splat_reserve.glsl"
 layout(std430, binding = kRenderBindingWalkList) writeonly buffer WalkList { uint walkList[]; };

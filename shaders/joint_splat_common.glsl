@@ -1,4 +1,4 @@
-// What the splat passes share: a sprite (a splatted joint's ellipsoid, tint and screen box)
+// What the splat passes share: a sprite (a splatted joint's ellipsoid and tint)
 // and the shading of one pixel of it into the visibility buffer. Needs joint_sprite.glsl, the
 // Frame uniform and the Visibility buffer first. CPU twin: render::splatJointsCpu.
 #ifndef THRONG_JOINT_SPLAT_COMMON_GLSL
@@ -11,7 +11,6 @@ struct SplatSprite {
   vec4 inverse1;
   vec4 inverse2;
   vec4 tint;      // xyz
-  uvec3 box;      // first pixel x, first pixel y, box width
 };
 
 // The nearest hit of pixel (x, y) with the sprite's ellipsoid, kept by a 64-bit atomicMin of

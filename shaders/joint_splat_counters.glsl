@@ -1,6 +1,7 @@
-// The splat's work-list capacities (specialization constants 0 and 1 of every splat shader, so
-// tests can shrink them) and its counters, shared by the passes that reserve entries and the
-// resolve that reads them. Needs render_bindings.h first.
+// The splat's work lists: their capacities (specialization constants 0 and 1 of every splat
+// shader, so tests can shrink them), their counters and their pixel entries, shared by the passes
+// that reserve entries and the resolve that reads them. Needs render_bindings.h and 64-bit
+// integers first.
 #ifndef THRONG_JOINT_SPLAT_COUNTERS_GLSL
 #define THRONG_JOINT_SPLAT_COUNTERS_GLSL
 
@@ -21,5 +22,17 @@ struct SplatCounters {
 uint bodyEntries(SplatCounters c) { return min(c.bodyPixels, kPixelCapacity); }
 uint spriteEntryLimit(SplatCounters c) { return kPixelCapacity - bodyEntries(c); }
 uint spriteEntries(SplatCounters c) { return min(c.pixels, spriteEntryLimit(c)); }
+
+// A pixel entry (render_bindings.h): screen pixel xy and the sprite to ray-cast there (a far
+// body's entry: 0; kSplatNoSprite: no entry).
+uint64_t splatEntry(ivec2 xy, uint sprite) {
+  return (uint64_t(uint(xy.x) | (uint(xy.y) << 16)) << 32) | uint64_t(sprite);
+}
+const uint64_t kSplatNoEntry = uint64_t(kSplatNoSprite);
+uint entrySprite(uint64_t entry) { return uint(entry & 0xFFFFFFFFul); }
+ivec2 entryPixel(uint64_t entry) {
+  uint xy = uint(entry >> 32);
+  return ivec2(xy & 0xFFFFu, xy >> 16);
+}
 
 #endif

@@ -16,7 +16,7 @@ bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
 // joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
 // pixel entry; `fits` when the sprite (if any) and every entry are below the capacities (the
 // entries below `limit`, where the far bodies' begin: spriteEntryLimit). The caller gives every
-// entry reserved below the limit an owner, kSplatNoSprite when the entries are not kept (in the
+// entry reserved below the limit its value, kSplatNoEntry when the entries are not kept (in the
 // loop that writes them: a loop of its own here would run its body for every caller, its lanes
 // masked off).
 uint reserveEntries(uint spriteCount, uint pixelCount, uint limit, out uint sprite, out bool fits) {
@@ -101,7 +101,6 @@ void splatSprite(uint joint, JointSprite s, vec3 tint, uint limit) {
   ivec2 lo = ivec2(0), hi = ivec2(-1);  // too wide: an empty box, so its lanes skip the rows
   bool wide = s.sizePx > push.maxPixels;
   if (!wide && !spriteBox(s, lo, hi)) return;
-  uint boxWidth = uint(hi.x - lo.x + 1);
   Silhouette c = silhouette(s, lo);
   uint pixelCount = 0u;
   for (int y = lo.y; y <= hi.y; ++y) {
@@ -118,15 +117,14 @@ void splatSprite(uint joint, JointSprite s, vec3 tint, uint limit) {
   uint entry = first;
   for (int y = lo.y; y <= hi.y; ++y) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
-    uint rowStart = uint(y - lo.y) * boxWidth - uint(lo.x);
     for (int x = span.x; x <= span.y; ++x, ++entry)
-      if (entry < limit) owners[entry] = fits ? sprite | ((rowStart + uint(x)) << kSplatOwnerPixelShift) : kSplatNoSprite;
+      if (entry < limit) owners[entry] = fits ? splatEntry(ivec2(x, y), sprite) : kSplatNoEntry;
   }
-  if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0), uvec3(uint(lo.x), uint(lo.y), boxWidth));
+  if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0));
 }
 
-// The pixel of entry i of a box boxWidth wide at lo, the row by a float division as in
-// joint_splat_pixels.comp (lavapipe divides integers one lane at a time).
+// The pixel of entry i of a box boxWidth wide at lo, the row by a float division (exact for
+// boxes this small, and lavapipe divides integers one lane at a time).
 ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
   uint row = uint((float(i) + 0.5) / float(boxWidth));
   return lo + ivec2(i - row * boxWidth, row);
@@ -137,7 +135,7 @@ ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
 void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint fromTop) {
   uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
   atomicMin(visibility[pixel], packed);
-  if (fromTop < kPixelCapacity) owners[kPixelCapacity - 1u - fromTop] = fits ? pixel : kSplatNoSprite;
+  if (fromTop < kPixelCapacity) owners[kPixelCapacity - 1u - fromTop] = fits ? splatEntry(xy, 0u) : kSplatNoEntry;
 }
 
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than

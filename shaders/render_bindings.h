@@ -34,20 +34,20 @@ const uint kRenderBindingWalkList = 19u;      // characters whose joints are spl
 const uint kRenderBindingListCounts = 20u;    // per chunk: each list's length and dispatch
 const uint kRenderBindingOnScreenList = 21u;  // characters on screen, per chunk
 
-// The splat's work lists: a joint reserves a sprite and one entry per pixel of its box, and the
-// pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs its own
-// pixels and not the 2×2 lanes' idle wait. Fixed capacities (≈ 37 MB; specialization constants
-// 0 and 1 of both splat shaders, so tests can shrink them): a joint that does not fit is listed
-// for the graphics pipeline's draw, like one too wide to splat, as correct and slower.
+// The splat's work lists: a joint reserves a sprite and one entry per pixel of its silhouette,
+// and the pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs
+// its own pixels and not the 2×2 lanes' idle wait. Fixed capacities (48 MiB; specialization
+// constants 0 and 1 of the splat shaders, so tests can shrink them): a joint that does not fit
+// is listed for the graphics pipeline's draw, like one too wide to splat, as correct and slower.
 const uint kSplatSpriteCapacity = 262144u;
-const uint kSplatSpriteBytes = 80u;          // SplatSprite
+const uint kSplatSpriteBytes = 64u;          // SplatSprite
 const uint kSplatPixelCapacity = 4194304u;   // 4 Mi pixel entries (a 1280×720 frame 4.5 times)
-const uint kSplatNoSprite = 0xFFFFFFFFu;     // a reserved pixel past a capacity
-// A joint's pixel entry before the pixel pass: its sprite in the low kSplatOwnerPixelShift bits
-// and, above them, the pixel's index in the sprite's box (row-major). So the sprite capacity is
-// at most 2^18 and a box at most kSplatMaxSpritePixels wide (its indices stay below bit 31).
-const uint kSplatOwnerPixelShift = 18u;
-const uint kSplatOwnerSpriteMask = 0x3FFFFu;
+const uint kSplatEntryBytes = 8u;            // a pixel entry: 64 bits
+// A pixel entry names its screen pixel from the start, x | y << 16 in its high 32 bits, and its
+// sprite in the low 32 (a far body's entry: 0, the pixel pass does not visit it). So the pixel
+// pass finds its pixel without the sprite's box and the resolve finds it without the pixel pass
+// writing it back. An entry reserved past a capacity has kSplatNoSprite for its sprite.
+const uint kSplatNoSprite = 0xFFFFFFFFu;     // an entry's sprite bits: no entry
 const uint kSplatMaxSpritePixels = 64u;      // the largest maxPixels a splat accepts
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup

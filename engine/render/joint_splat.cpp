@@ -50,7 +50,7 @@ SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
     return gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   };
   return {buffer(VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes),
-          buffer(VkDeviceSize(pixelCapacity) * 4u), buffer(16)};
+          buffer(VkDeviceSize(pixelCapacity) * gpu_types::kSplatEntryBytes), buffer(16)};
 }
 
 VkDeviceSize listCountsBytes(size_t chunks) {
@@ -110,12 +110,16 @@ std::vector<std::string> SplatJob::validate() const {
   else if (nearList->size() < VkDeviceSize(characterCount) * jointCount * 4)
     problems.push_back("output 'nearList' is smaller than one index per joint");
   if (spriteCapacity == 0 || pixelCapacity == 0) problems.push_back("a work-list capacity is zero");
-  if (spriteCapacity > gpu_types::kSplatOwnerSpriteMask + 1u)
-    problems.push_back(concat("spriteCapacity ", spriteCapacity, " is above ",
-                              gpu_types::kSplatOwnerSpriteMask + 1u, " (a pixel entry's sprite bits)"));
+  if (spriteCapacity == gpu_types::kSplatNoSprite)
+    problems.push_back(
+        concat("spriteCapacity ", spriteCapacity, " leaves no value for 'no sprite'"));
   if (!(maxPixels <= float(gpu_types::kSplatMaxSpritePixels)))
     problems.push_back(concat("maxPixels ", maxPixels, " is above ",
-                              gpu_types::kSplatMaxSpritePixels, " (a pixel entry's box bits)"));
+                              gpu_types::kSplatMaxSpritePixels,
+                              ", the widest joint a splat takes"));
+  if (width > 0xFFFFu || height > 0xFFFFu)
+    problems.push_back(concat("target ", width, "x", height,
+                              " is wider or taller than a pixel entry's 16-bit coordinates"));
   const auto checkList = [&](const gpu::Buffer* list, const char* name, VkDeviceSize bytes) {
     if (!list || !*list)
       problems.push_back(concat("work list '", name, "' is missing"));
@@ -124,7 +128,7 @@ std::vector<std::string> SplatJob::validate() const {
           concat("work list '", name, "' holds ", list->size(), " bytes, ", bytes, " needed"));
   };
   checkList(sprites, "sprites", VkDeviceSize(spriteCapacity) * gpu_types::kSplatSpriteBytes);
-  checkList(pixelOwners, "pixelOwners", VkDeviceSize(pixelCapacity) * 4u);
+  checkList(pixelOwners, "pixelOwners", VkDeviceSize(pixelCapacity) * gpu_types::kSplatEntryBytes);
   checkList(counters, "counters", 16);
   const VkDeviceSize listBytes = std::max<VkDeviceSize>(4, VkDeviceSize(characterCount) * 4u);
   checkList(onScreenList, "onScreenList", listBytes);

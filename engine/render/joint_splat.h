@@ -89,7 +89,7 @@ struct SplatJob {
   // The pixel pass's work lists (render_bindings.h), sized for the capacities both programs
   // were specialized with (makeSplatPrograms).
   const gpu::Buffer* sprites = nullptr;      // spriteCapacity × kSplatSpriteBytes
-  const gpu::Buffer* pixelOwners = nullptr;  // pixelCapacity uints
+  const gpu::Buffer* pixelOwners = nullptr;  // pixelCapacity 64-bit entries
   const gpu::Buffer* counters = nullptr;     // 16 bytes, cleared by record()
   // The characters on screen and the characters whose joints are walked (the rest of those on
   // screen are far bodies): a uint per character each, and per chunk both lists' lengths and
