@@ -14,19 +14,18 @@ struct SplatSprite {
 };
 
 // The nearest hit of pixel (x, y) with the sprite's ellipsoid, kept by a 64-bit atomicMin of
-// (depth bits << 32 | colour). False where the ray misses.
-bool splatPixel(int x, int y, vec4 inverse0, vec4 inverse1, vec4 inverse2, vec3 tint) {
+// (depth bits << 32 | colour); nothing where the ray misses.
+void splatPixel(int x, int y, vec4 inverse0, vec4 inverse1, vec4 inverse2, vec3 tint) {
   vec3 dir = pixelRay(vec2(x, y) + 0.5, frame);
   float t;
   vec3 n;
-  if (!hitJoint(frame.eye.xyz, dir, inverse0, inverse1, inverse2, t, n)) return false;
+  if (!hitJoint(frame.eye.xyz, dir, inverse0, inverse1, inverse2, t, n)) return;
   vec4 clip = frame.viewProjection * vec4(frame.eye.xyz + t * dir, 1.0);
   float depth = clip.z / clip.w;
-  if (depth < 0.0 || depth > 1.0) return false;
+  if (depth < 0.0 || depth > 1.0) return;
   uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0));
   uint64_t packed = (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(colour);
   atomicMin(visibility[uint(y) * uint(frame.viewport.x) + uint(x)], packed);
-  return true;
 }
 
 #endif

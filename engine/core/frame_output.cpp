@@ -133,7 +133,6 @@ void FrameOutput::run() {
 
 void FrameOutput::encode(const Job& job, PngEncoder& png) {
   if (options_.pngFolder) {
-    if (job.image.width <= 0 || job.image.height <= 0) fail("frame output: an empty frame");
     char name[32];
     std::snprintf(name, sizeof(name), "frame_%04d.png", job.index);
     writeFileAtomic(*options_.pngFolder / name, png.encode(job.image));
