@@ -4,14 +4,16 @@
 #extension GL_EXT_shader_atomic_int64 : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
-// The far joints, step 2: one invocation per character joint_splat.comp listed walks its
-// joints (lanes are characters at the same joint, so a level's undrawn joints cost its lanes
-// nothing, and the character's mask, tint and pose source are read once). Each drawn joint's
-// ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel of its
-// silhouette for joint_splat_pixels.comp, which ray-casts them one pixel per invocation. Joints
-// wider than push.maxPixels, and joints whose reservation does not fit, are listed for an
-// indirect draw by the graphics pipeline instead. Dispatched indirectly with as
-// many workgroups as the list needs, one invocation per listed character.
+// The far joints, step 2: the characters joint_splat.comp listed have their joints walked. Each
+// drawn joint's ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel
+// of its silhouette for joint_splat_pixels.comp, which ray-casts them one pixel per invocation.
+// Joints wider than push.maxPixels, and joints whose reservation does not fit, are listed for an
+// indirect draw by the graphics pipeline instead. Dispatched indirectly with as many workgroups
+// as the list needs, one invocation per listed character, in one row or in a row per joint
+// (render::SplatWalk): in one row an invocation walks its character's joints (lanes are
+// characters at the same joint, so a level's undrawn joints cost its lanes nothing, and the
+// character's mask, tint and pose source are read once: lavapipe's way), in row y it takes joint
+// y alone (a GPU's: many short threads).
 // CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"
 #include "render_bindings.h"
@@ -37,15 +39,16 @@ layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCou
 layout(std430, binding = kRenderBindingWalkList) readonly buffer WalkList { uint walkList[]; };
 layout(std430, binding = kRenderBindingListCounts) readonly buffer ListCounts { uint listCounts[]; };
 
-// limit: where the far bodies' entries begin (spriteEntryLimit).
-void walkJoints(uint local, uint limit) {
+// Joints first..end-1 of chunk-local character `local`; limit: where the far bodies' entries
+// begin (spriteEntryLimit).
+void walkJoints(uint local, uint first, uint end, uint limit) {
   uint character = local + push.firstCharacter;
   uint base = local * push.jointCount;  // its first joint in the chunk
   uvec4 mask = characterMask(character);
   vec3 tint = characterColour(character, mask);
   CharacterPose pose = characterPose(character, push.flags);
   uvec2 bones = uvec2(push.boneLo, push.boneHi);
-  for (uint j = 0u; j < push.jointCount; ++j) {
+  for (uint j = first; j < end; ++j) {
     JointMatrix a;
     if (!drawnPoseJoint(base + j, pose, j, push.flags, mask, bones, a)) continue;
     JointSprite s = jointSprite(a, frame);
@@ -57,5 +60,7 @@ void main() {
   uint k = gl_GlobalInvocationID.x;
   if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs]) return;
   uint limit = spriteEntryLimit(counters);  // every far body was reserved by the pass before
-  walkJoints(walkList[push.firstCharacter + k], limit);
+  bool perJoint = gl_NumWorkGroups.y > 1u;     // a row per joint (one joint: the same either way)
+  uint first = perJoint ? gl_WorkGroupID.y : 0u;
+  walkJoints(walkList[push.firstCharacter + k], first, perJoint ? first + 1u : push.jointCount, limit);
 }

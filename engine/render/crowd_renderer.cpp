@@ -70,6 +70,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
                              VkFormat depthFormat)
     : context_(&context),
       splatSupported_(splatSupportedBy(context.info())),
+      splatWalk_(splatWalkFor(context.info())),
       passTimer_(std::make_unique<PassTimer>(context)) {
   gpu::GraphicsPipelineDesc jointDesc;
   jointDesc.vertexShader = "joints.vert";
@@ -193,6 +194,7 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
     job.onScreenList = &onScreenList_;
     job.walkList = &walkList_;
     job.listCounts = &listCounts_;
+    job.walk = splatWalk_;
     job.record(cmd, splat_);
     return &visibility_;
   }

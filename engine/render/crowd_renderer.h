@@ -86,6 +86,7 @@ class CrowdRenderer {
   std::vector<gpu::Buffer> frameUniforms_;
   const gpu::Context* context_ = nullptr;
   bool splatSupported_ = false;
+  SplatWalk splatWalk_ = SplatWalk::PerCharacter;
   std::unique_ptr<PassTimer> passTimer_;
   SplatPrograms splat_;
   SplatLists splatLists_;

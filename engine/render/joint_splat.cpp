@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <initializer_list>
+#include <string_view>
 
 #include "core/error.h"
 #include "gpu/commands.h"
@@ -57,6 +59,13 @@ VkDeviceSize listCountsBytes(size_t chunks) {
   return std::max<size_t>(chunks, 1) * gpu_types::kSplatListArgsWords * sizeof(uint32_t);
 }
 
+SplatWalk splatWalkFor(const gpu::DeviceInfo& device) {
+  const char* chosen = std::getenv("THRONG_SPLAT_WALK");
+  if (chosen && std::string_view(chosen) == "character") return SplatWalk::PerCharacter;
+  if (chosen && std::string_view(chosen) == "joint") return SplatWalk::PerJoint;
+  return device.isCpu() ? SplatWalk::PerCharacter : SplatWalk::PerJoint;
+}
+
 namespace {
 // `words` written `times` times in a row at the start of `buffer` (vkCmdUpdateBuffer, at most
 // 64 KiB per command).
@@ -84,6 +93,9 @@ std::vector<std::string> SplatJob::validate() const {
                               "x", height, " needs ",
                               VkDeviceSize(width) * height * sizeof(uint64_t)));
   if (characterCount > 0 && jointCount == 0) problems.push_back("jointCount is zero");
+  if (walk == SplatWalk::PerJoint && jointCount > 65535u)  // Vulkan's least workgroup count in y
+    problems.push_back(
+        concat("jointCount ", jointCount, " is above 65535, a walk's rows per joint"));
   if (joints && *joints && joints->size() < VkDeviceSize(characterCount) * jointCount * 48u)
     problems.push_back("input 'joints' is smaller than characterCount × jointCount matrices");
   if (maxStorageBufferRange == 0) problems.push_back("maxStorageBufferRange is zero");
@@ -205,9 +217,11 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   const std::vector<JointChunk> chunks =
       jointChunks(characterCount, jointCount, maxStorageBufferRange);
   // Per chunk: an empty indirect draw {0 vertices, 1 instance}, and two empty lists with
-  // dispatches of no workgroups {count 0; x 0, y 1, z 1}.
+  // dispatches of no workgroups {count 0; x 0, y 1, z 1}; the walk's y is its rows of
+  // workgroups, one per joint when it walks per joint (joint_splat_walk.comp).
+  const uint32_t walkRows = walk == SplatWalk::PerJoint ? jointCount : 1u;
   updateRepeated(cmd, *draws, {0u, 1u, 0u, 0u}, chunks.size());
-  updateRepeated(cmd, *listCounts, {0u, 0u, 1u, 1u, 0u, 0u, 1u, 1u}, chunks.size());
+  updateRepeated(cmd, *listCounts, {0u, 0u, 1u, 1u, 0u, 0u, walkRows, 1u}, chunks.size());
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   // Per chunk: the characters on screen; their far bodies and the walk list; the listed
   // characters' joints. Each pass after the first is dispatched by the list before it.

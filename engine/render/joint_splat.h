@@ -58,6 +58,16 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context,
 // Bytes of the list-counts buffer for `chunks` chunks (render_bindings.h, kSplatListArgsWords).
 VkDeviceSize listCountsBytes(size_t chunks);
 
+// How joint_splat_walk.comp's invocations share the listed characters' joints. Per character:
+// each walks its character's joints in turn (lavapipe runs 8 lanes side by side, so lanes are
+// characters at the same joint and a character's mask, tint and pose are read once). Per joint:
+// a row of workgroups per joint, each invocation one joint (a GPU runs thousands of threads, and
+// a thread looping over 25 joints and their rows holds its warp up).
+enum class SplatWalk { PerCharacter, PerJoint };
+// Per character on a CPU device, per joint on a GPU; THRONG_SPLAT_WALK=character|joint chooses
+// (for measuring one against the other).
+SplatWalk splatWalkFor(const gpu::DeviceInfo& device);
+
 // The work lists for those capacities (device-local).
 struct SplatLists {
   gpu::Buffer sprites, pixelOwners, counters;
@@ -100,6 +110,7 @@ struct SplatJob {
   const gpu::Buffer* listCounts = nullptr;
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
+  SplatWalk walk = SplatWalk::PerCharacter;  // the same picture either way
 
   std::vector<std::string> validate() const;
   // Clears the visibility buffer, lists the characters on screen and splats them (chunked);
