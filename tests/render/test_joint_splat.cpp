@@ -240,7 +240,9 @@ void checkSplatTwin(std::span<const synth::JointMatrix> matrices, uint32_t joint
     // the last bit of the hit (these joints are a pixel or two across, so many rays graze). How
     // many depends on the device's rounding: lavapipe 6 flips and 47 channels (0.26%) here, an
     // NVIDIA H100 (fused multiply-adds, approximate square roots) 29 and 238 (1.3%).
-    CHECK(covered > 500);
+    // With lists too small only the sprites that fit are splatted, and which fit depends on the
+    // walk's order (per character 1,215 pixels here, per joint 350 on an NVIDIA H100).
+    CHECK(covered > (full ? 200u : 500u));
     CHECK(coverageMismatch <= covered / 100);
     CHECK(colourMismatch <= 3 * covered / 50);  // ≤ 2% of channels off by more than 2 levels
     CHECK(differentWinner <= covered / 50);
