@@ -61,9 +61,10 @@ VkDeviceSize listCountsBytes(size_t chunks) {
 
 SplatWalk splatWalkFor(const gpu::DeviceInfo& device) {
   const char* chosen = std::getenv("THRONG_SPLAT_WALK");
-  if (chosen && std::string_view(chosen) == "character") return SplatWalk::PerCharacter;
-  if (chosen && std::string_view(chosen) == "joint") return SplatWalk::PerJoint;
-  return device.isCpu() ? SplatWalk::PerCharacter : SplatWalk::PerJoint;
+  if (!chosen || !*chosen) return device.isCpu() ? SplatWalk::PerCharacter : SplatWalk::PerJoint;
+  if (std::string_view(chosen) == "character") return SplatWalk::PerCharacter;
+  if (std::string_view(chosen) == "joint") return SplatWalk::PerJoint;
+  fail("THRONG_SPLAT_WALK is '", chosen, "': expected 'character' or 'joint'");
 }
 
 namespace {

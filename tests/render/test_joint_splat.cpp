@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <string>
 
 #include "anim/default_clips.h"
+#include "core/error.h"
 #include "crowd/scenario.h"
 #include "gpu/commands.h"
 #include "gpu/program.h"
@@ -41,6 +44,28 @@ TEST_CASE("SplatJob: validity") {
   all.clear();
   for (auto& p : job.validate()) all += p + "\n";
   CHECK(all.find("jointCount 70000 is above 65535") != std::string::npos);
+}
+
+TEST_CASE("SplatJob: the walk by the device's type, or as THRONG_SPLAT_WALK says") {
+  const char* before = std::getenv("THRONG_SPLAT_WALK");
+  const std::string saved = before ? before : "";
+  gpu::DeviceInfo cpu, gpuDevice;
+  cpu.type = VK_PHYSICAL_DEVICE_TYPE_CPU;
+  gpuDevice.type = VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+  unsetenv("THRONG_SPLAT_WALK");
+  CHECK(render::splatWalkFor(cpu) == render::SplatWalk::PerCharacter);
+  CHECK(render::splatWalkFor(gpuDevice) == render::SplatWalk::PerJoint);
+  setenv("THRONG_SPLAT_WALK", "joint", 1);
+  CHECK(render::splatWalkFor(cpu) == render::SplatWalk::PerJoint);
+  setenv("THRONG_SPLAT_WALK", "character", 1);
+  CHECK(render::splatWalkFor(gpuDevice) == render::SplatWalk::PerCharacter);
+  setenv("THRONG_SPLAT_WALK", "joints", 1);
+  CHECK_THROWS_WITH_AS(render::splatWalkFor(cpu),
+                       doctest::Contains("expected 'character' or 'joint'"), throng::Error);
+  if (before)
+    setenv("THRONG_SPLAT_WALK", saved.c_str(), 1);
+  else
+    unsetenv("THRONG_SPLAT_WALK");
 }
 
 TEST_CASE("SplatJob: chunks cover the crowd exactly") {
