@@ -60,7 +60,8 @@ void main() {
   uint k = gl_GlobalInvocationID.x;
   if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs]) return;
   uint limit = spriteEntryLimit(counters);  // every far body was reserved by the pass before
-  bool perJoint = gl_NumWorkGroups.y > 1u;     // a row per joint (one joint: the same either way)
+  bool perJoint = gl_NumWorkGroups.y > 1u;  // a row per joint (one joint: the same either way)
   uint first = perJoint ? gl_WorkGroupID.y : 0u;
-  walkJoints(walkList[push.firstCharacter + k], first, perJoint ? first + 1u : push.jointCount, limit);
+  uint end = perJoint ? first + 1u : push.jointCount;
+  walkJoints(walkList[push.firstCharacter + k], first, end, limit);
 }

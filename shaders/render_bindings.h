@@ -54,10 +54,11 @@ const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgrou
 const uint kSplatBodyGroupSize = 64u;        // joint_splat.comp's and joint_splat_list.comp's
 const uint kSplatListRun = 8u;               // characters per invocation of joint_splat_list.comp
 // Per chunk in the list-counts buffer, two lists, each as its length followed by the
-// VkDispatchIndirectCommand of the pass that reads it (x = workgroups for the list; y = z = 1):
-// the characters on screen (joint_splat_list.comp), read by the far-body pass, and the
-// characters whose joints are walked (joint_splat.comp), read by the walk (one invocation per
-// listed character; a chunk's list is short enough for any device's workgroup count, jointChunks).
+// VkDispatchIndirectCommand of the pass that reads it (x = workgroups for the list; y = z = 1,
+// but the walk's y is a row per joint when it walks per joint, render::SplatWalk): the
+// characters on screen (joint_splat_list.comp), read by the far-body pass, and the characters
+// whose joints are walked (joint_splat.comp), read by the walk (one invocation per listed
+// character; a chunk's list is short enough for any device's workgroup count, jointChunks).
 // Dispatched by its list's length, a pass costs nothing for characters off screen: lavapipe runs
 // a pass's every line for every 8 lanes, taken or not, and a grid-stride loop's body once for
 // every 8 lanes even when no lane has work.

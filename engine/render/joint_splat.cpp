@@ -94,7 +94,9 @@ std::vector<std::string> SplatJob::validate() const {
                               "x", height, " needs ",
                               VkDeviceSize(width) * height * sizeof(uint64_t)));
   if (characterCount > 0 && jointCount == 0) problems.push_back("jointCount is zero");
-  if (walk == SplatWalk::PerJoint && jointCount > 65535u)  // Vulkan's least workgroup count in y
+  // Walked per joint, a row of workgroups per joint; every device allows 65535 rows
+  // (maxComputeWorkGroupCount[1]).
+  if (walk == SplatWalk::PerJoint && jointCount > 65535u)
     problems.push_back(
         concat("jointCount ", jointCount, " is above 65535, a walk's rows per joint"));
   if (joints && *joints && joints->size() < VkDeviceSize(characterCount) * jointCount * 48u)
