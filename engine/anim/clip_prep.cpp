@@ -10,6 +10,7 @@
 #include "anim/clip_prep_util.h"
 #include "core/error.h"
 #include "core/math.h"
+#include "core/text.h"
 
 namespace throng::anim {
 namespace {
@@ -24,15 +25,10 @@ constexpr float kMaxCycleSeconds = 1.6f;  // a slow walk
 // Longest capture prepared: the loop search compares every start with every cycle length, so
 // its time grows with the clip's length (a 3-frame file with `Frame Time: 3333` is 2.8 hours).
 constexpr float kMaxClipSeconds = 600.0f;
-constexpr int kMaxFrames = 1 << 20;       // 9.7 hours at 30 fps
-
-std::string lower(std::string text) {
-  for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
+constexpr int kMaxFrames = 1 << 20;  // 9.7 hours at 30 fps
 
 bool nameHas(const Joint& joint, const char* word) {
-  return lower(joint.name).find(word) != std::string::npos;
+  return toLower(joint.name).find(word) != std::string::npos;
 }
 
 // Length of the bone path between joints a and b (through their common ancestor).
@@ -128,8 +124,8 @@ Clip wholeCycle(const Clip& clip, int first, LoopCut& cut) {
 Clip prepareClip(const RawClip& raw, const PairOptions& options, LoopCut& cut) {
   Clip clip = toClip(raw);
   if (!(clip.duration() <= kMaxClipSeconds))
-    fail("clip ", clip.name, ": ", clip.frameCount, " frames of ", clip.frameTime, " s is ", clip.duration(),
-         " s; clips of up to ", kMaxClipSeconds, " s are prepared");
+    fail("clip ", clip.name, ": ", clip.frameCount, " frames of ", clip.frameTime, " s is ",
+         clip.duration(), " s; clips of up to ", kMaxClipSeconds, " s are prepared");
   float metresPerUnit = options.metresPerUnit > 0.0f ? options.metresPerUnit
                                                      : detectUnits(clip.skeleton).metresPerUnit;
   clip = resample(scaleToMetres(clip, metresPerUnit), options.frameTime);

@@ -9,6 +9,7 @@
 #include "anim/clip_prep.h"
 #include "anim/clip_prep_util.h"
 #include "core/error.h"
+#include "core/text.h"
 
 namespace throng::anim {
 namespace {
@@ -18,13 +19,8 @@ namespace {
 // stance is flat, so the single lowest frame would jitter by a frame or two).
 constexpr float kContactBand = 0.15f;
 
-std::string lower(std::string text) {
-  for (char& c : text) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 bool isLeftName(const std::string& name) {
-  std::string low = lower(name);
+  std::string low = toLower(name);
   if (low.find("left") != std::string::npos) return true;
   if (low.rfind("l_", 0) == 0 || low.find("_l_") != std::string::npos) return true;
   if (low.size() >= 2 && low.compare(low.size() - 2, 2, "_l") == 0) return true;
@@ -50,7 +46,7 @@ int leftFootJoint(const Skeleton& skeleton) {
   for (int j = 0; j < skeleton.jointCount(); ++j) {
     const std::string& name = skeleton.joints[size_t(j)].name;
     if (!isLeftName(name)) continue;
-    std::string low = lower(name);
+    std::string low = toLower(name);
     if (low.find("foot") != std::string::npos || low.find("ankle") != std::string::npos) return j;
     if (toe < 0 && low.find("toe") != std::string::npos) toe = j;
   }

@@ -12,7 +12,7 @@
 namespace throng::crowd {
 
 namespace {
-constexpr float kInfinity = std::numeric_limits<float>::infinity();
+constexpr float kUnreached = std::numeric_limits<float>::infinity();  // no path found yet
 }  // namespace
 
 RoadMap makeRoadMap(std::vector<glm::vec2> points,
@@ -68,7 +68,7 @@ PlannedPath planOnRoadMap(const RoadMap& map, glm::vec2 start, glm::vec2 target)
   const uint32_t s = nearestWayPoint(map, start);
   uint32_t g = nearestWayPoint(map, target);
   const size_t n = map.points.size();
-  std::vector<float> cost(n, kInfinity);
+  std::vector<float> cost(n, kUnreached);
   std::vector<int32_t> parent(n, -1);
   std::vector<bool> closed(n, false);
   using Item = std::pair<float, uint32_t>;

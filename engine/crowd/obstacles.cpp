@@ -107,7 +107,7 @@ void forCellsNear(const WallGrid& g, const Segment& s, Visit visit) {
     }
 }
 
-bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b);  // below
+bool segmentsMeet(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b);  // below
 
 // The distance between segment s and the cell [lo, hi] (0 where they meet), less a margin for
 // the rounding of the cell's corners and of the shaders' own distances.
@@ -120,7 +120,7 @@ float cellDistance(const Segment& s, glm::vec2 lo, glm::vec2 hi) {
   float d = kNoWallHit;
   for (int k = 0; k < 4; ++k) {
     const glm::vec2 c = corners[k], e = corners[(k + 1) % 4];
-    if (segmentsCross(s.a, s.b, c, e)) return 0.0f;
+    if (segmentsMeet(s.a, s.b, c, e)) return 0.0f;
     d = std::min(d, glm::length(c - closestOnSegment(c, s.a, s.b)));
   }
   for (glm::vec2 p : {s.a, s.b}) d = std::min(d, glm::length(p - glm::clamp(p, lo, hi)));
@@ -280,7 +280,7 @@ namespace {
 
 // Whether the closed segments pq and ab share a point (in double, so the check is exact enough
 // to judge the float passes).
-bool segmentsCross(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
+bool segmentsMeet(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
   auto orient = [](glm::dvec2 o, glm::dvec2 u, glm::dvec2 v) {
     double c = (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
     return c > 0.0 ? 1 : c < 0.0 ? -1 : 0;
@@ -303,7 +303,7 @@ WallViolations countWallViolations(const WallGrid& walls, std::span<const glm::v
       const float d = glm::length(p - closestOnSegment(p, s.a, s.b));
       v.closest = std::min(v.closest, d);
       close = close || d < minDistance;
-      crossed = crossed || (p != q && segmentsCross(q, p, s.a, s.b));
+      crossed = crossed || (p != q && segmentsMeet(q, p, s.a, s.b));
     }
     v.crossings += crossed;
     v.tooClose += close;

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 #include "gpu/limits.h"
 #include "gpu/vk_check.h"
 
@@ -29,11 +30,6 @@ VKAPI_ATTR VkBool32 VKAPI_CALL onValidationMessage(VkDebugUtilsMessageSeverityFl
 bool envFlag(const char* name) {
   const char* v = std::getenv(name);
   return v && *v && std::strcmp(v, "0") != 0;
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
 }
 
 bool layerAvailable(const char* name) {
@@ -108,7 +104,7 @@ const Candidate& chooseDevice(const std::vector<Candidate>& candidates, const st
       return candidates[index];
     }
     for (const Candidate& c : candidates) {
-      if (lower(c.properties.deviceName).find(lower(wanted)) != std::string::npos) return c;
+      if (toLower(c.properties.deviceName).find(toLower(wanted)) != std::string::npos) return c;
     }
     std::string names;
     for (const Candidate& c : candidates) names += concat("\n  ", c.properties.deviceName);
