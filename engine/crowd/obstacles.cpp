@@ -293,17 +293,112 @@ bool segmentsMeet(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
 
 }  // namespace
 
+namespace {
+
+// The check's own binning of the segments (not the WallGrid's lists, which are part of what it
+// checks): square cells, each listing every segment that passes through it, so a box of cells
+// holds every segment that comes within the box.
+class SegmentBins {
+ public:
+  explicit SegmentBins(std::span<const Segment> segments) {
+    glm::vec2 lo(kNoWallHit), hi(-kNoWallHit);
+    for (const Segment& s : segments) {
+      lo = glm::min(lo, glm::min(s.a, s.b));
+      hi = glm::max(hi, glm::max(s.a, s.b));
+    }
+    // About 16k cells over the walls' bounding box, none smaller than half a metre.
+    const glm::vec2 extent = glm::max(hi - lo, glm::vec2(0.0f));
+    cell_ = std::max(0.5f, std::sqrt(extent.x * extent.y / 16384.0f));
+    cell_ = std::max(cell_, std::max(extent.x, extent.y) / 4096.0f);
+    origin_ = lo;
+    columns_ = int(extent.x / cell_) + 1;
+    rows_ = int(extent.y / cell_) + 1;
+    std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (cell, segment)
+    for (uint32_t i = 0; i < segments.size(); ++i)
+      forCellsOf(segments[i], [&](int cell) { pairs.emplace_back(uint32_t(cell), i); });
+    std::sort(pairs.begin(), pairs.end());
+    starts_.assign(size_t(columns_) * rows_ + 1, 0);
+    for (const auto& [cell, segment] : pairs) ++starts_[cell + 1];
+    for (size_t c = 1; c < starts_.size(); ++c) starts_[c] += starts_[c - 1];
+    for (const auto& pair : pairs) items_.push_back(pair.second);
+  }
+
+  // Calls visit(segment) for the segments listed in the cells overlapping [lo, hi] (a segment
+  // in several cells more than once).
+  template <class Visit>
+  void forEachNear(glm::vec2 lo, glm::vec2 hi, Visit visit) const {
+    const glm::ivec2 a = cellClamped(lo), b = cellClamped(hi);
+    for (int r = a.y; r <= b.y; ++r)
+      for (int c = a.x; c <= b.x; ++c) {
+        const size_t cell = size_t(r) * columns_ + c;
+        for (uint32_t k = starts_[cell]; k < starts_[cell + 1]; ++k) visit(items_[k]);
+      }
+  }
+
+ private:
+  glm::ivec2 cellClamped(glm::vec2 p) const {
+    const glm::vec2 f = glm::clamp((p - origin_) / cell_, glm::vec2(0.0f),
+                                   glm::vec2(float(columns_ - 1), float(rows_ - 1)));
+    return glm::ivec2(f);
+  }
+  // The cells a segment passes through: per row of cells, the columns of its part in that row.
+  template <class Visit>
+  void forCellsOf(const Segment& s, Visit visit) const {
+    const glm::vec2 a = (s.a - origin_) / cell_, b = (s.b - origin_) / cell_;
+    const int firstRow = cellClamped(glm::min(s.a, s.b)).y,
+              lastRow = cellClamped(glm::max(s.a, s.b)).y;
+    for (int r = firstRow; r <= lastRow; ++r) {
+      float t0 = 0.0f, t1 = 1.0f;  // the segment's parameter range inside this row
+      if (b.y != a.y) {
+        const float u = (float(r) - a.y) / (b.y - a.y), w = (float(r + 1) - a.y) / (b.y - a.y);
+        t0 = std::max(0.0f, std::min(u, w));
+        t1 = std::min(1.0f, std::max(u, w));
+      }
+      const float x0 = a.x + t0 * (b.x - a.x), x1 = a.x + t1 * (b.x - a.x);
+      // One cell of margin each side: rounding at the row's edges never drops a cell.
+      const int c0 = std::clamp(int(std::floor(std::min(x0, x1))) - 1, 0, columns_ - 1);
+      const int c1 = std::clamp(int(std::floor(std::max(x0, x1))) + 1, 0, columns_ - 1);
+      for (int c = c0; c <= c1; ++c) visit(r * columns_ + c);
+    }
+  }
+
+  glm::vec2 origin_{0.0f};
+  float cell_ = 1.0f;
+  int columns_ = 1, rows_ = 1;
+  std::vector<uint32_t> starts_, items_;
+};
+
+bool finite(glm::vec2 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+}  // namespace
+
 WallViolations countWallViolations(const WallGrid& walls, std::span<const glm::vec4> previous,
                                    std::span<const glm::vec4> placement, float minDistance) {
   WallViolations v;
+  if (walls.segments.empty()) return v;
+  const SegmentBins bins(walls.segments);
+  std::vector<size_t> seenBy(walls.segments.size(), SIZE_MAX);  // a segment once per agent
   for (size_t i = 0; i < placement.size(); ++i) {
     const glm::vec2 p(placement[i].x, placement[i].z), q(previous[i].x, previous[i].z);
     bool crossed = false, close = false;
-    for (const Segment& s : walls.segments) {
+    auto check = [&](uint32_t k) {
+      if (seenBy[k] == i) return;
+      seenBy[k] = i;
+      const Segment& s = walls.segments[k];
       const float d = glm::length(p - closestOnSegment(p, s.a, s.b));
       v.closest = std::min(v.closest, d);
       close = close || d < minDistance;
       crossed = crossed || (p != q && segmentsMeet(q, p, s.a, s.b));
+    };
+    // Exact with the bins: a segment farther than both the closest distance seen so far and
+    // minDistance changes neither count nor minimum, and one the move crosses lies in its box.
+    const float margin = std::max(minDistance, v.closest);
+    if (finite(p) && finite(q) && margin < kNoWallHit) {
+      bins.forEachNear(glm::min(p, q) - margin, glm::max(p, q) + margin, check);
+    } else {
+      for (uint32_t k = 0; k < walls.segments.size(); ++k) check(k);
     }
     v.crossings += crossed;
     v.tooClose += close;

@@ -93,7 +93,8 @@ void wallConstraintCpu(const WallGrid& walls, float radius, std::span<const glm:
                        std::span<glm::vec4> placement, uint32_t first, uint32_t count);
 
 // Checks of the hard guarantee: moves whose path crossed a segment, and agents closer than
-// `minDistance` to one (brute force over the grid's lists).
+// `minDistance` to one. Exact over walls.segments, which the check bins by itself: the grid's
+// lists are part of what it checks.
 struct WallViolations {
   size_t crossings = 0, tooClose = 0;
   float closest = kNoWallHit;  // smallest distance of an agent to a segment seen

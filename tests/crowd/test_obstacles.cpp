@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "core/error.h"
 #include "core/math.h"
@@ -251,6 +252,83 @@ TEST_CASE("walls: a point's cell lists every segment within reach (brute force)"
     }
   }
   CHECK(near > 1000);  // the sample does test lists
+}
+
+// The violation check bins the segments itself; a brute-force count over every segment is the
+// reference (crossing: the closed segments share a point, by orientations in double).
+namespace {
+
+crowd::WallViolations bruteForceViolations(std::span<const crowd::Segment> segments,
+                                           std::span<const glm::vec4> previous,
+                                           std::span<const glm::vec4> placement,
+                                           float minDistance) {
+  auto orient = [](glm::dvec2 o, glm::dvec2 u, glm::dvec2 v) {
+    const double c = (u.x - o.x) * (v.y - o.y) - (u.y - o.y) * (v.x - o.x);
+    return c > 0.0 ? 1 : c < 0.0 ? -1 : 0;
+  };
+  crowd::WallViolations v;
+  for (size_t i = 0; i < placement.size(); ++i) {
+    const glm::dvec2 p(placement[i].x, placement[i].z), q(previous[i].x, previous[i].z);
+    bool crossed = false, close = false;
+    for (const crowd::Segment& s : segments) {
+      const glm::vec2 pf(p);
+      const float d = glm::length(pf - crowd::closestOnSegment(pf, s.a, s.b));
+      v.closest = std::min(v.closest, d);
+      close = close || d < minDistance;
+      const glm::dvec2 a(s.a), b(s.b);
+      crossed = crossed || (p != q && orient(q, p, a) != orient(q, p, b) &&
+                            orient(a, b, q) != orient(a, b, p));
+    }
+    v.crossings += crossed;
+    v.tooClose += close;
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("walls: the violation check counts what a brute-force pass over every segment does") {
+  crowd::Obstacles o = testWalls();
+  Rng rng(11);
+  // Long diagonals across the whole field and short ones anywhere, beside the test walls.
+  for (int k = 0; k < 40; ++k) {
+    const glm::vec2 a(rng.uniform(-50.0f, 50.0f), rng.uniform(-50.0f, 50.0f));
+    const glm::vec2 b = k % 2 ? -a + glm::vec2(rng.uniform(-5.0f, 5.0f), 3.0f)
+                              : a + glm::vec2(rng.uniform(-2.0f, 2.0f), rng.uniform(-2.0f, 2.0f));
+    o.segments.push_back({a, b});
+  }
+  const crowd::WallGrid g = crowd::binObstacles(o, 2.0f, 1.0f);
+  size_t crossings = 0, close = 0;
+  for (int batch = 0; batch < 20; ++batch) {
+    std::vector<glm::vec4> before, after;
+    // Every fourth batch stands far beyond the walls, where the nearest wall is metres away.
+    const bool far = batch % 4 == 3;
+    for (int i = 0; i < 500; ++i) {
+      glm::vec2 p(rng.uniform(-70.0f, 70.0f), rng.uniform(-70.0f, 70.0f));
+      if (far) p = glm::normalize(p) * rng.uniform(80.0f, 200.0f);
+      const glm::vec2 m = far ? glm::vec2(0.0f)
+                              : glm::vec2(rng.uniform(-1.5f, 1.5f), rng.uniform(-1.5f, 1.5f));
+      before.emplace_back(p.x, 0.0f, p.y, 0.0f);
+      after.emplace_back(p.x + m.x, 0.0f, p.y + m.y, 0.0f);
+    }
+    after.back() = before.back();  // one agent that did not move
+    const float minDistance = 0.1f * float(batch % 5);
+    const crowd::WallViolations v = crowd::countWallViolations(g, before, after, minDistance);
+    const crowd::WallViolations r = bruteForceViolations(o.segments, before, after, minDistance);
+    CAPTURE(batch);
+    CHECK(v.crossings == r.crossings);
+    CHECK(v.tooClose == r.tooClose);
+    CHECK(v.closest == r.closest);
+    crossings += v.crossings;
+    close += v.tooClose;
+  }
+  CHECK(crossings > 100);  // the sample does cross walls and come close to them
+  CHECK(close > 100);
+  // No walls: nothing to count.
+  const std::vector<glm::vec4> one{glm::vec4(0.0f)};
+  const crowd::WallViolations none = crowd::countWallViolations(crowd::WallGrid{}, one, one, 1.0f);
+  CHECK(none.crossings == 0);
+  CHECK(none.closest == crowd::kNoWallHit);
 }
 
 TEST_CASE("walls: a move through a thin wall or into a corner stops at the radius and slides") {
