@@ -82,7 +82,9 @@ void checkSameClip(const RawClip& a, const RawClip& b) {
 TEST_CASE("CMU captures: 31 joints, 7 End Sites, 96 channels, T-pose frame counted") {
   const std::vector<std::pair<std::string, int>> files = {
       {"cmu_09_01_run.bvh", 149}, {"cmu_35_17_runjog.bvh", 168}, {"cmu_12_01_walk.bvh", 524}};
-  for (const auto& [name, frames] : files) {
+  for (const auto& file : files) {
+    const std::string& name = file.first;  // a plain reference: CAPTURE keeps it in a lambda
+    const int frames = file.second;
     if (!throng::test::haveSharedData("bvh/cmu/" + name)) continue;
     CAPTURE(name);
     RawClip clip = loadBvh(throng::test::sharedDataDir() / "bvh/cmu" / name);
@@ -130,7 +132,9 @@ TEST_CASE("Bandai Namco captures: 22 joints, 132 channels, Z X Y order") {
   const std::vector<std::pair<std::string, int>> files = {{"dataset-1_run_normal_001.bvh", 24},
                                                           {"dataset-1_dash_normal_001.bvh", 20},
                                                           {"dataset-1_walk_normal_002.bvh", 31}};
-  for (const auto& [name, frames] : files) {
+  for (const auto& file : files) {
+    const std::string& name = file.first;  // a plain reference: CAPTURE keeps it in a lambda
+    const int frames = file.second;
     if (!throng::test::haveSharedData("bvh/bandai_namco/" + name)) continue;
     CAPTURE(name);
     RawClip clip = loadBvh(throng::test::sharedDataDir() / "bvh/bandai_namco" / name);
