@@ -261,8 +261,7 @@ RenderOptions defaultRenderOptions() {
 
 RenderRunTimes runRender(RenderOptions& o) {
   validateSceneOptions(o.scene);
-  const bool framesGiven = o.scene.command && (o.scene.command->count("--frames") > 0 ||
-                                               o.scene.command->count("--seconds") > 0);
+  const bool framesGiven = o.scene.given("--frames") || o.scene.given("--seconds");
   if (o.scene.sceneSeconds > 0.0f && !framesGiven) o.seconds = o.scene.sceneSeconds;
   if (o.seconds > 0.0f) o.frames = int(std::lround(o.seconds / o.scene.dt));
   if (o.frames < 1 || o.frames > 100000) fail("--frames: expected 1..100000, got ", o.frames);

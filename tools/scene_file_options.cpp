@@ -44,7 +44,7 @@ void applyGroups(SceneOptions& o, const scene::SceneFile& f) {
 void applySceneFile(SceneOptions& o) {
   if (o.sceneFile.empty()) return;
   for (const char* flag : kSceneFlags)
-    if (o.command && o.command->count(flag) > 0)
+    if (o.given(flag))
       fail(flag, ": the scene file ", o.sceneFile, " describes the scene; drop ", flag,
            " or edit the file");
   const scene::SceneFile f = scene::readSceneFile(o.sceneFile);
@@ -81,7 +81,7 @@ void applySceneFile(SceneOptions& o) {
   o.target = f.target ? vec3Text(*f.target) : "";
   o.fovY = f.fovYDegrees;
   o.cameraPath = f.cameraPath;
-  if (!(o.command && o.command->count("--size") > 0)) o.size = f.size;  // an output option
+  if (!o.given("--size")) o.size = f.size;  // an output option
   o.dt = 1.0f / f.fps;
   o.sceneSeconds = f.seconds;
 }

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <CLI/CLI.hpp>
+
 #include "cli_errors.h"
 #include "core/error.h"
 #include "crowd/trajectory_writer.h"
@@ -44,29 +46,26 @@ void addStoryboardSceneOptions(CLI::App& command, StoryboardSceneOptions& o) {
       "--step-time", o.stepTime,
       "Storyboard: seconds per annotation step of the trajectories (default: by dataset)");
 }
-bool given(const SceneOptions& o, const char* name) {
-  return o.command && o.command->count(name) > 0;
-}
 
 // An option that changes nothing in the chosen scene is an error, not silently ignored.
 void checkUsedOptions(const SceneOptions& o) {
   const std::string& scene = o.scenario.name;
   const bool steered = o.storyboard() || steersCircle(o) || o.mengeScene() || o.corridor();
   for (const char* name : {"--policy", "--radius"})
-    if (given(o, name) && !steered)
+    if (o.given(name) && !steered)
       fail(name, ": steers the storyboard and circle scenes (without --speed-period), not '", scene,
            "'");
-  if (o.storyboard() && given(o, "--characters"))
+  if (o.storyboard() && o.given("--characters"))
     fail("-n/--characters: the storyboard's glyphs make the crowd; drop -n with --storyboard");
-  if (o.mengeScene() && given(o, "--characters"))
+  if (o.mengeScene() && o.given("--characters"))
     fail("-n/--characters: the Menge scenario's generators make the crowd; drop -n with --menge");
-  if (o.mengeScene() && given(o, "--radius"))
+  if (o.mengeScene() && o.given("--radius"))
     fail("--radius: a Menge scenario gives each agent profile its radius");
   if (!o.mengeScene() && !o.menge.empty()) fail("--menge makes the menge scene, not '", scene, "'");
   if (o.mengeScene() && o.menge.empty()) fail("--scene menge needs --menge PROJECT.xml");
-  if (o.corridor() && given(o, "--characters"))
+  if (o.corridor() && o.given("--characters"))
     fail("-n/--characters: the corridor's storyboard makes the crowd; use --corridor-length");
-  if (!o.corridor() && given(o, "--corridor-length"))
+  if (!o.corridor() && o.given("--corridor-length"))
     fail("--corridor-length: belongs to the corridor scene, not '", scene, "'");
   if (!o.walls.empty() && !steered)
     fail("--walls: walls need a steered scene (circle, storyboard, menge or corridor), not '",
@@ -76,14 +75,14 @@ void checkUsedOptions(const SceneOptions& o) {
   if (o.mengeScene() && o.speedPeriod != 0.0f)
     fail("--speed-period: Menge agents walk at their profiles' preferred speeds");
   for (const char* name : {"--cell", "--jitter", "--step-time", "--legend"})
-    if (given(o, name) && !o.storyboard())
+    if (o.given(name) && !o.storyboard())
       fail(name, ": belongs to the storyboard scene (--storyboard FILE), not '", scene, "'");
-  if (given(o, "--density") && scene != "random")
+  if (o.given("--density") && scene != "random")
     fail("--density: spaces the random scene, not '", scene, "'");
   for (const char* name : {"--cache-budget", "--bucket-width"})
-    if (given(o, name) && !o.cache) fail(name, ": needs the motion cache (drop --no-cache)");
+    if (o.given(name) && !o.cache) fail(name, ": needs the motion cache (drop --no-cache)");
   for (const char* name : {"--lod-mid-pixels", "--lod-near-pixels"})
-    if (given(o, name) && !o.lod) fail(name, ": needs the coverage LOD (drop --no-lod)");
+    if (o.given(name) && !o.lod) fail(name, ": needs the coverage LOD (drop --no-lod)");
 }
 }  // namespace
 
@@ -350,6 +349,10 @@ secondary::ClothLayerOptions sceneClothOptions(const SceneOptions& o) {
   options.lod.enabled = !o.clothFull;
   options.tintLevels = o.clothTint;
   return options;
+}
+
+bool SceneOptions::given(const char* flag) const {
+  return command && command->count(flag) > 0;
 }
 
 }  // namespace throng::tools

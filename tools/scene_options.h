@@ -5,8 +5,6 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "anim/default_clips.h"
 #include "crowd/scenario.h"
 #include "gpu/context.h"
@@ -15,6 +13,11 @@
 #include "scene/scene_builders.h"
 #include "secondary/cloth_gpu_layer.h"
 #include "synth/crowd_synth.h"
+
+// CLI11 takes seconds to parse: the files that only pass a command along see its name.
+namespace CLI {
+class App;
+}
 
 namespace throng::tools {
 
@@ -69,6 +72,7 @@ struct SceneOptions {
   // The command the options were parsed by (null when built in code): which options were given,
   // so that one that does nothing in the chosen scene is an error.
   const CLI::App* command = nullptr;
+  bool given(const char* flag) const;  // whether `command` was given `flag`
   bool storyboard() const { return scenario.name == "storyboard"; }
   bool mengeScene() const { return scenario.name == "menge"; }
   bool corridor() const { return scenario.name == "corridor"; }
