@@ -3,8 +3,8 @@
 # lavapipe with two threads, the Khronos validation layer and a random test order), then the CPU
 # suites again under AddressSanitizer + UndefinedBehaviorSanitizer, then every libFuzzer harness
 # for THRONG_FUZZ_SECONDS (default 20) seconds each: any finding fails the run. The sanitizer
-# suites and the harnesses share one clang tree (build-asan/), so the engine is compiled twice in
-# all, not three times.
+# suites and the harnesses share one clang tree (build-asan/): the engine is compiled once per
+# tree, two times in all.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
