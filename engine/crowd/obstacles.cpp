@@ -291,10 +291,6 @@ bool segmentsMeet(glm::vec2 p, glm::vec2 q, glm::vec2 a, glm::vec2 b) {
   return o1 != o2 && o3 != o4;
 }
 
-}  // namespace
-
-namespace {
-
 // The check's own binning of the segments (not the WallGrid's lists, which are part of what it
 // checks): square cells, each listing every segment that passes through it, so a box of cells
 // holds every segment that comes within the box.
