@@ -1,4 +1,5 @@
 #version 450
+#extension GL_EXT_scalar_block_layout : require
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -20,13 +21,19 @@ layout(std140, binding = kPoseBindingConstantOffsets) uniform ConstantOffsets { 
 // Read as 64-bit words too (two per vec4, see motion_texels.glsl).
 layout(std430, binding = kPoseBindingPlacement) readonly buffer Placement { u64vec2 placement[]; };
 layout(std430, binding = kPoseBindingMotion) readonly buffer Motion { u64vec2 motion[]; };
-// Written as 64-bit words (words64.glsl): six 64-bit components per joint instead of twelve floats.
-layout(std430, binding = kPoseBindingJoints) writeonly buffer Joints { u64vec2 jointWords[]; };
+// Written as 64-bit words (words64.glsl): six 64-bit components per joint instead of twelve
+// floats, in two stores rather than three. lavapipe runs each store as a loop over the lanes, so
+// a store of four words costs one loop where two stores of two cost two; the scalar layout lets
+// the four-word vector start 16 bytes into a joint's 48 (std430 would align it to 32). The
+// bytes are JointMatrix's, which every reader takes.
+struct JointWords {
+  u64vec4 rows01;  // row0, row1
+  u64vec2 row2;
+};
+layout(scalar, binding = kPoseBindingJoints) writeonly buffer Joints { JointWords jointWords[]; };
 void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
-  uint at = 3u * index;
-  jointWords[at] = toWords(row0);
-  jointWords[at + 1u] = toWords(row1);
-  jointWords[at + 2u] = toWords(row2);
+  jointWords[index].rows01 = u64vec4(toWords(row0), toWords(row1));
+  jointWords[index].row2 = toWords(row2);
 }
 // With the motion cache on, only the characters whose bucket is not resident are posed here,
 // listed by cache_classify.comp.
