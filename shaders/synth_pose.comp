@@ -23,9 +23,9 @@ layout(std430, binding = kPoseBindingPlacement) readonly buffer Placement { u64v
 layout(std430, binding = kPoseBindingMotion) readonly buffer Motion { u64vec2 motion[]; };
 // Written as 64-bit words (words64.glsl): six 64-bit components per joint instead of twelve
 // floats, in two stores rather than three. lavapipe runs each store as a loop over the lanes, so
-// a store of four words costs one loop where two stores of two cost two; the scalar layout lets
-// the four-word vector start 16 bytes into a joint's 48 (std430 would align it to 32). The
-// bytes are JointMatrix's, which every reader takes.
+// a store of four words costs one loop where two stores of two cost two. Joints are 48 bytes
+// apart, so every other one starts 16 bytes past a 32-byte boundary: the scalar layout allows a
+// four-word vector there, std430 would not. The bytes are JointMatrix's, which every reader takes.
 struct JointWords {
   u64vec4 rows01;  // row0, row1
   u64vec2 row2;

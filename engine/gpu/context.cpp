@@ -300,8 +300,9 @@ void Context::choosePhysicalDevice(const ContextOptions& options) {
   VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
   vkGetPhysicalDeviceFeatures2(physical_, &supported);
   info_.int64Atomics = supported.features.shaderInt64 && supported12.shaderBufferInt64Atomics;
-  // The pose pass stores a joint's six 64-bit words as a four-word and a two-word vector at
-  // 16-byte offsets (shaders/synth_pose.comp), which only the scalar block layout allows.
+  // The pose pass stores a joint's six 64-bit words as a four-word and a two-word vector; joints
+  // are 48 bytes apart, so the four-word vector is not always 32-byte aligned, which only the
+  // scalar block layout allows (shaders/synth_pose.comp).
   if (!supported12.scalarBlockLayout)
     fail(info_.name, ": the pose pass needs the scalarBlockLayout feature (Vulkan 1.2)");
 
