@@ -18,24 +18,22 @@ bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
 // entries below `limit`, where the far bodies' begin: spriteEntryLimit). The caller gives every
 // entry reserved below the limit its value, kSplatNoEntry when the entries are not kept (in the
 // loop that writes them: a loop of its own here would run its body for every caller, its lanes
-// masked off). A lane's sprite and entries travel as one word, so one sum and one scan over the
-// subgroup serve both (lavapipe runs each as a loop over the lanes): the entries in the low
-// kReserveSpriteShift bits (a subgroup of up to 128 lanes, each with a box of at most
-// kSplatMaxSpritePixels² pixels, stays below 2^24), the sprites above.
-const uint kReserveSpriteShift = 24u;
-const uint kReservePixelMask = (1u << kReserveSpriteShift) - 1u;
+// masked off). A lane's sprite and entries travel as one word (render_bindings.h,
+// kSplatReserveSpriteShift), so one sum and one scan over the subgroup serve both: lavapipe runs
+// each as a loop over the lanes.
+const uint kReservePixelMask = (1u << kSplatReserveSpriteShift) - 1u;
 
 uint reserveEntries(uint spriteCount, uint pixelCount, uint limit, out uint sprite, out bool fits) {
   uint spriteBase = 0u, firstBase = 0u;
-  uint word = (spriteCount << kReserveSpriteShift) | pixelCount;
+  uint word = (spriteCount << kSplatReserveSpriteShift) | pixelCount;
   uint total = subgroupAdd(word);
   if (subgroupElect()) {
-    uint spriteTotal = total >> kReserveSpriteShift;
+    uint spriteTotal = total >> kSplatReserveSpriteShift;
     spriteBase = spriteTotal > 0u ? atomicAdd(counters.sprites, spriteTotal) : 0u;
     firstBase = atomicAdd(counters.pixels, total & kReservePixelMask);
   }
   uint before = subgroupExclusiveAdd(word);
-  sprite = subgroupBroadcastFirst(spriteBase) + (before >> kReserveSpriteShift);
+  sprite = subgroupBroadcastFirst(spriteBase) + (before >> kSplatReserveSpriteShift);
   uint first = subgroupBroadcastFirst(firstBase) + (before & kReservePixelMask);
   fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= limit - min(pixelCount, limit);
   return first;

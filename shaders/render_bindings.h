@@ -49,6 +49,10 @@ const uint kSplatEntryBytes = 8u;            // a pixel entry: 64 bits
 // writing it back. An entry reserved past a capacity has kSplatNoSprite for its sprite.
 const uint kSplatNoSprite = 0xFFFFFFFFu;     // an entry's sprite bits: no entry
 const uint kSplatMaxSpritePixels = 64u;      // the largest maxPixels a splat accepts
+// The walk reserves a joint's sprite and its pixel entries as one word (joint_splat_reserve.glsl):
+// the entries in the low kSplatReserveSpriteShift bits, the sprite above. A subgroup (at most
+// 128 lanes) of boxes of at most kSplatMaxSpritePixels² pixels stays below that (joint_splat.cpp).
+const uint kSplatReserveSpriteShift = 24u;
 const uint kSplatPixelGroups = 1024u;        // workgroups of the pixel pass (grid-stride)
 const uint kSplatWalkGroupSize = 64u;        // joint_splat_walk.comp's workgroup
 const uint kSplatBodyGroupSize = 64u;        // joint_splat.comp's and joint_splat_list.comp's

@@ -19,6 +19,10 @@ namespace throng::render {
 
 using gpu_types::SplatPush;
 static_assert(sizeof(SplatPush) == 40, "SplatPush must match the GLSL push block");
+// A subgroup's summed pixel entries stay below the reservation word's sprite bits.
+static_assert(128ull * gpu_types::kSplatMaxSpritePixels * gpu_types::kSplatMaxSpritePixels <
+                  (1ull << gpu_types::kSplatReserveSpriteShift),
+              "the splat's reservation word needs more entry bits");
 static_assert(gpu_types::kSplatListRun <= 32,
               "joint_splat_list.comp keeps a run's flags in 32 bits");
 
