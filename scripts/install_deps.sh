@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libvulkan-dev libvulkan-volk-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   glslang-tools glslang-dev spirv-tools
-  libglm-dev libglfw3-dev libeigen3-dev libcli11-dev libstb-dev libdeflate-dev nlohmann-json3-dev
+  libglm-dev libglfw3-dev libeigen3-dev libcli11-dev libstb-dev libisal-dev nlohmann-json3-dev
   libimgui-dev doctest-dev
   libopenmpi-dev openmpi-bin
   xvfb xauth gnuplot-nox

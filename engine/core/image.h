@@ -1,5 +1,5 @@
 #pragma once
-// 8-bit RGBA images in memory, PNG read (stb) and write (libdeflate), and the comparison used
+// 8-bit RGBA images in memory, PNG read (stb) and write (ISA-L's igzip), and the comparison used
 // by golden tests.
 #include <cstdint>
 #include <filesystem>
@@ -35,7 +35,7 @@ void checkImageSize(const std::filesystem::path& path, long long width, long lon
 // Throws Error naming the file when it is missing, not a PNG or larger than the limits above.
 ImageRgba8 readPng(const std::filesystem::path& path);
 // A PNG file's bytes: 8-bit RGB when every pixel is opaque, RGBA otherwise. Fast rather than
-// small (deflate level 1, one row filter).
+// small (igzip level 1, one row filter).
 std::vector<uint8_t> encodePng(const ImageRgba8& image);
 // Written to a temporary name and renamed when complete.
 void writePngAtomic(const std::filesystem::path& path, const ImageRgba8& image);

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
-#include <libdeflate.h>
+#include <isa-l/crc.h>
+#include <isa-l/igzip_lib.h>
 
 #include "core/error.h"
 #include "core/file_io.h"
@@ -25,7 +26,7 @@ void putBigEndian32(uint8_t* at, uint32_t v) {
 size_t finishChunk(uint8_t* file, size_t at, const char* type, size_t size) {
   putBigEndian32(file + at, uint32_t(size));
   std::memcpy(file + at + 4, type, 4);
-  const uint32_t crc = uint32_t(libdeflate_crc32(0, file + at + 4, size + 4));
+  const uint32_t crc = crc32_gzip_refl(0, file + at + 4, size + 4);  // PNG's CRC is gzip's
   putBigEndian32(file + at + kChunkHeader + size, crc);
   return at + kChunkHeader + size + kChunkCrc;
 }
@@ -52,32 +53,31 @@ void filterRows(const ImageRgba8& image, bool opaque, std::vector<uint8_t>& rows
 }
 }  // namespace
 
-void PngEncoder::FreeCompressor::operator()(libdeflate_compressor* compressor) const {
-  libdeflate_free_compressor(compressor);
-}
-
 PngEncoder::PngEncoder() = default;
 PngEncoder::~PngEncoder() = default;
 PngEncoder::PngEncoder(PngEncoder&&) noexcept = default;
 PngEncoder& PngEncoder::operator=(PngEncoder&&) noexcept = default;
 
-// libdeflate at level 1 with no row filter: a 1280×720 frame in ≈ 10–15 ms on one core of the
-// project's VM, where stb's writer (its own deflate) took 120 ms even at its fastest settings.
-// `throng render` encodes a frame while the next is rendered on the same cores, so the
-// encoder's time is taken from lavapipe's. Files come out smaller than stb's RGBA ones (a default
-// frame: 0.70 MB against 1.2 MB).
+// igzip (ISA-L) at level 1 with no row filter: a default 1280×720 frame in ≈ 4 ms on one core of
+// the project's VM, where libdeflate at level 1 took 10.5 ms for a file 5% smaller and stb's
+// writer 120 ms. `throng render` encodes a frame while the next is rendered on the same cores, so
+// the encoder's time is taken from lavapipe's (docs/performance.md, "Encoding").
 std::span<const uint8_t> PngEncoder::encode(const ImageRgba8& image) {
-  if (image.width <= 0 || image.height <= 0 ||
+  // The pixel bound keeps igzip's 32-bit sizes (4 bytes and a filter byte per pixel) in range.
+  if (image.width <= 0 || image.height <= 0 || image.width > kMaxImageSide ||
+      image.height > kMaxImageSide ||
+      size_t(image.width) * size_t(image.height) > kMaxImagePixels ||
       image.pixels.size() != size_t(image.width) * size_t(image.height))
     fail("PNG encoding: image of ", image.width, "x", image.height, " with ", image.pixels.size(),
          " pixels");
   const bool opaque = std::all_of(image.pixels.begin(), image.pixels.end(),
                                   [](const Rgba8& p) { return p.a == 255; });
-  if (!compressor_) compressor_.reset(libdeflate_alloc_compressor(1));  // once, here: may throw
-  if (!compressor_) fail("PNG encoding: out of memory for the compressor");
+  levelBuffer_.resize(ISAL_DEF_LVL1_DEFAULT);
   filterRows(image, opaque, rows_);
   const size_t rowBytes = rows_.size() - 1;  // without the spare byte
-  const size_t bound = libdeflate_zlib_compress_bound(compressor_.get(), rowBytes);
+  // igzip's stateless mode needs room for its worst case, stored blocks: 5 bytes of header per
+  // 64 KiB block and the zlib header and trailer (6 bytes), with margin.
+  const size_t bound = rowBytes + 5 * (rowBytes / 65535 + 1) + 64;
   file_.resize(kIdatDataAt + bound + kChunkCrc + kChunkHeader + kChunkCrc);
   uint8_t* file = file_.data();
   std::memcpy(file, kSignature, sizeof(kSignature));
@@ -88,10 +88,21 @@ std::span<const uint8_t> PngEncoder::encode(const ImageRgba8& image) {
   header[9] = opaque ? 2 : 6;                // RGB or RGBA
   header[10] = header[11] = header[12] = 0;  // compression, filter and interlace methods 0
   finishChunk(file, sizeof(kSignature), "IHDR", kHeaderData);
-  const size_t idatSize = libdeflate_zlib_compress(compressor_.get(), rows_.data(), rowBytes,
-                                                   file + kIdatDataAt, bound);
-  if (idatSize == 0) fail("PNG encoding: compression failed");
-  const size_t endAt = finishChunk(file, kIdatHeaderAt, "IDAT", idatSize);
+  isal_zstream stream;
+  isal_deflate_stateless_init(&stream);
+  stream.level = 1;
+  stream.level_buf = levelBuffer_.data();
+  stream.level_buf_size = uint32_t(levelBuffer_.size());
+  stream.gzip_flag = IGZIP_ZLIB;  // PNG's IDAT holds a zlib stream
+  stream.end_of_stream = 1;
+  stream.flush = NO_FLUSH;
+  stream.next_in = rows_.data();
+  stream.avail_in = uint32_t(rowBytes);
+  stream.next_out = file + kIdatDataAt;
+  stream.avail_out = uint32_t(bound);
+  const int result = isal_deflate_stateless(&stream);
+  if (result != COMP_OK) fail("PNG encoding: igzip compression failed (", result, ")");
+  const size_t endAt = finishChunk(file, kIdatHeaderAt, "IDAT", stream.total_out);
   const size_t size = finishChunk(file, endAt, "IEND", 0);
   return {file, size};
 }
