@@ -100,9 +100,9 @@ void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scen
     std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
                 t.synthesisMs, t.renderMs, context.info().name.c_str());
   std::printf(
-      "wall time per frame (mean): %.2f ms; encoding %.2f ms per frame on %d worker%s, %.2f ms "
-      "per frame waiting for them\n",
-      t.wallMs, t.encodeMs, t.encodeWorkers, t.encodeWorkers == 1 ? "" : "s",
+      "wall time per frame: mean %.2f ms, median %.2f ms; encoding %.2f ms per frame on %d "
+      "worker%s, %.2f ms per frame waiting for them\n",
+      t.wallMs, t.wallMedianMs, t.encodeMs, t.encodeWorkers, t.encodeWorkers == 1 ? "" : "s",
       encoded.waitedMs / o.frames);
 }
 
@@ -169,17 +169,32 @@ FrameOutputOptions frameOutputOptions(const RenderOptions& o, const RenderInputs
   return out;
 }
 
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// Each frame's GPU times and its turn of the frame loop (recording to trajectories written).
+struct FrameSeries {
+  std::vector<double> steerMs, synthMs, renderMs, turnMs;
+  void add(const scene::FrameTimings& t) {
+    steerMs.push_back(t.steerMs);
+    synthMs.push_back(t.synthesisMs);
+    renderMs.push_back(t.renderMs);
+  }
+};
+
 // What the run reports: medians of the GPU times, wall and encoding per frame.
-RenderRunTimes runTimes(uint32_t characters, const std::vector<double>& steerMs,
-                        const std::vector<double>& synthMs, const std::vector<double>& renderMs,
-                        double wallMs, const FrameOutputStats& encoded, int frames) {
+RenderRunTimes runTimes(uint32_t characters, const FrameSeries& series, double wallMs,
+                        const FrameOutputStats& encoded, int frames) {
   RenderRunTimes times;
   times.frames = frames;
   times.characters = characters;
-  times.steerMs = median(steerMs);
-  times.synthesisMs = median(synthMs);
-  times.renderMs = median(renderMs);
+  times.steerMs = median(series.steerMs);
+  times.synthesisMs = median(series.synthMs);
+  times.renderMs = median(series.renderMs);
   times.wallMs = wallMs;
+  times.wallMedianMs = median(series.turnMs);
   times.encodeMs = encoded.encodeMs / frames;
   times.encodeWorkers = encoded.workers;
   return times;
@@ -201,19 +216,18 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   std::vector<secondary::ClothTimings> clothTimes;
 
   FrameSubmitter gpu(context);
-  std::vector<double> steerMs, synthMs, renderMs;
+  FrameSeries series;
   FrameOutput output(frameOutputOptions(o, in));  // encodes on workers: off the frame's timing
   SceneTrajectories trajectories(o.scene, scene, uint64_t(o.frames));
   std::optional<Progress> progress;
   if (o.report) progress.emplace("render", o.frames);
   const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
+    const auto turnStart = std::chrono::steady_clock::now();
     settings.camera = render::cameraAt(o.scene.cameraPath, float(frame) * o.scene.dt, in.camera);
     const scene::FrameTimings timings =
         runOneFrame(gpu, scene, scene.advance(o.scene.dt), renderer, cloth.get(), settings, target);
-    steerMs.push_back(timings.steerMs);
-    synthMs.push_back(timings.synthesisMs);
-    renderMs.push_back(timings.renderMs);
+    series.add(timings);
     if (cloth) clothTimes.push_back(cloth->timings(0));
     ImageRgba8 image = output.spareImage();  // an encoded frame's buffer: no fresh allocation
     render::readbackInto(target, image);
@@ -223,6 +237,7 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
     if (scene.hasGoals() && (frame + 1) % std::max(1, int(std::lround(0.5f / o.scene.dt))) == 0)
       scene.updateGoals(context);
     trajectories.record(context, scene, double(frame) * o.scene.dt);
+    series.turnMs.push_back(millisecondsSince(turnStart));
     char detail[96];
     std::snprintf(detail, sizeof(detail), "synthesis %.2f ms, render %.2f ms",
                   timings.steerMs + timings.synthesisMs, timings.renderMs);
@@ -231,15 +246,11 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   output.finish();
   trajectories.finish();
   if (progress) progress->finish();
-  const double wallMs =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wallStart)
-          .count() /
-      o.frames;
+  const double wallMs = millisecondsSince(wallStart) / o.frames;
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
   const FrameOutputStats encoded = output.stats();
-  const RenderRunTimes times =
-      runTimes(scene.count(), steerMs, synthMs, renderMs, wallMs, encoded, o.frames);
+  const RenderRunTimes times = runTimes(scene.count(), series, wallMs, encoded, o.frames);
   if (!o.report) return times;
   printRenderTimes(o, in, scene, context, times, encoded);
   if (trajectories.enabled())

@@ -23,13 +23,16 @@ struct RenderOptions {
   bool report = true;     // false: no progress and no printed report (the bench prints its row)
 };
 
-// The run's medians of GPU time per frame, its wall time per frame (from the first frame's
-// recording to the last frame encoded) and the encoders' time.
+// The run's medians of GPU time per frame, its wall time per frame (the mean: from the first
+// frame's recording to the last frame encoded, setup and the encoders' drain included; the
+// median: one frame loop's turn, recording to the frame handed to the encoders) and the
+// encoders' time.
 struct RenderRunTimes {
   int frames = 0;
   uint32_t characters = 0;
   double steerMs = 0.0, synthesisMs = 0.0, renderMs = 0.0;
   double wallMs = 0.0;
+  double wallMedianMs = 0.0;
   double encodeMs = 0.0;  // per frame, summed over the workers
   int encodeWorkers = 0;
   double gpuMs() const { return steerMs + synthesisMs + renderMs; }

@@ -59,6 +59,7 @@ TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
     CHECK(row["frames"] == 5);
     CHECK(row["render_ms_median"].get<double>() > 0.0);
     CHECK(row["wall_ms_per_frame"].get<double>() > 0.0);
+    CHECK(row["wall_median_ms_per_frame"].get<double>() > 0.0);
     CHECK(row["encode_ms_per_frame"].get<double>() > 0.0);
   }
   CHECK(run.output.find("wall per frame") != std::string::npos);
