@@ -61,7 +61,7 @@ PngEncoder& PngEncoder::operator=(PngEncoder&&) noexcept = default;
 // igzip (ISA-L) at level 1 with no row filter: a default 1280×720 frame in ≈ 4 ms on one core of
 // the project's VM, where libdeflate at level 1 took 10.5 ms for a file 5% smaller and stb's
 // writer 120 ms. `throng render` encodes a frame while the next is rendered on the same cores, so
-// the encoder's time is taken from lavapipe's (docs/performance.md, "Encoding").
+// the encoder's time is taken from lavapipe's (docs/performance.md, "PNG writing with igzip").
 std::span<const uint8_t> PngEncoder::encode(const ImageRgba8& image) {
   // The pixel bound keeps igzip's 32-bit sizes (4 bytes and a filter byte per pixel) in range.
   if (image.width <= 0 || image.height <= 0 || image.width > kMaxImageSide ||
