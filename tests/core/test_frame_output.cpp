@@ -256,6 +256,22 @@ TEST_CASE("png: what encodePng writes reads back pixel for pixel (RGB and RGBA)"
     writePngAtomic(dir / "rgba.png", image);
     CHECK(readPng(dir / "rgba.png").pixels == image.pixels);
   }
+  SUBCASE("noise, which deflate cannot shrink: stored blocks fit the output") {
+    ImageRgba8 image;
+    image.width = 301;
+    image.height = 257;
+    image.pixels.resize(size_t(image.width) * size_t(image.height));
+    uint32_t state = 12345u;
+    for (Rgba8& p : image.pixels) {
+      state = state * 1664525u + 1013904223u;  // a linear congruential generator's top bytes
+      p = {uint8_t(state >> 24), uint8_t(state >> 16), uint8_t(state >> 8), uint8_t(state >> 28)};
+    }
+    const std::vector<uint8_t> bytes = encodePng(image);
+    CHECK(bytes[25] == 6);  // RGBA
+    checkChunkCrcs(bytes);
+    writePngAtomic(dir / "noise.png", image);
+    CHECK(readPng(dir / "noise.png").pixels == image.pixels);
+  }
   CHECK_THROWS_AS(encodePng(ImageRgba8()), Error);
 }
 
