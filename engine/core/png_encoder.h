@@ -13,11 +13,6 @@ namespace throng {
 
 class PngEncoder {
  public:
-  PngEncoder();
-  ~PngEncoder();
-  PngEncoder(PngEncoder&&) noexcept;
-  PngEncoder& operator=(PngEncoder&&) noexcept;
-
   // The image's PNG file: 8-bit RGB when every pixel is opaque, RGBA otherwise, igzip level 1
   // and no row filter (fast rather than small). The bytes stay valid until the next call.
   std::span<const uint8_t> encode(const ImageRgba8& image);
