@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 
+#include "core/binary_io.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/frame_output.h"
@@ -202,29 +203,21 @@ TEST_CASE("frame output: a failing encoder's error reaches the frame loop") {
 }
 
 namespace {
-// The standard CRC-32 bit by bit (PNG's chunk check), independent of the encoder's library:
-// stb's reader does not check chunk CRCs, other readers reject a file whose CRCs are wrong.
-uint32_t bitwiseCrc32(const uint8_t* data, size_t size) {
-  uint32_t crc = 0xffffffffu;
-  for (size_t i = 0; i < size; ++i) {
-    crc ^= data[i];
-    for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
 uint32_t bigEndian32(const uint8_t* at) {
   return uint32_t(at[0]) << 24 | uint32_t(at[1]) << 16 | uint32_t(at[2]) << 8 | uint32_t(at[3]);
 }
 
-// Every chunk after the signature has the CRC of its type and data, and IEND ends the file.
+// Every chunk after the signature has the CRC of its type and data (the project's own CRC-32,
+// not the encoder's library: stb's reader does not check chunk CRCs, other readers reject a file
+// whose CRCs are wrong), and IEND ends the file.
 void checkChunkCrcs(const std::vector<uint8_t>& png) {
   size_t at = 8;
   std::string last;
   while (at + 12 <= png.size()) {
     const size_t length = bigEndian32(&png[at]);
     REQUIRE(at + 12 + length <= png.size());
-    CHECK(bigEndian32(&png[at + 8 + length]) == bitwiseCrc32(&png[at + 4], length + 4));
+    CHECK(bigEndian32(&png[at + 8 + length]) ==
+          crc32Ieee(std::span<const uint8_t>(&png[at + 4], length + 4)));
     last.assign(png.begin() + long(at) + 4, png.begin() + long(at) + 8);
     at += 12 + length;
   }
