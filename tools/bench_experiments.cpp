@@ -7,6 +7,7 @@
 #include <fstream>
 #include <thread>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/log.h"
@@ -104,9 +105,7 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
       auto start = std::chrono::steady_clock::now();
       synth::stepCrowdCpu(pair, crowd, 1.0f / 30.0f, threads);
       synth::poseCrowdCpu(pair, crowd, cpuJoints, threads);
-      cpuMs.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count());
+      cpuMs.push_back(millisecondsSince(start));
     }
     const float extent = crowd::scenarioExtent(scenario);
     SynthesisTimer timer(context);

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/frame_output.h"
@@ -167,11 +168,6 @@ FrameOutputOptions frameOutputOptions(const RenderOptions& o, const RenderInputs
   out.height = int(in.size.height);
   out.fps = o.fps > 0.0f ? o.fps : 1.0f / o.scene.dt;
   return out;
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
 }
 
 // Each frame's GPU times and its turn of the frame loop (recording to trajectories written).

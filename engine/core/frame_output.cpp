@@ -4,16 +4,12 @@
 #include <chrono>
 #include <cstdio>
 
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/file_io.h"
 
 namespace throng {
 namespace {
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-      .count();
-}
-
 // Half the hardware threads (the other half renders: on a CPU device it is the device), 1 to 8.
 int workerCount(const FrameOutputOptions& options) {
   if (options.video) return 1;
