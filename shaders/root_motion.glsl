@@ -51,6 +51,14 @@ layout(std430, binding = kRootMotionBindingMasks) buffer Masks { u64vec2 maskWor
 layout(std140, binding = kRootMotionBindingCoverageView) uniform View { CoverageView camera; };
 #include "coverage_mask.glsl"
 #endif
+#ifdef THRONG_ROOT_MOTION_SCHEDULED
+// The update-rate LOD (update_rate.h): workgroup g moves the chunk of kUpdateChunkCharacters
+// (the local size) that list entry g names, by its elapsed steps, and raises the chunk's largest
+// projected height for the next schedule.
+#include "update_rate.h"
+layout(std430, binding = kRootMotionBindingChunkState) buffer ChunkState { uvec2 chunkState[]; };
+layout(std430, binding = kRootMotionBindingChunkList) readonly buffer ChunkList { uvec2 chunkList[]; };
+#endif
 layout(push_constant) uniform Push { RootMotionPush push; };
 
 // A character's clips: the dispatch's (push constants), or its group's in the group table.
@@ -104,8 +112,16 @@ vec3 rootAt(bool fast, uint frames, uint rootBase, vec3 cycleTravel, float u) {
 }
 
 void main() {
-  if (gl_GlobalInvocationID.x >= push.characterCount) return;
-  uint i = push.firstCharacter + gl_GlobalInvocationID.x;
+#ifdef THRONG_ROOT_MOTION_SCHEDULED
+  uvec2 entry = chunkList[gl_WorkGroupID.x];
+  uint local = entry.x * kUpdateChunkCharacters + gl_LocalInvocationID.x;
+  float dt = push.dt * float(entry.y);
+#else
+  uint local = gl_GlobalInvocationID.x;
+  float dt = push.dt;
+#endif
+  if (local >= push.characterCount) return;
+  uint i = push.firstCharacter + local;
   uint group;
   Clips clips = clipsOf(i, group);
   vec4 place = fromWords(placementWords[i]);
@@ -113,7 +129,7 @@ void main() {
   float w = speedWeight(m);
   float duration = clips.slowDuration * (1.0 - w) + clips.fastDuration * w;
   float phase0 = cyclePhase(m);
-  float phase1 = phase0 + push.dt / duration;
+  float phase1 = phase0 + dt / duration;
   float slowFrames = float(clips.slowFrames), fastFrames = float(clips.fastFrames);
   vec3 dSlow = rootAt(false, clips.slowFrames, clips.slowRootBase, clips.slowTravel, phase1 * slowFrames) -
                rootAt(false, clips.slowFrames, clips.slowRootBase, clips.slowTravel, phase0 * slowFrames);
@@ -136,6 +152,16 @@ void main() {
 #ifdef THRONG_ROOT_MOTION_GROUPS
   coverageGroup = group;
 #endif
+#ifdef THRONG_ROOT_MOTION_SCHEDULED
+  float h;
+  bool visible;
+  bodyOnScreenHeight(camera.view, camera.viewport, camera.frustum, place, m, h, visible);
+  maskWords[i] = nextMaskWords(unpackMask(maskWords[i]), m, h, visible, 0u);
+  // Heights are positive, so their bits order like the floats.
+  float chunkHeight = subgroupMax(h);
+  if (subgroupElect()) atomicMax(chunkState[entry.x].x, floatBitsToUint(chunkHeight));
+#else
   maskWords[i] = frameMaskWords(camera.view, camera.viewport, camera.frustum, place, m, maskWords[i]);
+#endif
 #endif
 }

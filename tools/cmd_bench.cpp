@@ -49,17 +49,20 @@ struct BenchOptions {
   // Which kinds of row run (kRowKinds); empty: all.
   std::vector<std::string> rows;
   std::vector<uint32_t> frameCounts{100000, 1000000};  // the whole-frame rows
+  float updateLag = 1.0f;  // pixels: the lod+cache+rate rows' update-rate LOD
   bool wants(const std::string& kind) const {
     return rows.empty() || std::find(rows.begin(), rows.end(), kind) != rows.end();
   }
 };
 
-// gpu: full GPU synthesis; lod; lod+cache; cpu: the CPU twin; clip-sets: four clip sets against
+// gpu: full GPU synthesis; lod; lod+cache; lod+cache+rate: with the update-rate LOD at
+// --update-lag; cpu: the CPU twin; clip-sets: four clip sets against
 // one; render: synthesis + render of --render-characters; frame: whole frames of
 // --frame-characters with LOD + cache: wide and street camera, and overhead on a tenth of the
 // crowd; render-loop: the default `throng render`, GPU and wall time per frame.
-const std::vector<std::string> kRowKinds{"gpu",       "lod",    "lod+cache", "cpu",
-                                         "clip-sets", "render", "frame",     "render-loop"};
+const std::vector<std::string> kRowKinds{"gpu",        "lod",       "lod+cache", "lod+cache+rate",
+                                         "cpu",        "clip-sets", "render",    "frame",
+                                         "render-loop"};
 
 struct Row {
   std::string variant;
@@ -80,15 +83,16 @@ crowd::Crowd benchCrowd(uint32_t n) {
   return crowd::makeScenario(options);
 }
 
-enum class Variant { Full, Lod, LodCache };
+enum class Variant { Full, Lod, LodCache, LodCacheRate };
 
 Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& programs,
                       const anim::MotionPair& pair, const anim::Skeleton& skeleton, uint32_t n,
                       const BenchOptions& o, Variant variant) {
   crowd::Crowd crowd = benchCrowd(n);
-  synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
+  synth::MotionCacheOptions cache{variant >= Variant::LodCache, 0.05f, 20ull << 20};
   if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
+  if (variant == Variant::LodCacheRate) lod.updateLagPixels = o.updateLag;
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
   // The default wide camera of `throng render` for this crowd, at 1280x720.
   crowd::ScenarioOptions scenario;
@@ -106,7 +110,8 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
     ms.push_back(frameMs);
     passes.push_back(timer.lastPasses());
   }
-  const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache"};
+  const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache",
+                         "gpu-synthesis-lod+cache+rate"};
   if (cache.enabled && synth::readCacheStats(synth).bytesUsed > cache.budgetBytes)
     fail("motion cache exceeded its budget");
   return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames, medianPasses(passes)};
@@ -319,7 +324,7 @@ constexpr long long kFrameCameras = std::size(kFrameCameraNames);
 long long benchStageCount(const BenchOptions& o, unsigned threads) {
   if (o.clothOnly) return o.cloth.empty() ? 0 : 1;
   const long long perCount = (o.wants("gpu") ? 1 : 0) + (o.wants("lod") ? 1 : 0) +
-                             (o.wants("lod+cache") ? 1 : 0) +
+                             (o.wants("lod+cache") ? 1 : 0) + (o.wants("lod+cache+rate") ? 1 : 0) +
                              (o.wants("cpu") ? (threads > 1 ? 2 : 1) : 0);
   return static_cast<long long>(o.counts.size()) * perCount + (o.wants("clip-sets") ? 1 : 0) +
          (o.wants("render") ? 2 : 0) +
@@ -330,8 +335,10 @@ long long benchStageCount(const BenchOptions& o, unsigned threads) {
 void runSynthesisRows(BenchSession& s) {
   const anim::Skeleton& skeleton = s.clips.slow.skeleton;
   for (uint32_t n : s.o.counts) {
-    const std::pair<const char*, Variant> gpuRows[] = {
-        {"gpu", Variant::Full}, {"lod", Variant::Lod}, {"lod+cache", Variant::LodCache}};
+    const std::pair<const char*, Variant> gpuRows[] = {{"gpu", Variant::Full},
+                                                       {"lod", Variant::Lod},
+                                                       {"lod+cache", Variant::LodCache},
+                                                       {"lod+cache+rate", Variant::LodCacheRate}};
     for (const auto& [kind, variant] : gpuRows) {
       if (!s.o.wants(kind)) continue;
       s.next(concat("GPU synthesis (", kind, "), ", n, " characters"));
@@ -506,9 +513,14 @@ void addBenchCommand(CLI::App& app) {
          "Crowd sizes of the whole-frame rows (LOD + cache; wide, street and overhead camera)")
       ->capture_default_str();
   cmd->add_option("--rows", options->rows,
-                  "Only these kinds of row: gpu, lod, lod+cache, cpu, clip-sets, render, frame, "
-                  "render-loop (default: all)")
+                  "Only these kinds of row: gpu, lod, lod+cache, lod+cache+rate, cpu, clip-sets, "
+                  "render, frame, render-loop (default: all)")
       ->check(CLI::IsMember(kRowKinds));
+  cmd->add_option("--update-lag", options->updateLag,
+                  "Pixels of the lod+cache+rate rows' update-rate LOD (far characters move every "
+                  "few frames, drawn at most this far from where they would be)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 100.0));
   cmd->add_option("--size", options->size, "Render size WxH")->capture_default_str();
   cmd->add_option("--device", options->device, "Vulkan device by index or name");
   cmd->add_option(

@@ -145,6 +145,14 @@ float projectedHeight(const CoveragePush& push, glm::vec3 middle, float height) 
   return middle.z > 0.5f * height ? push.viewport.z * height / middle.z : 1.0e9f;
 }
 
+float characterHeightPixels(const CoveragePush& push, const CoverageParts& parts,
+                            glm::vec4 placement, glm::vec4 motion) {
+  const float height = parts.body.x * gpu_types::characterScale(motion);
+  const glm::vec3 middle =
+      cameraSpace(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f));
+  return projectedHeight(push, middle, height);
+}
+
 namespace {
 
 // Mirrors levelForHeight and nextLevel in coverage_common.glsl.

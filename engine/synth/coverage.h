@@ -85,6 +85,9 @@ bool sphereInFrustum(const CoveragePush& push, glm::vec3 o, float radius);
 // f·H/z for a character H tall (metres) whose middle is at camera-space `middle`: see
 // coverage_common.glsl.
 float projectedHeight(const CoveragePush& push, glm::vec3 middle, float height);
+// A character's standing height on screen in pixels (bodyOnScreenHeight's h in coverage_mask.glsl).
+float characterHeightPixels(const CoveragePush& push, const CoverageParts& parts,
+                            glm::vec4 placement, glm::vec4 motion);
 
 // The CPU twin of coverage.comp for one character: `joints` are its J matrices (nullptr: the
 // centres are estimated from the placement); `previous` is last frame's mask, which says which

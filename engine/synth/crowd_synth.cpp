@@ -45,6 +45,17 @@ void writeCoverageParts(const CrowdSynth& synth, uint32_t k, const anim::Skeleto
   if (synth.shared.coverageParts) writeGroupCoverageParts(synth.shared, k, uniform);
 }
 
+void makeUpdateRate(const gpu::Context& context, CrowdSynth& synth, const LodOptions& lod) {
+  if (!synth.lod) fail("the update-rate LOD needs the coverage LOD on");
+  if (synth.sharedPasses())
+    fail("the update-rate LOD needs a crowd of one clip set, this one has ", synth.groups.size());
+  const SynthGroup& group = synth.groups.front();
+  const float height = static_cast<const CoverageParts*>(group.coverageParts.mapped())->body.x;
+  synth.updateRate = makeGpuUpdateRate(
+      context, synth.crowd.count, makeUpdateRateParams(*group.pair, height, lod.updateLagPixels));
+  synth.scheduledRootMotion = makeScheduledRootMotionProgram(context, *group.pair);
+}
+
 void makeSharedBuffers(const gpu::Context& context, CrowdSynth& synth, const LodOptions& lod) {
   std::vector<GroupDescription> groups;
   for (const SynthGroup& g : synth.groups)
@@ -153,6 +164,7 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context,
   }
   if (cache.enabled) allocateCacheLists(context, synth, crowd.size());
   if (synth.sharedPasses()) makeSharedBuffers(context, synth, lod);  // after the caches' dataBase
+  if (lod.updateLagPixels != 0.0f) makeUpdateRate(context, synth, lod);
   return synth;
 }
 
@@ -201,6 +213,14 @@ void recordCoverageView(VkCommandBuffer cmd, const CrowdSynth& synth,
   gpu::computeToComputeBarrier(cmd);
 }
 
+// The update-rate schedule of this step; recording it advances the schedule's clock.
+void recordUpdateSchedule(VkCommandBuffer cmd, const GpuUpdateRate& rate, float dt) {
+  UpdateScheduleJob{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs,
+                    rate.chunkCount,  rate.step++,     dt,
+                    rate.params}
+      .record(cmd, rate.schedule);
+}
+
 bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                       const CrowdSynth& synth, float dt, const anim::SpeedRetarget& retarget,
                       const CoverageCamera* lodCamera) {
@@ -228,6 +248,11 @@ bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
       job.coverageView = &synth.coverageView;
       job.coverageParts = &g.coverageParts;
       job.masks = &synth.masks;
+    }
+    if (coverage && synth.updateRate) {
+      recordUpdateSchedule(cmd, *synth.updateRate, dt);
+      job.updateRate = &*synth.updateRate;
+      job.scheduledProgram = &synth.scheduledRootMotion;
     }
     job.record(cmd, *programs[k]);
   }

@@ -2,6 +2,7 @@
 // The frame orchestrator for synthesis: owns the crowd's per-character state and joint-matrix
 // output for every character and, per group of characters (clip set), the GPU copies of its
 // motion pair and its cache; records the passes in order, each over every group's range.
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
 #include "synth/synth_jobs.h"
+#include "synth/update_rate.h"
 
 namespace throng::synth {
 
@@ -22,6 +24,10 @@ struct LodOptions {
   bool enabled = false;
   CoverageThresholds thresholds;
   const anim::Skeleton* skeleton = nullptr;  // joint names find the body parts
+  // Update-rate LOD (update_rate.h): > 0, far characters move every few steps, drawn at most
+  // this many pixels from where moving them every step would draw them. Needs LOD and a crowd
+  // of one clip set; applies to the frames whose root motion does the coverage (no walls).
+  float updateLagPixels = 0.0f;
 };
 
 // One clip set of a crowd: the characters [first, first + count) of the crowd's buffers,
@@ -54,7 +60,10 @@ struct CrowdSynth {
   // does the coverage too (written at the start of the frame's root motion).
   bool lod = false;
   gpu::Buffer masks;
-  gpu::Buffer coverageView;        // uniform CoverageView
+  gpu::Buffer coverageView;  // uniform CoverageView
+  // With the update-rate LOD: the chunks' schedule and the root motion it dispatches.
+  std::optional<GpuUpdateRate> updateRate;
+  gpu::ComputeProgram scheduledRootMotion;
   std::vector<SynthGroup> groups;  // contiguous ranges, in order, covering every character
   // With several groups: root motion and the cache classify run over all of them in one
   // dispatch each, from these shared buffers (group_passes.h).

@@ -102,6 +102,12 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
   noList = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
 }
 
+gpu::ComputeProgram makeScheduledRootMotionProgram(const gpu::Context& context,
+                                                   const anim::MotionPair& pair) {
+  return gpu::ComputeProgram(context, "root_motion_scheduled.comp",
+                             rootMotionSpecialization(pair, uniformTexelCapacity(context)));
+}
+
 bool SynthPrograms::fits(const gpu::Context& context, const anim::MotionPair& pair) const {
   return specialization == poseSpecialization(pair, uniformTexelCapacity(context));
 }
@@ -236,6 +242,13 @@ std::vector<std::string> RootMotionJob::validate() const {
       masks->size() < VkDeviceSize(crowd->count) * sizeof(CoverageMask))
     problems.push_back(concat("buffer 'masks' holds ", masks->size(), " bytes, ",
                               VkDeviceSize(crowd->count) * sizeof(CoverageMask), " needed"));
+  if (updateRate && !coverage)
+    problems.push_back("the update-rate schedule needs the coverage (its heights)");
+  if (updateRate && !scheduledProgram) problems.push_back("input 'scheduledProgram' is missing");
+  if (updateRate && crowd &&
+      updateRate->chunkCount <
+          updateChunkCount(characterCount ? characterCount : crowd->count - firstCharacter))
+    problems.push_back(concat("the schedule has ", updateRate->chunkCount, " chunks, too few"));
   return problems;
 }
 
@@ -275,7 +288,18 @@ void RootMotionJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) c
       gpu::storageBinding(gpu_types::kRootMotionBindingMasks, *masks);
   withCoverage[std::size(bindings) + 2] = gpu::uniformBinding(
       gpu_types::kRootMotionBindingCoverageView, *coverageView, 0, sizeof(CoverageView));
-  gpu::dispatch(cmd, programs.rootMotionCoverage, withCoverage, push, push.characterCount);
+  if (!updateRate) {
+    gpu::dispatch(cmd, programs.rootMotionCoverage, withCoverage, push, push.characterCount);
+    return;
+  }
+  gpu::Binding scheduled[std::size(withCoverage) + 2];
+  std::copy(std::begin(withCoverage), std::end(withCoverage), scheduled);
+  scheduled[std::size(withCoverage)] =
+      gpu::storageBinding(gpu_types::kRootMotionBindingChunkState, updateRate->chunkState);
+  scheduled[std::size(withCoverage) + 1] =
+      gpu::storageBinding(gpu_types::kRootMotionBindingChunkList, updateRate->chunkList);
+  gpu::dispatchIndirect(cmd, *scheduledProgram, scheduled, &push, sizeof(push),
+                        updateRate->dispatchArgs, 0);
 }
 
 std::vector<std::string> PoseJob::validate() const {

@@ -11,6 +11,7 @@
 #include "synth/coverage.h"
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
+#include "synth/update_rate.h"
 
 namespace throng::synth {
 
@@ -64,11 +65,21 @@ struct RootMotionJob {
   const gpu::Buffer* coverageView = nullptr;   // input: uniform CoverageView
   const gpu::Buffer* coverageParts = nullptr;  // input: uniform CoverageParts
   const gpu::Buffer* masks = nullptr;          // input/output: CoverageMask per character
+  // Optional, with the coverage: the update-rate LOD (update_rate.h). Only the chunks that
+  // UpdateScheduleJob listed this step move, each by its elapsed steps, dispatched by the
+  // schedule's count with `scheduledProgram` (makeScheduledRootMotionProgram); chunks count from
+  // firstCharacter. Twin: synth::stepScheduledCpu.
+  const GpuUpdateRate* updateRate = nullptr;
+  const gpu::ComputeProgram* scheduledProgram = nullptr;
 
   std::vector<std::string> validate() const;
   // Records root_motion_prep.comp first (and a barrier) when the step steers or retargets.
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
+
+// root_motion_scheduled.comp specialized for `pair` like SynthPrograms' root motion.
+gpu::ComputeProgram makeScheduledRootMotionProgram(const gpu::Context& context,
+                                                   const anim::MotionPair& pair);
 
 // root_motion_prep.comp over characters [first, first + count) when the step steers or draws
 // new target speeds; false (nothing recorded) otherwise. The caller orders root motion after it.

@@ -1,0 +1,56 @@
+// The update-rate LOD, shared by C++ and GLSL like shared_types.h (C++ includes it through
+// synth/update_rate.h, which checks the sizes): a chunk of
+// kUpdateChunkCharacters consecutive characters whose largest projected height is h pixels
+// moves every k-th step, k a power of two, the largest with (k − 1) · lagPerHeight · h ≤ maxLag:
+// between two of its updates a character is drawn where it was at the first, and no point of
+// its joints moves more than lagPerHeight · h pixels in a step (lagPerHeight = dt · the pair's
+// fastest joint point speed / standing height, update_rate.h in engine/synth). Chunks are
+// staggered (chunk c is due at steps where step + c is a multiple of k), so each step moves
+// about the same share of the crowd. Each update moves by every step since the chunk's last.
+#ifndef THRONG_UPDATE_RATE_H
+#define THRONG_UPDATE_RATE_H
+
+#include "shared_types.h"
+
+#ifdef __cplusplus
+namespace throng::gpu_types {
+#define THRONG_UPDATE_INLINE inline
+#else
+#define THRONG_UPDATE_INLINE
+#endif
+
+const uint kUpdateChunkCharacters = 64u;  // root motion's workgroup
+const uint kUpdateMaxInterval = 8u;
+
+// Push constants of update_schedule.comp.
+THRONG_STRUCT(UpdateSchedulePush) {
+  uint chunkCount;
+  uint step;            // this step's number (wraps; only differences are used)
+  float lagPerHeight;   // pixels a joint point moves per step per pixel of projected height
+  float maxLag;         // pixels
+  uint maxInterval;     // a power of two ≤ kUpdateMaxInterval
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+// The steps between a chunk's updates when its largest character is maxHeight pixels tall.
+THRONG_UPDATE_INLINE uint updateInterval(float maxHeight, float lagPerHeight, float maxLag,
+                                  uint maxInterval) {
+  uint k = 1u;
+  while (k < maxInterval && float(2u * k - 1u) * lagPerHeight * maxHeight <= maxLag) k = 2u * k;
+  return k;
+}
+
+// Whether chunk `chunk`, last moved at step `last`, moves at `step`: at its staggered slot, or
+// once its interval has passed (after the interval grew).
+THRONG_UPDATE_INLINE bool updateDue(uint step, uint last, uint chunk, uint interval) {
+  return step - last >= interval || ((step + chunk) & (interval - 1u)) == 0u;
+}
+
+#undef THRONG_UPDATE_INLINE
+
+#ifdef __cplusplus
+}  // namespace throng::gpu_types
+#endif
+#endif

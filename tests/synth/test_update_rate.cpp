@@ -1,0 +1,214 @@
+// The update-rate LOD (synth/update_rate.h): validity of the schedule job and of the options,
+// the interval and due rules, then the scheduled root motion with its coverage on the GPU
+// against its CPU twin step by step, under a camera that comes from far (characters a few
+// pixels tall, moved every few steps) to near (moved every step).
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "anim/default_clips.h"
+#include "anim/reference_synth.h"
+#include "core/error.h"
+#include "crowd/scenario.h"
+#include "gpu/commands.h"
+#include "gpu_fixture.h"
+#include "synth/crowd_synth.h"
+#include "synth/update_rate.h"
+#include "synth_fixtures.h"
+#include "test_support.h"
+
+using namespace throng;
+
+namespace {
+
+const anim::MotionPair& runPair() {
+  static const anim::MotionPair pair = [] {
+    const anim::ClipPair clips = anim::defaultRunPair();
+    return anim::makeMotionPair(clips.slow, clips.fast);
+  }();
+  return pair;
+}
+
+bool anyContains(const std::vector<std::string>& problems, const std::string& text) {
+  return std::any_of(problems.begin(), problems.end(),
+                     [&](const std::string& p) { return p.find(text) != std::string::npos; });
+}
+
+const anim::Skeleton& runSkeleton() {
+  static const anim::ClipPair clips = anim::defaultRunPair();
+  return clips.slow.skeleton;
+}
+
+}  // namespace
+
+TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong") {
+  gpu::Context& ctx = test::gpuContext();
+  synth::UpdateScheduleJob empty;
+  const std::vector<std::string> problems = empty.validate();
+  CHECK(anyContains(problems, "'chunkState' is missing"));
+  CHECK(anyContains(problems, "'chunkList' is missing"));
+  CHECK(anyContains(problems, "'dispatchArgs' is missing"));
+  CHECK(anyContains(problems, "chunkCount must be > 0"));
+  CHECK(anyContains(problems, "the lag must be > 0 pixels"));
+  CHECK_THROWS_WITH_AS(empty.record(VK_NULL_HANDLE, gpu::ComputeProgram()),
+                       doctest::Contains("UpdateScheduleJob is invalid"), Error);
+  const synth::UpdateRateParams params = synth::makeUpdateRateParams(runPair(), 1.5f, 2.0f);
+  synth::GpuUpdateRate rate = synth::makeGpuUpdateRate(ctx, 1000, params);
+  synth::UpdateScheduleJob job{
+      &rate.chunkState, &rate.chunkList, &rate.dispatchArgs, rate.chunkCount, 0, 1 / 30.0f, params};
+  CHECK(job.validate().empty());
+  job.chunkCount = rate.chunkCount + 1;
+  CHECK(anyContains(job.validate(), "buffer 'chunkState' holds 128 bytes, 136 needed"));
+  job.chunkCount = rate.chunkCount;
+  job.params.maxInterval = 3;
+  CHECK(anyContains(job.validate(), "maxInterval must be a power of two <= 8, got 3"));
+  job.params.maxInterval = 8;
+  job.dt = -1.0f;
+  CHECK(anyContains(job.validate(), "dt must be >= 0"));
+  CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(runPair(), 1.5f, -1.0f),
+                       doctest::Contains("the lag must be a number of pixels >= 0"), Error);
+  CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(runPair(), 0.0f, 1.0f),
+                       doctest::Contains("standing height must be > 0"), Error);
+  // The schedule needs the coverage LOD (its heights) and one clip set.
+  crowd::ScenarioOptions scenario;
+  scenario.characters = 300;
+  const crowd::Crowd crowd = crowd::makeScenario(scenario);
+  synth::LodOptions noLod{false, {}, &runSkeleton(), 2.0f};
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, runPair(), crowd, {}, noLod),
+                       doctest::Contains("needs the coverage LOD on"), Error);
+  const anim::MotionPair* pairs[] = {&runPair(), &runPair()};
+  const uint32_t first[] = {0, 100, 300};
+  synth::LodOptions lod{true, {}, &runSkeleton(), 2.0f};
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, pairs, first, crowd, {}, lod),
+                       doctest::Contains("needs a crowd of one clip set, this one has 2"), Error);
+  // Root motion with a schedule but no coverage has no heights to give it.
+  const synth::CrowdSynth synth = synth::makeCrowdSynth(ctx, runPair(), crowd, {}, lod);
+  synth::RootMotionJob root{&synth.front().motion, &runPair(), &synth.crowd, 0, 0, 1 / 30.0f};
+  root.updateRate = &*synth.updateRate;
+  root.scheduledProgram = &synth.scheduledRootMotion;
+  CHECK(anyContains(root.validate(), "the update-rate schedule needs the coverage"));
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("update-rate LOD: intervals follow the projected height, chunks are staggered") {
+  using gpu_types::updateDue;
+  using gpu_types::updateInterval;
+  // A joint point moves 0.25 px per step per pixel of height; at most 1 px of lag.
+  CHECK(updateInterval(0.5f, 0.25f, 1.0f, 8) == 8);  // 7 · 0.125 ≤ 1
+  CHECK(updateInterval(1.0f, 0.25f, 1.0f, 8) == 4);  // 3 · 0.25 ≤ 1 < 7 · 0.25
+  CHECK(updateInterval(3.0f, 0.25f, 1.0f, 8) == 2);
+  CHECK(updateInterval(5.0f, 0.25f, 1.0f, 8) == 1);  // a step alone lags 1.25 px
+  CHECK(updateInterval(0.5f, 0.25f, 1.0f, 2) == 2);  // the cap
+  CHECK(updateInterval(std::bit_cast<float>(synth::initialChunkState().x), 0.25f, 1.0f, 8) == 1);
+  // With an interval of 4, each chunk moves every 4th step, a quarter of them at each step.
+  synth::UpdateScheduleCpu schedule(64 * 64);
+  synth::UpdateRateParams params;
+  params.maxLagPixels = 1.0f;
+  params.speedPerHeight = 7.5f;  // 0.25 px per step of 1/30 s per pixel of height
+  std::vector<uint32_t> moves(64, 0);
+  for (int step = 0; step < 17; ++step) {
+    const std::vector<synth::ChunkMove> moved = schedule.schedule(params, 1 / 30.0f);
+    if (step == 0) CHECK(moved.size() == 64);  // every chunk moves first
+    if (step > 0) CHECK(moved.size() == 16);
+    for (const synth::ChunkMove& m : moved) {
+      ++moves[m.chunk];
+      if (step >= 4) CHECK(m.elapsed == 4);
+      schedule.raiseHeight(m.chunk, 1.0f);
+    }
+  }
+  CHECK(std::all_of(moves.begin(), moves.end(), [](uint32_t m) { return m >= 4 && m <= 5; }));
+  // An interval that grows waits for its slot or for the interval since the last move.
+  CHECK(!updateDue(10, 9, 1, 2));  // one step since, and 10 + 1 is odd: not its slot
+  CHECK(!updateDue(10, 9, 1, 4));  // one step since, not its slot
+  CHECK(updateDue(10, 6, 1, 4));   // four steps since
+  CHECK(updateDue(11, 10, 1, 4));  // its slot
+}
+
+TEST_CASE("update-rate LOD: a move by several steps lands where moving every step does") {
+  const anim::MotionPair& pair = runPair();
+  // Within a cycle the root integrates exactly: four steps of dt and one of 4 dt agree.
+  glm::vec4 placement(1.0f, 0.0f, 2.0f, 0.7f),
+      motion = gpu_types::makeMotion(0.1f, 0.4f, 0.4f, 1.1f);
+  glm::vec4 once = placement, onceMotion = motion;
+  const float dt = 1 / 30.0f;
+  for (int s = 0; s < 4; ++s)
+    anim::stepCharacter(pair, placement, motion, dt, anim::Steering::KeepHeading);
+  anim::stepCharacter(pair, once, onceMotion, 4 * dt, anim::Steering::KeepHeading);
+  CHECK(glm::length(glm::vec3(placement - once)) < 1e-5f);
+  CHECK(std::abs(motion.x - onceMotion.x) < 1e-5f);
+  // The fastest joint point of the run pair: its bone ends swing faster than the body runs.
+  const float fastest = synth::fastestJointSpeed(pair);
+  const float run = glm::length(pair.fast.cycleTravel) / pair.fast.duration();
+  MESSAGE("run pair: body ", run, " m/s, fastest joint point ", fastest, " m/s");
+  CHECK(fastest > run);
+  CHECK(fastest < 4.0f * run);
+}
+
+TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twin step by step") {
+  gpu::Context& ctx = test::gpuContext();
+  const anim::MotionPair& pair = runPair();
+  crowd::ScenarioOptions scenario;
+  scenario.characters = 2000;
+  crowd::Crowd cpu = crowd::makeScenario(scenario);
+  cpu.steering = anim::Steering::Circle;
+  const synth::LodOptions lod{true, {}, &runSkeleton(), 2.0f};
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, cpu, {}, lod);
+  synth::SynthPrograms programs(ctx, pair);
+  const synth::SynthPrograms* used[] = {&programs};
+  const synth::CoverageParts parts =
+      *static_cast<const synth::CoverageParts*>(gpuSynth.front().coverageParts.mapped());
+  std::vector<synth::CoverageMask> masks(cpu.size(), synth::CoverageMask{});
+  synth::UpdateScheduleCpu twin(uint32_t(cpu.size()));
+  const float dt = 1 / 30.0f;
+  size_t skippedSteps = 0, everyChunkSteps = 0;
+  float worstPlacement = 0.0f, worstMotion = 0.0f;
+  size_t maskMismatches = 0;
+  for (int step = 0; step < 24; ++step) {
+    // From 400 m away (characters ~3 px tall) to 20 m (every chunk moves every step).
+    const float distance = 400.0f * std::pow(0.88f, float(step));
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 0.3f * distance, -distance), glm::vec3(0.0f),
+                                       glm::vec3(0, 1, 0));
+    const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+    const anim::SpeedRetarget retarget =
+        step == 9 ? anim::SpeedRetarget{1, 7, 0.0f, 1.0f, 0.0f} : anim::SpeedRetarget{};
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      CHECK(synth::recordRootMotionPasses(cmd, used, gpuSynth, dt, retarget, &camera));
+    });
+    const uint32_t moved = gpu::readback<uint32_t>(ctx, gpuSynth.updateRate->dispatchArgs, 1)[0];
+    synth::stepScheduledCpu(pair, cpu, masks, camera, parts, dt, retarget,
+                            gpuSynth.updateRate->params, twin);
+    skippedSteps += moved < twin.state.size();
+    everyChunkSteps += moved == twin.state.size();
+    crowd::Crowd gpuCrowd;
+    crowd::downloadCrowd(ctx, gpuSynth.crowd, gpuCrowd);
+    worstPlacement = std::max(
+        worstPlacement,
+        test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpu.placement[0].x, cpu.size() * 4));
+    worstMotion = std::max(worstMotion, test::maxAbsDifference(&gpuCrowd.motion[0].x,
+                                                               &cpu.motion[0].x, cpu.size() * 4));
+    const auto gpuMasks = gpu::readback<synth::CoverageMask>(ctx, gpuSynth.masks, cpu.size());
+    for (size_t i = 0; i < cpu.size(); ++i)
+      maskMismatches += gpuMasks[i].lo != masks[i].lo || gpuMasks[i].hi != masks[i].hi ||
+                        gpuMasks[i].level != masks[i].level;
+    const auto chunks =
+        gpu::readback<glm::uvec2>(ctx, gpuSynth.updateRate->chunkState, twin.state.size());
+    for (size_t c = 0; c < chunks.size(); ++c) {
+      REQUIRE(chunks[c].y == twin.state[c].y);  // the same chunks moved at the same steps
+      const float a = std::bit_cast<float>(chunks[c].x), b = std::bit_cast<float>(twin.state[c].x);
+      REQUIRE(std::abs(a - b) <= 1e-4f * std::max(a, b));
+    }
+  }
+  MESSAGE("24 steps: ", skippedSteps, " with chunks left unmoved, ", everyChunkSteps,
+          " with every chunk moved; max |GPU - CPU| placement ", worstPlacement, ", motion ",
+          worstMotion, "; ", maskMismatches, " masks differ");
+  CHECK(skippedSteps >= 5);
+  CHECK(everyChunkSteps >= 4);
+  CHECK(worstPlacement <= 1e-4f);
+  CHECK(worstMotion <= 1e-4f);
+  CHECK(maskMismatches == 0);
+  CHECK(ctx.validationMessageCount() == 0);
+}
