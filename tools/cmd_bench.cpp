@@ -72,6 +72,7 @@ struct Row {
   int frames = 0;
   std::optional<SynthesisPassTimes> passes;  // GPU synthesis rows: median of each pass
   std::optional<RenderRunTimes> loop;        // the render-loop row: wall time and encoding
+  double movedShare = 0.0;  // the update-rate LOD's rows: median share of chunks moved per step
 };
 
 constexpr float kDt = 1.0f / 30.0f;
@@ -103,18 +104,29 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   SynthesisTimer timer(context);
   std::vector<double> ms;
   std::vector<SynthesisPassTimes> passes;
+  std::vector<double> moved;
   for (WarmUp warmUp(o.warmup, o.warmupSeconds); int(ms.size()) < o.frames;) {
     double frameMs =
         timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
     if (!warmUp.measured()) continue;
     ms.push_back(frameMs);
     passes.push_back(timer.lastPasses());
+    if (synth.updateRate)  // read after the frame's timestamps: not in its time
+      moved.push_back(double(synth::readMovedChunks(context, *synth.updateRate)) /
+                      synth.updateRate->chunkCount);
   }
   const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache",
                          "gpu-synthesis-lod+cache+rate"};
   if (cache.enabled && synth::readCacheStats(synth).bytesUsed > cache.budgetBytes)
     fail("motion cache exceeded its budget");
-  return {names[static_cast<int>(variant)], n, median(ms), 0.0, o.frames, medianPasses(passes)};
+  return {names[static_cast<int>(variant)],
+          n,
+          median(ms),
+          0.0,
+          o.frames,
+          medianPasses(passes),
+          std::nullopt,
+          moved.empty() ? 0.0 : median(moved)};
 }
 
 Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads,
@@ -303,6 +315,9 @@ struct BenchSession {
     if (r.passes)
       std::printf("  passes: root motion %.3f, coverage %.3f, cache %.3f, pose %.3f ms\n",
                   r.passes->rootMotion, r.passes->coverage, r.passes->cache, r.passes->pose);
+    if (r.movedShare > 0.0)
+      std::printf("  update-rate LOD at %.2f px: %.1f%% of the chunks moved per step (median)\n",
+                  o.updateLag, 100.0 * r.movedShare);
     if (r.renderMs > 0.0)
       std::printf("  whole frame (synthesis + render): %.2f ms\n", r.synthesisMs + r.renderMs);
     if (r.loop)
@@ -449,6 +464,10 @@ nlohmann::json benchJson(const BenchSession& s, const std::optional<ClothBenchRe
                                  {"coverage", r.passes->coverage},
                                  {"cache", r.passes->cache},
                                  {"pose", r.passes->pose}};
+    if (r.movedShare > 0.0) {
+      row["update_lag_px"] = s.o.updateLag;
+      row["moved_chunk_share_median"] = r.movedShare;
+    }
     doc["results"].push_back(row);
   }
   if (cloth)

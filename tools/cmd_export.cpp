@@ -48,9 +48,10 @@ std::vector<uint32_t> parseAgents(const std::string& text, size_t crowdSize) {
 
 // Options that change what is drawn, not what moves, do nothing here.
 void rejectRenderOnlyOptions(const CLI::App& command) {
-  for (const char* name : {"--camera", "--eye", "--target", "--fov", "--size", "--device", "--lod",
-                           "--lod-tint", "--lod-mid-pixels", "--lod-near-pixels", "--cloth",
-                           "--cloth-tint", "--cloth-full", "--cache-budget"}) {
+  for (const char* name :
+       {"--camera", "--eye", "--target", "--fov", "--size", "--device", "--lod", "--lod-tint",
+        "--lod-mid-pixels", "--lod-near-pixels", "--lod-update-lag", "--cloth", "--cloth-tint",
+        "--cloth-full", "--cache-budget"}) {
     bool known = false;
     for (const CLI::Option* option : command.get_options())
       for (const std::string& l : option->get_lnames()) known = known || "--" + l == name;

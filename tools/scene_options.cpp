@@ -173,6 +173,13 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
                   "gets every joint")
       ->capture_default_str()
       ->check(inRange(0, 1e9, "pixels"));
+  command
+      .add_option("--lod-update-lag", o.lodUpdateLag,
+                  "Update-rate LOD (with --lod, the random crowd): characters far from the "
+                  "camera move every 2 to 8 frames, no joint drawn more than this many pixels "
+                  "from where moving every frame would draw it (0: every frame)")
+      ->capture_default_str()
+      ->check(inRange(0, 1e9, "pixels"));
   addStoryboardSceneOptions(command, o.story);
   command.add_option("--trajectories-out", o.trajectoriesOut,
                      "Every agent's position per frame: FILE.txt in PedPy's 'id frame x y z' "
@@ -210,6 +217,14 @@ void validateSceneOptions(SceneOptions& o) {
   if (!(o.lodMidPixels >= 0.0f && o.lodNearPixels >= 0.0f))
     fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
   if (o.lodTint && !o.lod) fail("--lod-tint: needs the coverage LOD (drop --no-lod)");
+  if (o.lodUpdateLag > 0.0f && !o.lod) fail("--lod-update-lag: needs the coverage LOD (--lod)");
+  // Steered scenes steer every character from every other's place, trajectories record every
+  // frame's places: both need every character moved every frame.
+  if (o.lodUpdateLag > 0.0f &&
+      (o.scenario.name != "random" || o.groups.size() > 1 || !o.trajectoriesOut.empty()))
+    fail(
+        "--lod-update-lag: only for the random crowd of one clip set without "
+        "--trajectories-out (steered scenes and trajectories need every character every frame)");
   if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
   if ((o.clothTint || o.clothFull) && o.cloth.empty())
     fail("--cloth-tint and --cloth-full need --cloth");
@@ -304,7 +319,8 @@ synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& o) {
 }
 
 synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& skeleton) {
-  return {o.lod, synth::CoverageThresholds::levels(o.lodMidPixels, o.lodNearPixels), &skeleton};
+  return {o.lod, synth::CoverageThresholds::levels(o.lodMidPixels, o.lodNearPixels), &skeleton,
+          o.lodUpdateLag};
 }
 
 float sceneExtent(const SceneOptions& o) {

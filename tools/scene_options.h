@@ -51,6 +51,7 @@ struct SceneOptions {
   bool lodTint = false;      // colour characters by LOD level
   float lodMidPixels = synth::kDefaultMidPixels;    // torso sphere area for the mid level
   float lodNearPixels = synth::kDefaultNearPixels;  // limb sphere area for all joints
+  float lodUpdateLag = 0.0f;  // pixels: update-rate LOD (synth/update_rate.h); 0 = off
   std::string cloth;       // compressed cloth database (.tsc): every character wears its cape
   bool clothTint = false;  // colour capes by garment level
   bool clothFull = false;  // every visible cape at full detail (no garment LOD)

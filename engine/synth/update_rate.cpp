@@ -138,6 +138,10 @@ GpuUpdateRate makeGpuUpdateRate(const gpu::Context& context, uint32_t characters
   return rate;
 }
 
+uint32_t readMovedChunks(const gpu::Context& context, const GpuUpdateRate& rate) {
+  return gpu::readback<uint32_t>(context, rate.dispatchArgs, 1)[0];
+}
+
 std::vector<std::string> UpdateScheduleJob::validate() const {
   std::vector<std::string> problems;
   if (!chunkState || !*chunkState) problems.push_back("input/output 'chunkState' is missing");

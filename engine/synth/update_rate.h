@@ -86,6 +86,8 @@ struct GpuUpdateRate {
 };
 GpuUpdateRate makeGpuUpdateRate(const gpu::Context& context, uint32_t characters,
                                 const UpdateRateParams& params);
+// How many chunks the last step moved (a readback: call between frames).
+uint32_t readMovedChunks(const gpu::Context& context, const GpuUpdateRate& rate);
 
 // update_schedule.comp as a job; twin: UpdateScheduleCpu::schedule.
 struct UpdateScheduleJob {

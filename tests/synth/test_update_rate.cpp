@@ -178,7 +178,7 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       CHECK(synth::recordRootMotionPasses(cmd, used, gpuSynth, dt, retarget, &camera));
     });
-    const uint32_t moved = gpu::readback<uint32_t>(ctx, gpuSynth.updateRate->dispatchArgs, 1)[0];
+    const uint32_t moved = synth::readMovedChunks(ctx, *gpuSynth.updateRate);
     synth::stepScheduledCpu(pair, cpu, masks, camera, parts, dt, retarget,
                             gpuSynth.updateRate->params, twin);
     skippedSteps += moved < twin.state.size();
