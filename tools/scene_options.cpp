@@ -81,7 +81,7 @@ void checkUsedOptions(const SceneOptions& o) {
     fail("--density: spaces the random scene, not '", scene, "'");
   for (const char* name : {"--cache-budget", "--bucket-width"})
     if (o.given(name) && !o.cache) fail(name, ": needs the motion cache (drop --no-cache)");
-  for (const char* name : {"--lod-mid-pixels", "--lod-near-pixels"})
+  for (const char* name : {"--lod-mid-pixels", "--lod-near-pixels", "--lod-update-lag"})
     if (o.given(name) && !o.lod) fail(name, ": needs the coverage LOD (drop --no-lod)");
 }
 }  // namespace
@@ -175,7 +175,7 @@ void addSceneOptions(CLI::App& command, SceneOptions& o) {
       ->check(inRange(0, 1e9, "pixels"));
   command
       .add_option("--lod-update-lag", o.lodUpdateLag,
-                  "Update-rate LOD (with --lod, the random crowd): characters far from the "
+                  "Update-rate LOD (the random crowd): characters far from the "
                   "camera move every 2 to 8 frames, no joint drawn more than this many pixels "
                   "from where moving every frame would draw it (0: every frame)")
       ->capture_default_str()
@@ -217,7 +217,6 @@ void validateSceneOptions(SceneOptions& o) {
   if (!(o.lodMidPixels >= 0.0f && o.lodNearPixels >= 0.0f))
     fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
   if (o.lodTint && !o.lod) fail("--lod-tint: needs the coverage LOD (drop --no-lod)");
-  if (o.lodUpdateLag > 0.0f && !o.lod) fail("--lod-update-lag: needs the coverage LOD (--lod)");
   // Steered scenes steer every character from every other's place, trajectories record every
   // frame's places: both need every character moved every frame.
   if (o.lodUpdateLag > 0.0f &&
