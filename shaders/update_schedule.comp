@@ -21,7 +21,7 @@ void main() {
   if (chunk >= push.chunkCount) return;
   uvec2 state = chunkState[chunk];
   uint interval = updateInterval(uintBitsToFloat(state.x), push.lagPerHeight, push.maxLag, push.maxInterval);
-  bool due = updateDue(push.step, state.y, chunk, interval);
+  bool due = updateDue(push.step, state.y, chunk, interval, push.blockShift);
   uvec4 ballot = subgroupBallot(due);
   uint total = subgroupBallotBitCount(ballot);
   uint at = 0u;

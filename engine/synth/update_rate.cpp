@@ -71,6 +71,12 @@ uint32_t updateChunkCount(uint32_t characters) {
   return (characters + kUpdateChunkCharacters - 1) / kUpdateChunkCharacters;
 }
 
+uint32_t updateBlockShift(uint32_t chunkCount) {
+  uint32_t shift = 0;
+  while (shift < 8 && (chunkCount >> (shift + 1)) >= 32) ++shift;
+  return shift;
+}
+
 glm::uvec2 initialChunkState() {
   return {std::bit_cast<uint32_t>(std::numeric_limits<float>::infinity()), ~0u};
 }
@@ -80,11 +86,12 @@ UpdateScheduleCpu::UpdateScheduleCpu(uint32_t characters)
 
 std::vector<ChunkMove> UpdateScheduleCpu::schedule(const UpdateRateParams& params, float dt) {
   std::vector<ChunkMove> moves;
+  const uint32_t blockShift = updateBlockShift(uint32_t(state.size()));
   for (uint32_t c = 0; c < state.size(); ++c) {
     const uint32_t interval =
         gpu_types::updateInterval(std::bit_cast<float>(state[c].x), params.lagPerHeight(dt),
                                   params.maxLagPixels, params.maxInterval);
-    if (!gpu_types::updateDue(step, state[c].y, c, interval)) continue;
+    if (!gpu_types::updateDue(step, state[c].y, c, interval, blockShift)) continue;
     moves.push_back({c, step - state[c].y});
     state[c] = {0u, step};
   }
@@ -172,6 +179,7 @@ void UpdateScheduleJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& p
   push.lagPerHeight = params.lagPerHeight(dt);
   push.maxLag = params.maxLagPixels;
   push.maxInterval = params.maxInterval;
+  push.blockShift = updateBlockShift(chunkCount);
   const gpu::Binding bindings[] = {
       gpu::storageBinding(gpu_types::kUpdateScheduleBindingChunkState, *chunkState),
       gpu::storageBinding(gpu_types::kUpdateScheduleBindingChunkList, *chunkList),

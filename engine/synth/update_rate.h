@@ -45,6 +45,9 @@ UpdateRateParams makeUpdateRateParams(const anim::MotionPair& pair, float standi
                                       float maxLagPixels);
 
 uint32_t updateChunkCount(uint32_t characters);
+// The stagger's block size, 2^shift chunks: as large as leaves at least 32 blocks, at most 256
+// chunks (a small crowd is staggered chunk by chunk).
+uint32_t updateBlockShift(uint32_t chunkCount);
 // A chunk's state on both sides: its largest projected height's float bits since its last move
 // and that move's step. At first, an infinite height: every chunk moves at step 0.
 glm::uvec2 initialChunkState();

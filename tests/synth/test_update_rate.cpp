@@ -122,10 +122,20 @@ TEST_CASE("update-rate LOD: intervals follow the projected height, chunks are st
   }
   CHECK(std::all_of(moves.begin(), moves.end(), [](uint32_t m) { return m >= 4 && m <= 5; }));
   // An interval that grows waits for its slot or for the interval since the last move.
-  CHECK(!updateDue(10, 9, 1, 2));  // one step since, and 10 + 1 is odd: not its slot
-  CHECK(!updateDue(10, 9, 1, 4));  // one step since, not its slot
-  CHECK(updateDue(10, 6, 1, 4));   // four steps since
-  CHECK(updateDue(11, 10, 1, 4));  // its slot
+  CHECK(!updateDue(10, 9, 1, 2, 0));  // one step since, and 10 + 1 is odd: not its slot
+  CHECK(!updateDue(10, 9, 1, 4, 0));  // one step since, not its slot
+  CHECK(updateDue(10, 6, 1, 4, 0));   // four steps since
+  CHECK(updateDue(11, 10, 1, 4, 0));  // its slot
+  // Blocks of 4 chunks share a slot: chunks 4..7 are block 1.
+  CHECK(updateDue(11, 10, 5, 4, 2));
+  CHECK(updateDue(11, 10, 7, 4, 2));
+  CHECK(!updateDue(11, 10, 3, 4, 2));
+  // At least 32 blocks, at most 256 chunks a block.
+  CHECK(synth::updateBlockShift(47) == 0);
+  CHECK(synth::updateBlockShift(64) == 1);
+  CHECK(synth::updateBlockShift(1563) == 5);   // 100,000 characters
+  CHECK(synth::updateBlockShift(15625) == 8);  // 1,000,000
+  CHECK(synth::updateBlockShift(1u << 20) == 8);
 }
 
 TEST_CASE("update-rate LOD: a move by several steps lands where moving every step does") {
