@@ -222,3 +222,38 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
   CHECK(maskMismatches == 0);
   CHECK(ctx.validationMessageCount() == 0);
 }
+
+TEST_CASE("update-rate LOD: a crowd near the camera moves every step, as without the schedule") {
+  gpu::Context& ctx = test::gpuContext();
+  const anim::MotionPair& pair = runPair();
+  crowd::ScenarioOptions scenario;
+  scenario.characters = 1000;
+  const crowd::Crowd crowd = crowd::makeScenario(scenario);
+  const synth::LodOptions plainLod{true, {}, &runSkeleton()};
+  const synth::LodOptions scheduledLod{true, {}, &runSkeleton(), 1.0f};
+  const synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd, {}, plainLod);
+  const synth::CrowdSynth scheduled = synth::makeCrowdSynth(ctx, pair, crowd, {}, scheduledLod);
+  synth::SynthPrograms programs(ctx, pair);
+  const synth::SynthPrograms* used[] = {&programs};
+  const glm::mat4 view =
+      glm::lookAt(glm::vec3(0.0f, 8.0f, -40.0f), glm::vec3(0.0f), glm::vec3(0, 1, 0));
+  const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+  uint32_t fewestMoved = UINT32_MAX;
+  for (int step = 0; step < 10; ++step) {
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      synth::recordSynthesis(cmd, used, plain, 1 / 30.0f, 1u << 27, {}, &camera);
+      synth::recordSynthesis(cmd, used, scheduled, 1 / 30.0f, 1u << 27, {}, &camera);
+    });
+    fewestMoved = std::min(fewestMoved, synth::readMovedChunks(ctx, *scheduled.updateRate));
+  }
+  crowd::Crowd a, b;
+  crowd::downloadCrowd(ctx, plain.crowd, a);
+  crowd::downloadCrowd(ctx, scheduled.crowd, b);
+  const auto masksA = gpu::readback<synth::CoverageMask>(ctx, plain.masks, crowd.size());
+  const auto masksB = gpu::readback<synth::CoverageMask>(ctx, scheduled.masks, crowd.size());
+  CHECK(fewestMoved == scheduled.updateRate->chunkCount);
+  CHECK(test::maxAbsDifference(&a.placement[0].x, &b.placement[0].x, crowd.size() * 4) == 0.0f);
+  CHECK(test::maxAbsDifference(&a.motion[0].x, &b.motion[0].x, crowd.size() * 4) == 0.0f);
+  CHECK(std::memcmp(masksA.data(), masksB.data(), masksA.size() * sizeof(masksA[0])) == 0);
+  CHECK(ctx.validationMessageCount() == 0);
+}
