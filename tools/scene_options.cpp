@@ -318,8 +318,9 @@ synth::SpeedSchedule sceneSpeedSchedule(const SceneOptions& o) {
 }
 
 synth::LodOptions sceneLodOptions(const SceneOptions& o, const anim::Skeleton& skeleton) {
+  // The viewer can switch the coverage LOD off; the update-rate LOD, which needs it, goes with it.
   return {o.lod, synth::CoverageThresholds::levels(o.lodMidPixels, o.lodNearPixels), &skeleton,
-          o.lodUpdateLag};
+          o.lod ? o.lodUpdateLag : 0.0f};
 }
 
 float sceneExtent(const SceneOptions& o) {
