@@ -171,6 +171,10 @@ std::vector<std::string> UpdateScheduleJob::validate() const {
 
 void UpdateScheduleJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program) const {
   gpu::throwIfInvalid("UpdateScheduleJob", validate());
+  // A step recorded earlier in the same command buffer may still read the arguments and the list.
+  gpu::memoryBarrier(cmd,
+                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   vkCmdFillBuffer(cmd, dispatchArgs->get(), 0, 4, 0u);
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   UpdateSchedulePush push{};
