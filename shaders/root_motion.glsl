@@ -53,7 +53,7 @@ layout(std140, binding = kRootMotionBindingCoverageView) uniform View { Coverage
 #endif
 #ifdef THRONG_ROOT_MOTION_SCHEDULED
 // The update-rate LOD (update_rate.h): workgroup g moves the chunk of kUpdateChunkCharacters
-// (the local size) that list entry g names, by its elapsed steps, and raises the chunk's largest
+// (the local size) that list entry g names, by the seconds since its last move, and raises the chunk's largest
 // projected height for the next schedule.
 #include "update_rate.h"
 layout(std430, binding = kRootMotionBindingChunkState) buffer ChunkState { uvec2 chunkState[]; };
@@ -115,7 +115,7 @@ void main() {
 #ifdef THRONG_ROOT_MOTION_SCHEDULED
   uvec2 entry = chunkList[gl_WorkGroupID.x];
   uint local = entry.x * kUpdateChunkCharacters + gl_LocalInvocationID.x;
-  float dt = push.dt * float(entry.y);
+  float dt = uintBitsToFloat(entry.y);
 #else
   uint local = gl_GlobalInvocationID.x;
   float dt = push.dt;

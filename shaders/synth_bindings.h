@@ -38,11 +38,11 @@ const uint kRootMotionBindingCoverageView = 7u;
 const uint kRootMotionBindingGroups = 8u;
 const uint kRootMotionBindingRootRows = 9u;
 const uint kRootMotionConstantJointCount = 0u;  // the texel row width
-// root_motion_scheduled.comp (and root_motion_groups_scheduled.comp): the update-rate LOD's
-// chunks (update_rate.h). Each workgroup moves the chunk its list entry names by the entry's
-// elapsed steps and raises the chunk's largest projected height.
+// root_motion_scheduled.comp: the update-rate LOD's chunks (update_rate.h). Each workgroup moves
+// the chunk its list entry names by the entry's seconds and raises the chunk's largest
+// projected height.
 const uint kRootMotionBindingChunkState = 10u;  // uvec2 per chunk: height bits, last step
-const uint kRootMotionBindingChunkList = 11u;   // uvec2 per listed chunk: chunk, elapsed steps
+const uint kRootMotionBindingChunkList = 11u;   // uvec2 per listed chunk: chunk, seconds' bits
 
 // update_schedule.comp: which chunks move this step (update_rate.h).
 const uint kUpdateScheduleBindingChunkState = 0u;

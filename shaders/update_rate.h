@@ -35,6 +35,10 @@ THRONG_STRUCT(UpdateSchedulePush) {
   uint blockShift;      // chunks are staggered in blocks of 2^blockShift (updateBlockShift)
   uint pad1;
   uint pad2;
+  // sinceSeconds[j]: the seconds of the last j + 1 steps, this one's included. Steps vary in
+  // length (the viewer's follow the wall clock, a pause's are 0), so a chunk moved after e steps
+  // advances by their sum.
+  float sinceSeconds[kUpdateMaxInterval];
 };
 
 // The steps between a chunk's updates when its largest character is maxHeight pixels tall.

@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_ballot : require
 // The update-rate LOD's schedule (update_rate.h), one invocation per chunk: lists the chunks
-// that move this step with the steps since their last move, resets their largest height (the
+// that move this step with the seconds since their last move, resets their largest height (the
 // scheduled root motion raises it again) and counts the list in the indirect dispatch's x, which
 // the host zeroes first. One atomic per subgroup: on lavapipe the two threads contend for it.
 // CPU twin: synth::UpdateScheduleCpu::schedule.
@@ -28,6 +28,8 @@ void main() {
   if (subgroupElect() && total > 0u) at = atomicAdd(args[0], total);
   at = subgroupBroadcastFirst(at) + subgroupBallotExclusiveBitCount(ballot);
   if (!due) return;
-  chunkList[at] = uvec2(chunk, push.step - state.y);
+  // At most maxInterval steps pass between two moves: the schedule runs every step.
+  uint elapsed = min(push.step - state.y, kUpdateMaxInterval);
+  chunkList[at] = uvec2(chunk, floatBitsToUint(push.sinceSeconds[elapsed - 1u]));
   chunkState[chunk] = uvec2(0u, push.step);
 }

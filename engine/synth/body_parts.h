@@ -1,8 +1,8 @@
 #pragma once
-// The five body parts of the pixel-coverage LOD (the paper's eqs. 1–9, docs/design.md): which joint is each part's
-// sphere centre, the sphere's radius and which joints the part makes active. Found from the
-// joint names (default, CMU, Bandai Namco and Mixamo-like naming) or, when names do not say,
-// from the rest pose's geometry.
+// The five body parts of the pixel-coverage LOD (the paper's eqs. 1–9, docs/design.md): which joint
+// is each part's sphere centre, the sphere's radius and which joints the part makes active. Found
+// from the joint names (default, CMU, Bandai Namco and Mixamo-like naming) or, when names do not
+// say, from the rest pose's geometry.
 #include <array>
 #include <cstdint>
 #include <string>

@@ -215,10 +215,12 @@ void recordCoverageView(VkCommandBuffer cmd, const CrowdSynth& synth,
 
 // The update-rate schedule of this step; recording it advances the schedule's clock.
 void recordUpdateSchedule(VkCommandBuffer cmd, const GpuUpdateRate& rate, float dt) {
-  UpdateScheduleJob{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs,
-                    rate.chunkCount,  rate.step++,     dt,
-                    rate.params}
-      .record(cmd, rate.schedule);
+  UpdateScheduleJob job{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs, rate.chunkCount,
+                        rate.step++};
+  job.dt = dt;
+  job.sinceSeconds = advanceRecentSteps(rate.recent, dt);
+  job.params = rate.params;
+  job.record(cmd, rate.schedule);
 }
 
 bool recordRootMotion(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,

@@ -7,12 +7,14 @@
 namespace throng::synth {
 
 gpu::Image2D uploadMotionTexture(const gpu::Context& context, const anim::MotionTexture& texture) {
-  if (texture.jointCount > 64) fail("skeletons of more than 64 joints are not supported (got ", texture.jointCount, ")");
-  gpu::Image2D image(context, static_cast<uint32_t>(texture.width()), static_cast<uint32_t>(texture.frameCount),
-                     VK_FORMAT_R32G32B32A32_SFLOAT,
+  if (texture.jointCount > 64)
+    fail("skeletons of more than 64 joints are not supported (got ", texture.jointCount, ")");
+  gpu::Image2D image(context, static_cast<uint32_t>(texture.width()),
+                     static_cast<uint32_t>(texture.frameCount), VK_FORMAT_R32G32B32A32_SFLOAT,
                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   gpu::uploadImage(context, image,
-                   {reinterpret_cast<const uint8_t*>(texture.texels.data()), texture.texels.size() * sizeof(glm::vec4)});
+                   {reinterpret_cast<const uint8_t*>(texture.texels.data()),
+                    texture.texels.size() * sizeof(glm::vec4)});
   return image;
 }
 
@@ -34,12 +36,17 @@ bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity) {
 }
 
 namespace {
-gpu::Buffer uniformTexels(const gpu::Context& context, const std::vector<glm::vec4>& texels, uint32_t slots) {
+gpu::Buffer uniformTexels(const gpu::Context& context, const std::vector<glm::vec4>& texels,
+                          uint32_t slots) {
   std::vector<glm::vec4> padded(std::max<size_t>(slots, 1), glm::vec4(0.0f));
-  std::copy(texels.begin(), texels.begin() + std::min(texels.size(), padded.size()), padded.begin());
+  std::copy(texels.begin(), texels.begin() + std::min(texels.size(), padded.size()),
+            padded.begin());
   gpu::Buffer buffer(context, padded.size() * sizeof(glm::vec4),
-                     VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::DeviceLocal);
-  gpu::uploadBytes(context, buffer, {reinterpret_cast<const uint8_t*>(padded.data()), padded.size() * sizeof(glm::vec4)});
+                     VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     gpu::MemoryUse::DeviceLocal);
+  gpu::uploadBytes(
+      context, buffer,
+      {reinterpret_cast<const uint8_t*>(padded.data()), padded.size() * sizeof(glm::vec4)});
   return buffer;
 }
 }  // namespace
@@ -54,11 +61,13 @@ GpuMotionPair uploadMotionPair(const gpu::Context& context, const anim::MotionPa
     offsets[2 * j] = glm::vec4(pair.slow.offset(0, j), 0.0f);
     offsets[2 * j + 1] = glm::vec4(pair.fast.offset(0, j), 0.0f);
   }
-  gpuPair.constantOffsets = gpu::Buffer(context, offsets.size() * sizeof(glm::vec4),
-                                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        gpu::MemoryUse::DeviceLocal);
-  gpu::uploadBytes(context, gpuPair.constantOffsets,
-                   {reinterpret_cast<const uint8_t*>(offsets.data()), offsets.size() * sizeof(glm::vec4)});
+  gpuPair.constantOffsets =
+      gpu::Buffer(context, offsets.size() * sizeof(glm::vec4),
+                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  gpu::MemoryUse::DeviceLocal);
+  gpu::uploadBytes(
+      context, gpuPair.constantOffsets,
+      {reinterpret_cast<const uint8_t*>(offsets.data()), offsets.size() * sizeof(glm::vec4)});
   gpuPair.animatedOffset = pair.animatedOffset;
   gpuPair.parentsHost = pair.parents;
   gpuPair.jointRadius = gpu::makeStorageBuffer<float>(context, pair.jointRadius);

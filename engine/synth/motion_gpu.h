@@ -21,9 +21,9 @@ bool texelsFitUniform(const anim::MotionPair& pair, uint32_t capacity);
 struct GpuMotionPair {
   gpu::Image2D slow;
   gpu::Image2D fast;
-  gpu::Buffer parents;                // int32 per joint, root −1 (the parent array of docs/design.md)
-  std::vector<int32_t> parentsHost;   // the same on the host (the pose pipeline bakes it in)
-  std::vector<bool> animatedOffset;   // baked into the pose pipeline too
+  gpu::Buffer parents;  // int32 per joint, root −1 (the parent array of docs/design.md)
+  std::vector<int32_t> parentsHost;  // the same on the host (the pose pipeline bakes it in)
+  std::vector<bool> animatedOffset;  // baked into the pose pipeline too
   gpu::Buffer jointRadius;
   gpu::Buffer constantOffsets;  // uniform buffer: slow and fast offset of each joint (vec4 × 128)
   // The same texels as SSBOs: the pose pass reads these, because on lavapipe a buffer load is

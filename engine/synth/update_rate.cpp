@@ -77,6 +77,15 @@ uint32_t updateBlockShift(uint32_t chunkCount) {
   return shift;
 }
 
+RecentSteps advanceRecentSteps(RecentSteps& recent, float dt) {
+  for (size_t k = recent.size() - 1; k > 0; --k) recent[k] = recent[k - 1];
+  recent[0] = dt;
+  RecentSteps since{};
+  float sum = 0.0f;
+  for (size_t k = 0; k < recent.size(); ++k) since[k] = sum += recent[k];
+  return since;
+}
+
 glm::uvec2 initialChunkState() {
   return {std::bit_cast<uint32_t>(std::numeric_limits<float>::infinity()), ~0u};
 }
@@ -87,12 +96,14 @@ UpdateScheduleCpu::UpdateScheduleCpu(uint32_t characters)
 std::vector<ChunkMove> UpdateScheduleCpu::schedule(const UpdateRateParams& params, float dt) {
   std::vector<ChunkMove> moves;
   const uint32_t blockShift = updateBlockShift(uint32_t(state.size()));
+  const RecentSteps since = advanceRecentSteps(recent, dt);
   for (uint32_t c = 0; c < state.size(); ++c) {
     const uint32_t interval =
         gpu_types::updateInterval(std::bit_cast<float>(state[c].x), params.lagPerHeight(dt),
                                   params.maxLagPixels, params.maxInterval);
     if (!gpu_types::updateDue(step, state[c].y, c, interval, blockShift)) continue;
-    moves.push_back({c, step - state[c].y});
+    const uint32_t elapsed = std::min(step - state[c].y, kUpdateMaxInterval);
+    moves.push_back({c, elapsed, since[elapsed - 1]});
     state[c] = {0u, step};
   }
   ++step;
@@ -121,7 +132,7 @@ void stepScheduledCpu(const anim::MotionPair& pair, crowd::Crowd& crowd,
   for (const ChunkMove& move : schedule.schedule(params, dt)) {
     const uint32_t end = std::min(n, (move.chunk + 1) * kUpdateChunkCharacters);
     for (uint32_t i = move.chunk * kUpdateChunkCharacters; i < end; ++i) {
-      anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], dt * float(move.elapsed),
+      anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], move.seconds,
                           anim::Steering::KeepHeading);
       masks[i] = coverageCharacter(push, parts, crowd.placement[i], crowd.motion[i], nullptr,
                                    masks[i], nullptr);
@@ -184,6 +195,7 @@ void UpdateScheduleJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& p
   push.maxLag = params.maxLagPixels;
   push.maxInterval = params.maxInterval;
   push.blockShift = updateBlockShift(chunkCount);
+  std::copy(sinceSeconds.begin(), sinceSeconds.end(), push.sinceSeconds);
   const gpu::Binding bindings[] = {
       gpu::storageBinding(gpu_types::kUpdateScheduleBindingChunkState, *chunkState),
       gpu::storageBinding(gpu_types::kUpdateScheduleBindingChunkList, *chunkList),

@@ -8,7 +8,9 @@
 // motion integrates exactly over the skipped steps (the root rows are lerped in the phase), so
 // a character catches up to within rounding, but for a cycle end inside the skipped steps, where
 // the new speed weight starts at the move instead of at the cycle end.
+#include <array>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -26,7 +28,7 @@ namespace throng::synth {
 using gpu_types::kUpdateChunkCharacters;
 using gpu_types::kUpdateMaxInterval;
 using gpu_types::UpdateSchedulePush;
-static_assert(sizeof(UpdateSchedulePush) == 32, "UpdateSchedulePush must match the GLSL block");
+static_assert(sizeof(UpdateSchedulePush) == 64, "UpdateSchedulePush must match the GLSL block");
 
 // The fastest any joint point (joint origin or bone end) of `pair` moves in world space, in the
 // clips' metres per second, over a cycle of each clip with its root motion.
@@ -55,12 +57,21 @@ glm::uvec2 initialChunkState();
 struct ChunkMove {
   uint32_t chunk = 0;
   uint32_t elapsed = 0;  // steps since the chunk's last move
+  float seconds = 0.0f;  // their length: what the move advances by
 };
+
+// The lengths of the last kUpdateMaxInterval steps, the latest first (steps vary in length: the
+// viewer's follow the wall clock, a pause's are 0).
+using RecentSteps = std::array<float, kUpdateMaxInterval>;
+// Records a step of dt; returns the seconds of the last 1, 2, … steps (UpdateSchedulePush::
+// sinceSeconds), summed in one order for both sides.
+RecentSteps advanceRecentSteps(RecentSteps& recent, float dt);
 
 // CPU twin of update_schedule.comp and of the chunk heights the scheduled root motion raises.
 struct UpdateScheduleCpu {
   std::vector<glm::uvec2> state;
   uint32_t step = 0;
+  RecentSteps recent{};
   explicit UpdateScheduleCpu(uint32_t characters);
   // The chunks that move at this step (chunk order), their heights reset; advances the step.
   std::vector<ChunkMove> schedule(const UpdateRateParams& params, float dt);
@@ -69,8 +80,8 @@ struct UpdateScheduleCpu {
 
 // CPU twin of a scheduled step's root motion with its coverage (RootMotionJob with a schedule):
 // the steering and new target speeds of the step for every character (root_motion_prep.comp),
-// then the characters of the listed chunks moved by their elapsed steps, their masks and their
-// chunks' heights updated. `jointCount` is the pair's.
+// then the characters of the listed chunks moved by the seconds since their last move, their masks
+// and their chunks' heights updated. `jointCount` is the pair's.
 void stepScheduledCpu(const anim::MotionPair& pair, crowd::Crowd& crowd,
                       std::span<CoverageMask> masks, const CoverageCamera& camera,
                       const CoverageParts& parts, float dt, const anim::SpeedRetarget& retarget,
@@ -84,8 +95,10 @@ struct GpuUpdateRate {
   gpu::Buffer chunkList;     // uvec2 per chunk (ChunkMove)
   gpu::Buffer dispatchArgs;  // VkDispatchIndirectCommand
   gpu::ComputeProgram schedule;
-  // The number of the next step recorded: recording a step advances it (the schedule's clock).
+  // The number of the next step recorded and the last steps' lengths: recording a step advances
+  // them (the schedule's clock).
   mutable uint32_t step = 0;
+  mutable RecentSteps recent{};
 };
 GpuUpdateRate makeGpuUpdateRate(const gpu::Context& context, uint32_t characters,
                                 const UpdateRateParams& params);
@@ -99,7 +112,8 @@ struct UpdateScheduleJob {
   const gpu::Buffer* dispatchArgs = nullptr;  // output: x = the list's length, y = z = 1
   uint32_t chunkCount = 0;
   uint32_t step = 0;
-  float dt = 0.0f;
+  float dt = 0.0f;                // this step's length
+  RecentSteps sinceSeconds = {};  // advanceRecentSteps' sums, this step's included
   UpdateRateParams params;
 
   std::vector<std::string> validate() const;

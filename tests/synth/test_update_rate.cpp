@@ -58,8 +58,10 @@ TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong")
                        doctest::Contains("UpdateScheduleJob is invalid"), Error);
   const synth::UpdateRateParams params = synth::makeUpdateRateParams(runPair(), 1.5f, 2.0f);
   synth::GpuUpdateRate rate = synth::makeGpuUpdateRate(ctx, 1000, params);
-  synth::UpdateScheduleJob job{
-      &rate.chunkState, &rate.chunkList, &rate.dispatchArgs, rate.chunkCount, 0, 1 / 30.0f, params};
+  synth::UpdateScheduleJob job{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs,
+                               rate.chunkCount};
+  job.dt = 1 / 30.0f;
+  job.params = params;
   CHECK(job.validate().empty());
   job.chunkCount = rate.chunkCount + 1;
   CHECK(anyContains(job.validate(), "buffer 'chunkState' holds 128 bytes, 136 needed"));
@@ -117,6 +119,7 @@ TEST_CASE("update-rate LOD: intervals follow the projected height, chunks are st
     for (const synth::ChunkMove& m : moved) {
       ++moves[m.chunk];
       if (step >= 4) CHECK(m.elapsed == 4);
+      if (step >= 4) CHECK(m.seconds == doctest::Approx(4 / 30.0f));
       schedule.raiseHeight(m.chunk, 1.0f);
     }
   }
@@ -162,7 +165,7 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
   gpu::Context& ctx = test::gpuContext();
   const anim::MotionPair& pair = runPair();
   crowd::ScenarioOptions scenario;
-  scenario.characters = 2000;
+  scenario.characters = 4500;  // 71 chunks: staggered in blocks of two
   crowd::Crowd cpu = crowd::makeScenario(scenario);
   cpu.steering = anim::Steering::Circle;
   const synth::LodOptions lod{true, {}, &runSkeleton(), 2.0f};
@@ -173,7 +176,6 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
       *static_cast<const synth::CoverageParts*>(gpuSynth.front().coverageParts.mapped());
   std::vector<synth::CoverageMask> masks(cpu.size(), synth::CoverageMask{});
   synth::UpdateScheduleCpu twin(uint32_t(cpu.size()));
-  const float dt = 1 / 30.0f;
   size_t skippedSteps = 0, everyChunkSteps = 0;
   float worstPlacement = 0.0f, worstMotion = 0.0f;
   size_t maskMismatches = 0;
@@ -183,6 +185,8 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 0.3f * distance, -distance), glm::vec3(0.0f),
                                        glm::vec3(0, 1, 0));
     const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+    // Steps of varying length, two of them paused: a move advances by the skipped steps' sum.
+    const float dt = step == 5 || step == 6 ? 0.0f : (1.0f + 0.3f * std::sin(1.7f * step)) / 30.0f;
     const anim::SpeedRetarget retarget =
         step == 9 ? anim::SpeedRetarget{1, 7, 0.0f, 1.0f, 0.0f} : anim::SpeedRetarget{};
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
