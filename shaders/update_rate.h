@@ -7,9 +7,9 @@
 // fastest joint point speed / standing height, update_rate.h in engine/synth). Blocks of
 // 2^blockShift chunks are staggered (a chunk of block b is due at steps where step + b is a
 // multiple of k), so each step moves about the same share of the crowd, in runs of consecutive
-// chunks (memory read in long runs: on the 2-core VM the moved quarter of a crowd cost 0.36 of
-// moving all of it with single chunks staggered, 0.27 with blocks of 256). Each update moves by
-// every step since the chunk's last.
+// chunks: memory read in long runs (on the 2-core VM a quarter of the chunks moved cost 0.27 of
+// moving all of them with blocks of 256, 0.36 staggered chunk by chunk). Each update moves by
+// the seconds of every step since the chunk's last.
 #ifndef THRONG_UPDATE_RATE_H
 #define THRONG_UPDATE_RATE_H
 

@@ -217,13 +217,6 @@ void validateSceneOptions(SceneOptions& o) {
   if (!(o.lodMidPixels >= 0.0f && o.lodNearPixels >= 0.0f))
     fail("--lod-mid-pixels and --lod-near-pixels must be >= 0 pixels");
   if (o.lodTint && !o.lod) fail("--lod-tint: needs the coverage LOD (drop --no-lod)");
-  // Steered scenes steer every character from every other's place, trajectories record every
-  // frame's places: both need every character moved every frame.
-  if (o.lodUpdateLag > 0.0f &&
-      (o.scenario.name != "random" || o.groups.size() > 1 || !o.trajectoriesOut.empty()))
-    fail(
-        "--lod-update-lag: only for the random crowd of one clip set without "
-        "--trajectories-out (steered scenes and trajectories need every character every frame)");
   if (!(o.speedPeriod >= 0.0f)) fail("--speed-period: expected seconds >= 0, got ", o.speedPeriod);
   if ((o.clothTint || o.clothFull) && o.cloth.empty())
     fail("--cloth-tint and --cloth-full need --cloth");
@@ -233,6 +226,13 @@ void validateSceneOptions(SceneOptions& o) {
   // random).
   if (!o.story.storyboard.empty() && o.scenario.name == "random") o.scenario.name = "storyboard";
   if (!o.menge.empty() && o.scenario.name == "random") o.scenario.name = "menge";
+  // Steered scenes steer every character from every other's place, trajectories record every
+  // frame's places: both need every character moved every frame.
+  if (o.lodUpdateLag > 0.0f &&
+      (o.scenario.name != "random" || o.groups.size() > 1 || !o.trajectoriesOut.empty()))
+    fail(
+        "--lod-update-lag: only for the random crowd of one clip set without "
+        "--trajectories-out (steered scenes and trajectories need every character every frame)");
   checkUsedOptions(o);
   if (o.mengeScene()) {
     validateMengeScene(o);

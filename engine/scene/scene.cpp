@@ -42,6 +42,11 @@ Scene::Scene(const gpu::Context& context, SceneSetup setup, const synth::MotionC
              const synth::LodOptions& lod)
     : speeds_(setup.speeds) {
   checkSetup(setup);
+  // A steered scene steers every character from every other's place, each step.
+  if (setup.steering && lod.updateLagPixels > 0.0f)
+    fail(
+        "the update-rate LOD needs an unsteered crowd: a steered scene moves every character "
+        "every step");
   std::vector<const anim::MotionPair*> pairs;
   for (anim::MotionPair& p : setup.pairs) {
     pairs_.push_back(std::make_unique<anim::MotionPair>(std::move(p)));

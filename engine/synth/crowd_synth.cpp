@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <ios>
 
 #include "core/error.h"
 #include "gpu/commands.h"
@@ -49,11 +50,23 @@ void makeUpdateRate(const gpu::Context& context, CrowdSynth& synth, const LodOpt
   if (!synth.lod) fail("the update-rate LOD needs the coverage LOD on");
   if (synth.sharedPasses())
     fail("the update-rate LOD needs a crowd of one clip set, this one has ", synth.groups.size());
+  const VkSubgroupFeatureFlags needed = VK_SUBGROUP_FEATURE_BASIC_BIT |
+                                        VK_SUBGROUP_FEATURE_BALLOT_BIT |
+                                        VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  if ((context.info().computeSubgroupOperations & needed) != needed)
+    fail(
+        "the update-rate LOD needs subgroup ballot and arithmetic in compute shaders; this "
+        "device has operations 0x",
+        std::hex, context.info().computeSubgroupOperations);
   const SynthGroup& group = synth.groups.front();
   const float height = static_cast<const CoverageParts*>(group.coverageParts.mapped())->body.x;
   synth.updateRate = makeGpuUpdateRate(
       context, synth.crowd.count, makeUpdateRateParams(*group.pair, height, lod.updateLagPixels));
   synth.scheduledRootMotion = makeScheduledRootMotionProgram(context, *group.pair);
+  // A workgroup moves one chunk.
+  THRONG_CHECK(synth.scheduledRootMotion.localSizeX() == kUpdateChunkCharacters,
+               "root_motion_scheduled.comp's workgroup must be a chunk of ", kUpdateChunkCharacters,
+               " characters");
 }
 
 void makeSharedBuffers(const gpu::Context& context, CrowdSynth& synth, const LodOptions& lod) {

@@ -93,6 +93,12 @@ TEST_CASE("render: bad options fail clearly and write nothing") {
       {"--no-cache --cache-budget 10", "--cache-budget: needs the motion cache"},
       {"--no-lod --lod-mid-pixels 3", "--lod-mid-pixels: needs the coverage LOD"},
       {"--no-lod --lod-tint", "--lod-tint: needs the coverage LOD"},
+      // The update-rate LOD needs every character's own step where others read them.
+      {"--no-lod --lod-update-lag 2", "--lod-update-lag: needs the coverage LOD"},
+      {"--scene circle --lod-update-lag 2", "--lod-update-lag: only for the random crowd"},
+      {"--menge /nonexistent.xml --lod-update-lag 2", "--lod-update-lag: only for the random"},
+      {"--lod-update-lag 2 --trajectories-out t.txt", "without --trajectories-out"},
+      {"--lod-update-lag -1", "--lod-update-lag"},
       {"--policy boids", "--policy"},
   };
   for (const Case& c : cases) {
