@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/log.h"
+#include "crowd/spatial_order.h"
 #include "gpu/commands.h"
 #include "progress.h"
 #include "render/offscreen_target.h"
@@ -93,7 +94,10 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
   synth::MotionCacheOptions cache{variant >= Variant::LodCache, 0.05f, 20ull << 20};
   if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
   synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
-  if (variant == Variant::LodCacheRate) lod.updateLagPixels = o.updateLag;
+  if (variant == Variant::LodCacheRate) {  // as `throng render --lod-update-lag` builds it
+    lod.updateLagPixels = o.updateLag;
+    crowd = crowd::permuted(crowd, crowd::spatialOrder(crowd));
+  }
   synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
   // The default wide camera of `throng render` for this crowd, at 1280x720.
   crowd::ScenarioOptions scenario;

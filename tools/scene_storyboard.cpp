@@ -105,6 +105,7 @@ scene::SceneSetup makeSetupWithoutWalls(const SceneOptions& o, const anim::ClipP
 
 scene::SceneSetup makeSceneSetup(const SceneOptions& o, const anim::ClipPair& clips) {
   scene::SceneSetup setup = makeSetupWithoutWalls(o, clips);
+  if (o.lodUpdateLag > 0.0f) scene::numberInSpace(setup);  // chunks as patches of ground
   if (!o.walls.empty()) {
     const crowd::Obstacles more = crowd::loadWalls(o.walls);
     setup.walls.segments.insert(setup.walls.segments.end(), more.segments.begin(),

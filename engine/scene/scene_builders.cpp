@@ -9,6 +9,7 @@
 #include "crowd/avoidance_types.h"
 #include "crowd/circle_paths.h"
 #include "crowd/scenario.h"
+#include "crowd/spatial_order.h"
 #include "crowd/trajectories.h"
 #include "storyboard/codec.h"
 #include "storyboard/legend.h"
@@ -73,6 +74,16 @@ sb::Placement placeAgents(const StoryboardSceneDescription& d, const sb::Storybo
 }
 
 }  // namespace
+
+void numberInSpace(SceneSetup& setup) {
+  if (setup.groupFirst.size() > 2)
+    fail("numbering in space needs a scene of one group, this one has ",
+         setup.groupFirst.size() - 1);
+  const std::vector<uint32_t> order = crowd::spatialOrder(setup.crowd);
+  setup.crowd = crowd::permuted(setup.crowd, order);
+  setup.tints = crowd::permuted(setup.tints, order);
+  setup.labels = crowd::permuted(setup.labels, order);
+}
 
 SceneSetup plainScene(crowd::Crowd crowd, anim::MotionPair pair,
                       const synth::SpeedSchedule& speeds) {

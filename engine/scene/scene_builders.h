@@ -18,6 +18,10 @@ namespace throng::scene {
 
 SceneSetup plainScene(crowd::Crowd crowd, anim::MotionPair pair,
                       const synth::SpeedSchedule& speeds);
+// The scene's characters numbered in space (crowd::spatialOrder), their tints and labels with
+// them: the update-rate LOD's chunks are runs of consecutive characters, so numbered in space a
+// chunk is a patch of ground, near or far as a whole. A scene of one group; throws Error else.
+void numberInSpace(SceneSetup& setup);
 
 // A group of characters animated by one clip set.
 struct GroupDescription {
