@@ -50,7 +50,7 @@ struct BenchOptions {
   // Which kinds of row run (kRowKinds); empty: all.
   std::vector<std::string> rows;
   std::vector<uint32_t> frameCounts{100000, 1000000};  // the whole-frame rows
-  float updateLag = 4.0f;  // pixels: the lod+cache+rate rows' update-rate LOD
+  float updateLag = 2.0f;  // pixels: the lod+cache+rate rows' update-rate LOD
   bool wants(const std::string& kind) const {
     return rows.empty() || std::find(rows.begin(), rows.end(), kind) != rows.end();
   }
