@@ -29,12 +29,18 @@ void bodyOnScreenHeight(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4
   visible = bodyOnScreen(viewport, frustum, middle, height);
 }
 
-// The mask words after this frame without the part areas (the frame's coverage).
-u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words) {
-  float h;
+// The mask words after this frame without the part areas (the frame's coverage); h: the
+// character's projected height.
+u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words,
+                       out float h) {
   bool visible;
   bodyOnScreenHeight(view, viewport, frustum, place, m, h, visible);
   return nextMaskWords(unpackMask(words), m, h, visible, 0u);
+}
+
+u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words) {
+  float h;
+  return frameMaskWords(view, viewport, frustum, place, m, words, h);
 }
 
 #endif

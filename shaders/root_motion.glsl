@@ -154,9 +154,7 @@ void main() {
 #endif
 #ifdef THRONG_ROOT_MOTION_SCHEDULED
   float h;
-  bool visible;
-  bodyOnScreenHeight(camera.view, camera.viewport, camera.frustum, place, m, h, visible);
-  maskWords[i] = nextMaskWords(unpackMask(maskWords[i]), m, h, visible, 0u);
+  maskWords[i] = frameMaskWords(camera.view, camera.viewport, camera.frustum, place, m, maskWords[i], h);
   // Heights are positive, so their bits order like the floats.
   float chunkHeight = subgroupMax(h);
   if (subgroupElect()) atomicMax(chunkState[entry.x].x, floatBitsToUint(chunkHeight));

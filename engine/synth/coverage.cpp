@@ -145,12 +145,19 @@ float projectedHeight(const CoveragePush& push, glm::vec3 middle, float height) 
   return middle.z > 0.5f * height ? push.viewport.z * height / middle.z : 1.0e9f;
 }
 
+namespace {
+
+// The camera-space middle of a character `height` tall standing at `placement`.
+glm::vec3 bodyMiddle(const CoveragePush& push, glm::vec4 placement, float height) {
+  return cameraSpace(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f));
+}
+
+}  // namespace
+
 float characterHeightPixels(const CoveragePush& push, const CoverageParts& parts,
                             glm::vec4 placement, glm::vec4 motion) {
   const float height = parts.body.x * gpu_types::characterScale(motion);
-  const glm::vec3 middle =
-      cameraSpace(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f));
-  return projectedHeight(push, middle, height);
+  return projectedHeight(push, bodyMiddle(push, placement, height), height);
 }
 
 namespace {
@@ -229,8 +236,7 @@ CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& pa
                                const CoverageMask& previous, float* areas) {
   const float scale = gpu_types::characterScale(motion);
   const float height = parts.body.x * scale;
-  const glm::vec3 middle =
-      cameraSpace(push, glm::vec3(placement) + glm::vec3(0.0f, 0.5f * height, 0.0f));
+  const glm::vec3 middle = bodyMiddle(push, placement, height);
   const float h = projectedHeight(push, middle, height);
   // Mirrors bodyOnScreen in coverage_common.glsl.
   const bool visible = sphereInFrustum(push, middle, 0.8f * height);

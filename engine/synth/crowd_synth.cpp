@@ -230,7 +230,6 @@ void recordCoverageView(VkCommandBuffer cmd, const CrowdSynth& synth,
 void recordUpdateSchedule(VkCommandBuffer cmd, const GpuUpdateRate& rate, float dt) {
   UpdateScheduleJob job{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs, rate.chunkCount,
                         rate.step++};
-  job.dt = dt;
   job.sinceSeconds = advanceRecentSteps(rate.recent, dt);
   job.params = rate.params;
   job.record(cmd, rate.schedule);

@@ -176,7 +176,9 @@ std::vector<std::string> UpdateScheduleJob::validate() const {
   if (!std::has_single_bit(params.maxInterval) || params.maxInterval > kUpdateMaxInterval)
     problems.push_back(concat("maxInterval must be a power of two <= ", kUpdateMaxInterval,
                               ", got ", params.maxInterval));
-  if (!(dt >= 0.0f) || !std::isfinite(dt)) problems.push_back(concat("dt must be >= 0, got ", dt));
+  for (float seconds : sinceSeconds)
+    if (!(seconds >= 0.0f) || !std::isfinite(seconds))
+      problems.push_back(concat("sinceSeconds must be seconds >= 0, got ", seconds));
   return problems;
 }
 
@@ -191,7 +193,7 @@ void UpdateScheduleJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& p
   UpdateSchedulePush push{};
   push.chunkCount = chunkCount;
   push.step = step;
-  push.lagPerHeight = params.lagPerHeight(dt);
+  push.lagPerHeight = params.lagPerHeight(sinceSeconds[0]);
   push.maxLag = params.maxLagPixels;
   push.maxInterval = params.maxInterval;
   push.blockShift = updateBlockShift(chunkCount);

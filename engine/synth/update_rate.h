@@ -112,8 +112,7 @@ struct UpdateScheduleJob {
   const gpu::Buffer* dispatchArgs = nullptr;  // output: x = the list's length, y = z = 1
   uint32_t chunkCount = 0;
   uint32_t step = 0;
-  float dt = 0.0f;                // this step's length
-  RecentSteps sinceSeconds = {};  // advanceRecentSteps' sums, this step's included
+  RecentSteps sinceSeconds = {};  // advanceRecentSteps' sums: [0] is this step's length
   UpdateRateParams params;
 
   std::vector<std::string> validate() const;

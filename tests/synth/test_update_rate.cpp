@@ -60,7 +60,7 @@ TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong")
   synth::GpuUpdateRate rate = synth::makeGpuUpdateRate(ctx, 1000, params);
   synth::UpdateScheduleJob job{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs,
                                rate.chunkCount};
-  job.dt = 1 / 30.0f;
+  job.sinceSeconds.fill(1 / 30.0f);
   job.params = params;
   CHECK(job.validate().empty());
   job.chunkCount = rate.chunkCount + 1;
@@ -69,8 +69,8 @@ TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong")
   job.params.maxInterval = 3;
   CHECK(anyContains(job.validate(), "maxInterval must be a power of two <= 8, got 3"));
   job.params.maxInterval = 8;
-  job.dt = -1.0f;
-  CHECK(anyContains(job.validate(), "dt must be >= 0"));
+  job.sinceSeconds[0] = -1.0f;
+  CHECK(anyContains(job.validate(), "sinceSeconds must be seconds >= 0, got -1"));
   CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(runPair(), 1.5f, -1.0f),
                        doctest::Contains("the lag must be a number of pixels >= 0"), Error);
   CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(runPair(), 0.0f, 1.0f),
