@@ -1,9 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// The ground (the quad ±eye.w metres at y = 0) or the clear colour per pixel, as colour (RGBA8)
-// and depth planes: the renderer keeps them while the camera stands still and copies them into
-// each frame's target, so a frame's cost is its characters' pixels, not a full-screen pass (on
-// lavapipe a full-screen fragment pass costs more than the whole splat). Same colours as
+// The ground (the quad ±eye.w metres at y = 0) or the clear colour per pixel, as the visibility
+// buffer's words (colour in the low 32 bits, depth in the high 32): the renderer keeps them while
+// the camera stands still and copies them into each frame's visibility buffer before the splat,
+// whose atomicMin then keeps the nearer of the ground and each hit (on lavapipe a full-screen
+// fragment pass costs more than the whole splat). Same colours as
 // ground.frag and the splat resolve: grid-line widths from the neighbouring pixels' ground
 // points, as a fragment quad's derivatives are.
 #include "shared_types.h"
@@ -12,7 +13,7 @@
 
 layout(local_size_x = 64) in;
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
-layout(std430, binding = kRenderBindingGroundPlanes) writeonly buffer Planes { uint planes[]; };  // colour plane, then depth plane
+layout(std430, binding = kRenderBindingGroundVisibility) writeonly buffer Ground { uvec2 ground[]; };  // (colour, depth bits)
 layout(push_constant) uniform Push { vec4 clearColour; };
 
 // Unnormalized ray through a pixel centre (the ground point needs no normalize).
@@ -29,7 +30,6 @@ vec2 groundXz(vec3 eye, vec2 pixel) {
 // Workgroups walk rows in segments of 64 pixels, so no invocation divides by the width.
 void main() {
   uint width = uint(frame.viewport.x), height = uint(frame.viewport.y);
-  uint pixels = width * height;
   uint segments = (width + 63u) / 64u;
   for (uint group = gl_WorkGroupID.x; group < segments * height; group += gl_NumWorkGroups.x) {
     uint row = group / segments;
@@ -52,8 +52,6 @@ void main() {
     } else {
       depth = 1.0;
     }
-    uint i = row * width + x;
-    planes[i] = colour;
-    planes[pixels + i] = floatBitsToUint(depth);
+    ground[row * width + x] = uvec2(colour, floatBitsToUint(depth));
   }
 }

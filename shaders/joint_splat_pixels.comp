@@ -5,9 +5,8 @@
 // The far joints, step 2: one invocation per reserved pixel entry (joint_splat.comp) ray-casts
 // its sprite's ellipsoid through the pixel the entry names, so neighbouring lanes do equal work
 // whatever the sprites' sizes. A fixed number of workgroups strides over the entries, so the pass
-// needs no indirect arguments. The entries stay as the walk wrote them: the resolve
-// (joint_splat_resolve.comp) reads their pixels too. The far bodies' entries, counted down from
-// the last (SplatCounters), are not visited. CPU twin: render::splatJointsCpu.
+// needs no indirect arguments. The far bodies' entries, counted down from the last
+// (SplatCounters), are not visited. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"

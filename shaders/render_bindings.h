@@ -1,6 +1,6 @@
 // Descriptor binding numbers of the joint renderer (engine/render: crowd_renderer.cpp,
 // joint_splat.cpp), named once for the shaders and the C++. The renderer's passes share one
-// numbering (the joint draw, the joint splat, the ground and the splat resolve), so a buffer
+// numbering (the joint draw, the joint splat, the ground and the resolves), so a buffer
 // bound to several of them has one number; included like shared_types.h.
 #ifndef THRONG_RENDER_BINDINGS_H
 #define THRONG_RENDER_BINDINGS_H
@@ -27,9 +27,8 @@ const uint kRenderBindingWalls = 12u;      // walls.vert: segments (ax, az, bx, 
 const uint kRenderBindingSprites = 13u;    // the splat's sprites (joint_splat_common.glsl)
 const uint kRenderBindingPixelOwners = 14u;  // per reserved pixel: its sprite (or pixel)
 const uint kRenderBindingSplatCounters = 15u;  // sprites and pixels reserved this frame
-const uint kRenderBindingGroundPlanes = 16u;  // ground.comp: colour plane, depth plane
-const uint kRenderBindingFramePlanes = 17u;   // joint_splat_resolve.comp: the frame's planes
-const uint kRenderBindingResolveDraw = 18u;   // its VkDrawIndirectCommand for the fragment resolve
+const uint kRenderBindingGroundVisibility = 16u;  // ground.comp: the ground as visibility words
+const uint kRenderBindingFramePlanes = 17u;  // visibility_planes.comp: colour plane, depth plane
 const uint kRenderBindingWalkList = 19u;      // characters whose joints are splatted, per chunk
 const uint kRenderBindingListCounts = 20u;    // per chunk: each list's length and dispatch
 const uint kRenderBindingOnScreenList = 21u;  // characters on screen, per chunk
@@ -69,6 +68,15 @@ const uint kSplatListRun = 8u;               // characters per invocation of joi
 const uint kSplatListArgsWords = 8u;
 const uint kSplatOnScreenArgs = 0u;
 const uint kSplatWalkArgs = 4u;
+
+// The frame's planes (visibility_planes.comp, copied into the target's colour and depth images):
+// the colour plane from word 0, the depth plane from this word, even so that both planes hold
+// whole pairs of pixels.
+#ifdef __cplusplus
+inline
+#endif
+uint visibilityDepthPlane(uint pixels) { return (pixels + 1u) & ~1u; }
+const uint kPlanesGroups = 1024u;  // visibility_planes.comp's workgroups at most (grid-stride)
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on
 // screen is splatted as one ellipsoid its standing height tall and kFarBodyWidth of it across

@@ -1,11 +1,11 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-// Writes the splatted joints into the frame with their depth, so the depth test composites them
-// with the ground, the walls and the near joints. With push.withGround 0 the ground is in the
-// target already (ground.comp's planes copied in). Otherwise this pass shades the ground too
-// (the quad ±eye.w metres at y = 0, found by the pixel's ray), the nearer of the two where both
-// are hit: one full-screen pass instead of a ground draw and a resolve.
+// The splat and the ground into a target that takes no copies (the viewer's swapchain): one
+// full-screen pass shades the ground (the quad ±eye.w metres at y = 0, found by the pixel's ray)
+// and writes the nearer of it and the pixel's splat hit with its depth, so the depth test
+// composites both with the walls and the near joints. A target that takes copies gets the same
+// picture from visibility_planes.comp instead.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -14,17 +14,8 @@
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { uint64_t visibility[]; };
 layout(location = 0) out vec4 color;
-layout(push_constant) uniform Push { uint withGround; } push;
 
 void main() {
-  if (push.withGround == 0u) {
-    uvec2 pixel = uvec2(gl_FragCoord.xy);
-    uint64_t v = visibility[pixel.y * uint(frame.viewport.x) + pixel.x];
-    if (v == 0xFFFFFFFFFFFFFFFFul) discard;
-    gl_FragDepth = uintBitsToFloat(uint(v >> 32));
-    color = unpackUnorm4x8(uint(v & 0xFFFFFFFFul));
-    return;
-  }
   vec3 eye = frame.eye.xyz;
   float t;
   vec3 world = groundPoint(eye, pixelRay(gl_FragCoord.xy, frame), t);

@@ -13,7 +13,8 @@ TimestampPool::TimestampPool(const Context& context, uint32_t capacity)
   VkQueryPool pool = VK_NULL_HANDLE;
   VK_CHECK(vkCreateQueryPool(device_, &info, nullptr, &pool));
   VkDevice device = device_;
-  pool_ = Handle<VkQueryPool>(pool, [device](VkQueryPool p) { vkDestroyQueryPool(device, p, nullptr); });
+  pool_ = Handle<VkQueryPool>(pool,
+                              [device](VkQueryPool p) { vkDestroyQueryPool(device, p, nullptr); });
   reset();
 }
 
@@ -31,12 +32,25 @@ uint32_t TimestampPool::write(VkCommandBuffer cmd, VkPipelineStageFlagBits stage
 std::vector<uint64_t> TimestampPool::fetch() const {
   std::vector<uint64_t> ticks(used_);
   if (used_ == 0) return ticks;
-  VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, used_, ticks.size() * sizeof(uint64_t), ticks.data(),
-                                 sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, used_, ticks.size() * sizeof(uint64_t),
+                                 ticks.data(), sizeof(uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   return ticks;
 }
 
-double TimestampPool::millisecondsBetween(const std::vector<uint64_t>& ticks, uint32_t from, uint32_t to) const {
+std::vector<uint64_t> TimestampPool::fetchIfAvailable() const {
+  std::vector<uint64_t> ticks(used_);
+  if (used_ == 0) return ticks;
+  const VkResult result =
+      vkGetQueryPoolResults(device_, pool_, 0, used_, ticks.size() * sizeof(uint64_t), ticks.data(),
+                            sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
+  if (result == VK_NOT_READY) return {};
+  VK_CHECK(result);
+  return ticks;
+}
+
+double TimestampPool::millisecondsBetween(const std::vector<uint64_t>& ticks, uint32_t from,
+                                          uint32_t to) const {
   THRONG_CHECK(from < ticks.size() && to < ticks.size(), "timestamp index out of range");
   return static_cast<double>(ticks[to] - ticks[from]) * periodNs_ * 1e-6;
 }

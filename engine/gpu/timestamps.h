@@ -14,9 +14,13 @@ class TimestampPool {
   // Resets the queries on the host (Vulkan 1.2 hostQueryReset); call before recording.
   void reset();
   // Writes a timestamp after all previous work; returns its index.
-  uint32_t write(VkCommandBuffer cmd, VkPipelineStageFlagBits stage = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+  uint32_t write(VkCommandBuffer cmd,
+                 VkPipelineStageFlagBits stage = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
   // After the work completed: milliseconds between marks `from` and `to`.
   std::vector<uint64_t> fetch() const;
+  // Without waiting: the marks when all of them have been written (their work completed), else
+  // nothing (a command buffer that was never submitted writes none).
+  std::vector<uint64_t> fetchIfAvailable() const;
   double millisecondsBetween(const std::vector<uint64_t>& ticks, uint32_t from, uint32_t to) const;
 
  private:

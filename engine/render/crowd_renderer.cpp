@@ -94,7 +94,8 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   if (splatSupported_) {
     splat_ = makeSplatPrograms(context);
     splatLists_ = makeSplatLists(context);
-    groundPlanesProgram_ = gpu::ComputeProgram(context, "ground.comp");
+    groundProgram_ = gpu::ComputeProgram(context, "ground.comp");
+    planesProgram_ = gpu::ComputeProgram(context, "visibility_planes.comp");
     gpu::GraphicsPipelineDesc resolveDesc = groundDesc;
     resolveDesc.vertexShader = "splat_resolve.vert";
     resolveDesc.fragmentShader = "splat_resolve.frag";
@@ -157,8 +158,8 @@ bool CrowdRenderer::splats(const DrawParams& params) const {
   return splatSupported_ && params.splatMaxPixels > 0.0f && params.characterCount > 0;
 }
 
-const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawParams& params,
-                                              uint32_t frameSlot) {
+const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const FrameTargets& target,
+                                              const DrawParams& params, uint32_t frameSlot) {
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
   passTimer_->beginFrame(cmd);
   const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
@@ -168,6 +169,7 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
   const gpu::Buffer* lodLevels =
       params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
   ensureLists(params.characterCount, params.jointCount);
+  groundCopied_ = splat && target.transferDst && groundFor(cmd, params, frameSlot);
   if (splat) {
     ensureVisibility(params.width, params.height);
     SplatJob job{params.joints,
@@ -195,6 +197,7 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const DrawPar
     job.walkList = &walkList_;
     job.listCounts = &listCounts_;
     job.walk = splatWalk_;
+    job.initialVisibility = groundCopied_ ? &groundVisibility_ : nullptr;
     job.record(cmd, splat_);
     return &visibility_;
   }
@@ -207,13 +210,9 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   passTimer_->mark(cmd, "before-pass");
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
-  groundCopied_ = splats(params) && target.transferDst && groundPlanesFor(cmd, params, frameSlot);
-  entriesResolved_ = groundCopied_ && !params.otherSplats;
-  if (entriesResolved_) {
-    resolveEntries(cmd, frameSlot);
-    copyPlanesIn(cmd, target, params, framePlanes_);
-  } else if (groundCopied_) {
-    copyPlanesIn(cmd, target, params, groundPlanes_);
+  if (groundCopied_) {
+    resolvePlanes(cmd, params, frameSlot);
+    copyPlanesIn(cmd, target, params);
   } else {
     clearTargets(cmd, target);
   }
@@ -234,77 +233,70 @@ void CrowdRenderer::clearTargets(VkCommandBuffer cmd, const FrameTargets& target
       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
 }
 
-bool CrowdRenderer::groundPlanesFor(VkCommandBuffer cmd, const DrawParams& params,
-                                    uint32_t frameSlot) {
+bool CrowdRenderer::groundFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot) {
   std::vector<uint8_t> key(sizeof(FrameUniforms) + sizeof(VkClearColorValue));
   const FrameUniforms frame = makeFrameUniforms(params);
   std::memcpy(key.data(), &frame, sizeof(frame));
   std::memcpy(key.data() + sizeof(frame), &params.clearColor, sizeof(VkClearColorValue));
-  if (groundPlanes_ && key == groundKey_) return true;
-  // A camera that moves every frame never pays for planes it would use once: they are made
-  // when the same view comes twice in a row.
+  if (groundVisibility_ && key == groundKey_) return true;
+  // A camera that moves every frame never pays for a ground it would use once: it is made when
+  // the same view comes twice in a row.
   const bool again = key == previousKey_;
   previousKey_ = key;
   if (!again) return false;
-  const VkDeviceSize planeBytes = VkDeviceSize(params.width) * params.height * 8u;
-  if (!groundPlanes_ || groundPlanes_.size() != planeBytes) {
-    if (groundPlanes_) {
-      retiredVisibility_.emplace_back(std::move(groundPlanes_), kFramesInFlight + 1);
+  const VkDeviceSize pixels = VkDeviceSize(params.width) * params.height;
+  const VkDeviceSize groundBytes = pixels * sizeof(uint64_t);
+  if (!groundVisibility_ || groundVisibility_.size() != groundBytes) {
+    if (groundVisibility_) {
+      retiredVisibility_.emplace_back(std::move(groundVisibility_), kFramesInFlight + 1);
       retiredVisibility_.emplace_back(std::move(framePlanes_), kFramesInFlight + 1);
     }
     const VkBufferUsageFlags usage =
         gpu::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    groundPlanes_ = gpu::Buffer(*context_, planeBytes, usage, gpu::MemoryUse::DeviceLocal);
-    framePlanes_ = gpu::Buffer(*context_, planeBytes, usage, gpu::MemoryUse::DeviceLocal);
+    groundVisibility_ = gpu::Buffer(*context_, groundBytes, usage, gpu::MemoryUse::DeviceLocal);
+    const VkDeviceSize planeWords =
+        gpu_types::visibilityDepthPlane(uint32_t(pixels)) + VkDeviceSize(pixels);
+    framePlanes_ =
+        gpu::Buffer(*context_, planeWords * sizeof(uint32_t), usage, gpu::MemoryUse::DeviceLocal);
   }
-  // Earlier frames' copies read the planes.
+  // Earlier frames' copies read the ground.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   groundKey_ = key;
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
-      gpu::storageBinding(gpu_types::kRenderBindingGroundPlanes, groundPlanes_)};
+      gpu::storageBinding(gpu_types::kRenderBindingGroundVisibility, groundVisibility_)};
   const VkClearColorValue& clear = params.clearColor;
   const float clearColour[4] = {clear.float32[0], clear.float32[1], clear.float32[2],
                                 clear.float32[3]};
   // A workgroup per 64 pixels of a row, at most 16384 (the shader strides over the rest).
   const uint32_t groups = std::min((params.width + 63u) / 64u * params.height, 16384u);
-  gpu::dispatch(cmd, groundPlanesProgram_, bindings, clearColour, sizeof(clearColour),
-                groups * groundPlanesProgram_.localSizeX());
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
-  passTimer_->mark(cmd, "ground-planes");
+  gpu::dispatch(cmd, groundProgram_, bindings, clearColour, sizeof(clearColour),
+                groups * groundProgram_.localSizeX());
+  passTimer_->mark(cmd, "ground-words");
   return true;
 }
 
-void CrowdRenderer::resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot) {
-  if (!resolveDraw_)
-    resolveDraw_ =
-        gpu::Buffer(*context_, 16, gpu::kStorageUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
-                    gpu::MemoryUse::DeviceLocal);
-  // The previous frame's copy out of the planes and its indirect draw came first.
-  gpu::memoryBarrier(cmd,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
-                         VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT);
-  const VkBufferCopy whole{0, 0, framePlanes_.size()};
-  vkCmdCopyBuffer(cmd, groundPlanes_.get(), framePlanes_.get(), 1, &whole);
+void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
+                                  uint32_t frameSlot) {
+  // The splat's passes (and anything splatting between recordSplat and beginDraw) wrote the
+  // visibility buffer; the previous frame's copy out of the planes read them.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
       gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_),
-      gpu::storageBinding(gpu_types::kRenderBindingPixelOwners, splatLists_.pixelOwners),
-      gpu::storageBinding(gpu_types::kRenderBindingSplatCounters, splatLists_.counters),
-      gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_),
-      gpu::storageBinding(gpu_types::kRenderBindingResolveDraw, resolveDraw_)};
-  gpu::dispatch(cmd, splat_.resolve, bindings, nullptr, 0,
-                gpu_types::kSplatPixelGroups * splat_.resolve.localSizeX());
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT);
+      gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_)};
+  // Two pixels per invocation, at most kPlanesGroups workgroups striding over the rest: lavapipe
+  // pays for every workgroup it starts.
+  const uint32_t pairs = (params.width * params.height + 1u) / 2u;
+  const uint32_t groups = std::min((pairs + 63u) / 64u, gpu_types::kPlanesGroups);
+  gpu::dispatch(cmd, planesProgram_, bindings, nullptr, 0, groups * planesProgram_.localSizeX());
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   passTimer_->mark(cmd, "splat-resolve");
 }
 
 void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target,
-                                 const DrawParams& params, const gpu::Buffer& planes) {
+                                 const DrawParams& params) {
   gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
@@ -314,12 +306,13 @@ void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target
   VkBufferImageCopy region{};
   region.imageExtent = {params.width, params.height, 1};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  vkCmdCopyBufferToImage(cmd, planes.get(), target.color, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                         &region);
-  region.bufferOffset = VkDeviceSize(params.width) * params.height * 4u;
+  vkCmdCopyBufferToImage(cmd, framePlanes_.get(), target.color,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  region.bufferOffset =
+      VkDeviceSize(gpu_types::visibilityDepthPlane(params.width * params.height)) * 4u;
   region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-  vkCmdCopyBufferToImage(cmd, planes.get(), target.depth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                         &region);
+  vkCmdCopyBufferToImage(cmd, framePlanes_.get(), target.depth,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -367,7 +360,7 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
   const bool splat = splats(params);
   const gpu::Buffer* lodLevels =
       params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
-  if (!splat) {  // with the splat, its resolve shades the ground
+  if (!splat) {  // with the splat, the ground is in its resolve
     gpu::Binding groundBindings[] = {gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms)};
     ground_.bind(cmd, groundBindings, nullptr, 0);
     vkCmdDraw(cmd, 6, 1, 0, 0);
@@ -418,17 +411,12 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
     }
   }
   passTimer_->mark(cmd, "near-joints");
-  if (splat) {
+  if (splat && !groundCopied_) {  // otherwise the planes copied in hold the splat
     gpu::Binding resolveBindings[] = {
         gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
         gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_)};
-    const uint32_t withGround = groundCopied_ ? 0u : 1u;
-    resolve_.bind(cmd, resolveBindings, &withGround, sizeof(withGround));
-    if (entriesResolved_) {
-      vkCmdDrawIndirect(cmd, resolveDraw_.get(), 0, 1, 16);  // empty unless the lists overflowed
-    } else {
-      vkCmdDraw(cmd, 3, 1, 0, 0);
-    }
+    resolve_.bind(cmd, resolveBindings, nullptr, 0);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
     passTimer_->mark(cmd, "resolve");
   }
 }
@@ -452,7 +440,7 @@ void CrowdRenderer::endDraw(VkCommandBuffer cmd, const FrameTargets& target) {
 
 void CrowdRenderer::record(VkCommandBuffer cmd, const FrameTargets& target,
                            const DrawParams& params, uint32_t frameSlot) {
-  recordSplat(cmd, params, frameSlot);
+  recordSplat(cmd, target, params, frameSlot);
   beginDraw(cmd, target, params, frameSlot);
   endDraw(cmd, target);
 }

@@ -35,9 +35,6 @@ struct DrawParams {
   const gpu::Buffer* groups = nullptr;  // storyboard group per character (uint): colour by group
   CachedPoseInputs cachedPoses;  // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
-  // Something else splats into the visibility buffer between recordSplat and beginDraw (the
-  // capes): the splat is then resolved by the full-screen pass, which sees every pixel.
-  bool otherSplats = false;
   // Static walls drawn as panels: segments (ax, az, bx, bz) as RGBA32F uniform texels.
   VkBufferView wallSegments = VK_NULL_HANDLE;
   uint32_t wallSegmentCount = 0;
@@ -58,18 +55,20 @@ class CrowdRenderer {
 
   // The draw in three steps, so that a frame can put other work between them (the capes'
   // splat into the visibility buffer, their draw inside the render pass):
-  //  1. recordSplat: the camera uniforms of `frameSlot`, then the compute splat of small joints;
-  //     returns the visibility buffer it wrote (null when every joint is drawn as a sprite);
-  //  2. beginDraw: resolves the splat and the ground by compute and copies them into the target
-  //     (a target with transferDst) or clears it, begins the render pass and draws the walls,
-  //     the near joints and, without the compute resolve, the ground and the resolved splat
-  //     (viewport and scissor stay set);
+  //  1. recordSplat: the camera uniforms of `frameSlot`, then the compute splat of small joints
+  //     into the visibility buffer, which starts as the ground when `target` takes copies and
+  //     the view is the previous frame's; returns the buffer (null when every joint is drawn as
+  //     a sprite). Whatever splats into it before beginDraw is resolved with the joints;
+  //  2. beginDraw (the same frame, the same target): puts the visibility buffer into the
+  //     target's colour and depth by compute and copies (a ground in the buffer) or clears the
+  //     target, begins the render pass and draws the walls, the near joints and, with the target
+  //     cleared, the ground and the splat by one full-screen pass (viewport and scissor stay set);
   //  3. endDraw: ends the render pass and leaves the colour image in target.finalLayout.
   // `frameSlot` < kFramesInFlight picks the uniform buffer; reuse a slot only after the frame
   // that last used it has completed. Not const: the splat's visibility buffer follows the
   // target size (old buffers are kept until no frame in flight can use them).
-  const gpu::Buffer* recordSplat(VkCommandBuffer cmd, const DrawParams& params,
-                                 uint32_t frameSlot = 0);
+  const gpu::Buffer* recordSplat(VkCommandBuffer cmd, const FrameTargets& target,
+                                 const DrawParams& params, uint32_t frameSlot = 0);
   void beginDraw(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
                  uint32_t frameSlot = 0);
   void endDraw(VkCommandBuffer cmd, const FrameTargets& target);
@@ -106,24 +105,22 @@ class CrowdRenderer {
   void ensureVisibility(uint32_t width, uint32_t height);
   bool splats(const DrawParams& params) const;
   void drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
-  // The target's two ways into the render pass: cleared, or the ground planes copied in.
+  // The target's two ways into the render pass: cleared, or the resolved planes copied in.
   void clearTargets(VkCommandBuffer cmd, const FrameTargets& target);
-  // True when planes of this view exist or were recorded now (the same view twice in a row).
-  bool groundPlanesFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
-  // The splat resolved into a copy of the ground planes, per splatted pixel entry.
-  void resolveEntries(VkCommandBuffer cmd, uint32_t frameSlot);
-  void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
-                    const gpu::Buffer& planes);
+  // True when the ground of this view exists or was recorded now (the same view twice in a row).
+  bool groundFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
+  // The visibility buffer (ground and splat) into framePlanes_, then into the target.
+  void resolvePlanes(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
+  void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
                       bool load);
-  gpu::ComputeProgram groundPlanesProgram_;
-  gpu::Buffer groundPlanes_;          // ground.comp's colour and depth planes
-  std::vector<uint8_t> groundKey_;    // the view they show (uniforms and clear colour)
-  std::vector<uint8_t> previousKey_;  // the previous frame's view
-  bool groundCopied_ = false;         // this frame's render pass loads the planes
-  gpu::Buffer framePlanes_;       // this frame's: the ground's with the splat resolved into them
-  gpu::Buffer resolveDraw_;       // the fragment resolve's indirect draw (3 vertices on overflow)
-  bool entriesResolved_ = false;  // this frame's splat is in framePlanes_
+  gpu::ComputeProgram groundProgram_;  // ground.comp
+  gpu::ComputeProgram planesProgram_;  // visibility_planes.comp
+  gpu::Buffer groundVisibility_;       // ground.comp's words, the visibility buffer's start
+  std::vector<uint8_t> groundKey_;     // the view they show (uniforms and clear colour)
+  std::vector<uint8_t> previousKey_;   // the previous frame's view
+  bool groundCopied_ = false;          // this frame's splat started from the ground
+  gpu::Buffer framePlanes_;            // this frame's colour and depth planes
 };
 
 }  // namespace throng::render

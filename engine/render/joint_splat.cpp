@@ -46,8 +46,7 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapa
   return {gpu::ComputeProgram(context, "joint_splat_list.comp"),
           gpu::ComputeProgram(context, "joint_splat.comp", splat),
           gpu::ComputeProgram(context, "joint_splat_walk.comp", splat),
-          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities),
-          gpu::ComputeProgram(context, "joint_splat_resolve.comp", capacities)};
+          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities)};
 }
 
 SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
@@ -95,6 +94,13 @@ std::vector<std::string> SplatJob::validate() const {
   if (visibility && *visibility &&
       visibility->size() < VkDeviceSize(width) * height * sizeof(uint64_t))
     problems.push_back(concat("output 'visibility' holds ", visibility->size(), " bytes, ", width,
+                              "x", height, " needs ",
+                              VkDeviceSize(width) * height * sizeof(uint64_t)));
+  if (initialVisibility &&
+      (!*initialVisibility ||
+       initialVisibility->size() < VkDeviceSize(width) * height * sizeof(uint64_t)))
+    problems.push_back(concat("input 'initialVisibility' holds ",
+                              *initialVisibility ? initialVisibility->size() : 0, " bytes, ", width,
                               "x", height, " needs ",
                               VkDeviceSize(width) * height * sizeof(uint64_t)));
   if (characterCount > 0 && jointCount == 0) problems.push_back("jointCount is zero");
@@ -212,12 +218,17 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
 void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const {
   gpu::throwIfInvalid("SplatJob", validate());
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
-  // The previous frame's resolve may still read the buffer: order the clear after it.
+  // The previous frame's resolve may still read the buffer, and the initial words were just
+  // written by a compute pass: order the reset after both.
   gpu::memoryBarrier(cmd,
                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_TRANSFER_BIT);
   if (timer) timer->mark(cmd, "setup");
-  vkCmdFillBuffer(cmd, visibility->get(), 0, pixels * sizeof(uint64_t), 0xFFFFFFFFu);
+  const VkBufferCopy initial{0, 0, pixels * sizeof(uint64_t)};
+  if (initialVisibility)
+    vkCmdCopyBuffer(cmd, initialVisibility->get(), visibility->get(), 1, &initial);
+  else
+    vkCmdFillBuffer(cmd, visibility->get(), 0, pixels * sizeof(uint64_t), 0xFFFFFFFFu);
   vkCmdFillBuffer(cmd, counters->get(), 0, 16, 0u);
   if (timer) timer->mark(cmd, "clear");
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);

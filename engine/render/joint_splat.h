@@ -4,7 +4,7 @@
 // ellipsoid each (joint_far_body.glsl) and lists the others, whose joints the second pass
 // (joint_splat_walk.comp) walks; each joint's ellipsoid is ray-cast over its few screen pixels
 // (one invocation per pixel, see joint_splat_pixels.comp). The nearest hit per pixel is kept in
-// a visibility buffer of (depth << 32 | colour), which a resolve pass puts into the frame with
+// a visibility buffer of (depth << 32 | colour), which the renderer puts into the frame with
 // depth. On lavapipe this is an order of magnitude cheaper than sending tens of
 // thousands of tiny sprites through the single-threaded vertex pipeline.
 #include <string>
@@ -40,15 +40,14 @@ struct CachedPoseInputs {
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 
-// joint_splat.comp (far bodies), joint_splat_walk.comp (a sprite per joint),
-// joint_splat_pixels.comp (an invocation per pixel) and joint_splat_resolve.comp, specialized with
-// the work lists' capacities and the far body's height (0: every character by its joints).
+// joint_splat.comp (far bodies), joint_splat_walk.comp (a sprite per joint) and
+// joint_splat_pixels.comp (an invocation per pixel), specialized with the work lists' capacities
+// and the far body's height (0: every character by its joints).
 struct SplatPrograms {
   gpu::ComputeProgram onScreen;  // joint_splat_list.comp: the characters on screen
   gpu::ComputeProgram joints;    // joint_splat.comp: their far bodies and the walk list
   gpu::ComputeProgram walk;      // joint_splat_walk.comp: the listed characters' joints
   gpu::ComputeProgram pixels;
-  gpu::ComputeProgram resolve;  // joint_splat_resolve.comp (CrowdRenderer)
 };
 SplatPrograms makeSplatPrograms(const gpu::Context& context,
                                 uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
@@ -79,7 +78,7 @@ SplatLists makeSplatLists(const gpu::Context& context,
 struct SplatJob {
   const gpu::Buffer* joints = nullptr;         // input: JointMatrix per character per joint
   const gpu::Buffer* frameUniforms = nullptr;  // input: gpu_types::FrameUniforms
-  const gpu::Buffer* visibility = nullptr;     // output: width × height uint64, cleared first
+  const gpu::Buffer* visibility = nullptr;     // output: width × height uint64, reset first
   const gpu::Buffer* draws = nullptr;  // output: VkDrawIndirectCommand per chunk (too-wide joints)
   const gpu::Buffer* nearList = nullptr;  // output: chunk-local indices of too-wide joints
   uint32_t width = 0, height = 0;
@@ -111,10 +110,13 @@ struct SplatJob {
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
   SplatWalk walk = SplatWalk::PerCharacter;  // the same picture either way
+  // Optional input: width × height uint64 the visibility buffer starts from (the ground's words,
+  // so the splat's atomicMin keeps the nearer of the ground and each hit); null: kEmptyPixel.
+  const gpu::Buffer* initialVisibility = nullptr;
 
   std::vector<std::string> validate() const;
-  // Clears the visibility buffer, lists the characters on screen and splats them (chunked);
-  // leaves barriers for the fragment-shader resolve.
+  // Resets the visibility buffer, lists the characters on screen and splats them (chunked);
+  // leaves barriers for the resolves (compute or fragment shader).
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 
  private:

@@ -19,8 +19,14 @@ PassTimer::PassTimer(const gpu::Context& context) {
 
 PassTimer::~PassTimer() {
   if (!pool_) return;
-  // The last frame's marks: the owner has waited for its frames before destroying the renderer.
-  collect();
+  // The last frame's marks: the owner has waited for its frames before destroying the renderer,
+  // unless recording failed (the marks were never submitted: they are dropped, and a destructor
+  // neither waits for them nor throws).
+  try {
+    collect(pool_->fetchIfAvailable());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pass times: %s\n", e.what());
+  }
   for (const std::string& pass : order_) {
     std::vector<double>& t = times_[pass];
     std::sort(t.begin(), t.end());
@@ -29,9 +35,7 @@ PassTimer::~PassTimer() {
   }
 }
 
-void PassTimer::collect() {
-  if (pending_.empty()) return;
-  const std::vector<uint64_t> ticks = pool_->fetch();
+void PassTimer::collect(const std::vector<uint64_t>& ticks) {
   for (size_t i = 0; i < pending_.size() && i + 1 < ticks.size(); ++i) {
     if (!times_.count(pending_[i])) order_.push_back(pending_[i]);
     times_[pending_[i]].push_back(pool_->millisecondsBetween(ticks, uint32_t(i), uint32_t(i + 1)));
@@ -41,7 +45,7 @@ void PassTimer::collect() {
 
 void PassTimer::beginFrame(VkCommandBuffer cmd) {
   if (!pool_) return;
-  collect();
+  if (!pending_.empty()) collect(pool_->fetch());
   pool_->reset();
   pool_->write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
 }

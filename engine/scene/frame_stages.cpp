@@ -71,11 +71,10 @@ std::vector<std::string> DrawStage::validate() const {
 
 void DrawStage::record(VkCommandBuffer cmd) const {
   gpu::throwIfInvalid("DrawStage", validate());
-  render::DrawParams drawParams = params;
-  drawParams.otherSplats = capes != nullptr;  // the capes splat into the visibility buffer too
-  const gpu::Buffer* visibility = renderer->recordSplat(cmd, drawParams, frameSlot);
+  // The capes splat into the joints' visibility buffer, which beginDraw resolves.
+  const gpu::Buffer* visibility = renderer->recordSplat(cmd, targets, params, frameSlot);
   if (capes && visibility) capes->recordSplat(cmd, *visibility, frameSlot);
-  renderer->beginDraw(cmd, targets, drawParams, frameSlot);
+  renderer->beginDraw(cmd, targets, params, frameSlot);
   if (capes) capes->recordDraw(cmd, frameSlot);
   renderer->endDraw(cmd, targets);
 }

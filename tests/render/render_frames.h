@@ -34,9 +34,9 @@ inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const ren
   return render::readbackImage(target);
 }
 
-// One crowd animated by one pair, three frames through the per-pixel resolve (the offscreen
-// path, [0]) and through the full-screen pass (the swapchain's, [1]): the ground planes are made
-// when the view comes a second time, then reused.
+// One crowd animated by one pair, three frames through the full-screen pass (the swapchain's,
+// [0]) and through the splat over the ground's words (the offscreen path, [1]): the ground is
+// made when the view comes a second time, then reused.
 inline std::array<ImageRgba8, 2> renderBothResolves(gpu::Context& ctx, const crowd::Crowd& crowd,
                                                     const anim::MotionPair& pair,
                                                     const render::Camera& camera,

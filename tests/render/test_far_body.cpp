@@ -164,8 +164,10 @@ TEST_CASE("far body: its pixels reach the frame through both resolves alike") {
   lod.skeleton = &clips.slow.skeleton;
   const std::array<ImageRgba8, 2> images = test::renderBothResolves(ctx, crowd, pair, camera, lod);
   const ImageDiff diff = compareImages(images[1], images[0], 2);
-  MESSAGE("wide, 3000 characters at 320x180 with LOD: per-pixel resolve vs full-screen pass: mean ",
-          diff.meanAbsError, ", max ", diff.maxError);
+  MESSAGE(
+      "wide, 3000 characters at 320x180 with LOD: splat over the ground's words vs full-screen "
+      "pass: mean ",
+      diff.meanAbsError, ", max ", diff.maxError);
   CHECK(diff.maxError <= 2);
   CHECK(diff.meanAbsError < 0.05);
   CHECK(ctx.validationMessageCount() == 0);

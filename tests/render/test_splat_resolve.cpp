@@ -1,7 +1,8 @@
 // The two resolves of the joint splat draw the same frame: on a target that takes copies, the
-// ground's planes (ground.comp, kept while the view stands still) with the splat resolved into
-// them per splatted pixel (joint_splat_resolve.comp); on any other target (the viewer's
-// swapchain), one full-screen fragment pass that shades the ground and resolves the splat.
+// splat starts from the ground's words (ground.comp, kept while the view stands still) and
+// visibility_planes.comp splits the result into the colour and depth copied in; on any other
+// target (the viewer's swapchain), one full-screen fragment pass shades the ground and resolves
+// the splat.
 #include <doctest/doctest.h>
 
 #include "anim/default_clips.h"
@@ -17,7 +18,7 @@ using namespace throng;
 
 namespace {}  // namespace
 
-TEST_CASE("splat resolve: ground planes + per-pixel resolve equal the full-screen pass") {
+TEST_CASE("splat resolve: the splat over the ground's words equals the full-screen pass") {
   gpu::Context& ctx = test::gpuContext();
   if (!ctx.info().int64Atomics) {
     MESSAGE("SKIPPED: device lacks 64-bit buffer atomics (no splat)");
@@ -35,7 +36,7 @@ TEST_CASE("splat resolve: ground planes + per-pixel resolve equal the full-scree
     const std::array<ImageRgba8, 2> images =
         test::renderBothResolves(ctx, crowd, pair, camera, synth::LodOptions{});
     ImageDiff diff = compareImages(images[1], images[0], 2);
-    MESSAGE(std::string(preset), ": per-pixel resolve vs full-screen pass: mean ",
+    MESSAGE(std::string(preset), ": splat over the ground's words vs full-screen pass: mean ",
             diff.meanAbsError, ", max ", diff.maxError, ", pixels over 2 levels ",
             diff.fractionDifferent);
     // The ground's grid-line widths come from neighbouring ground points instead of fragment
