@@ -8,23 +8,18 @@
 layout(constant_id = 0) const uint kSpriteCapacity = kSplatSpriteCapacity;
 layout(constant_id = 1) const uint kPixelCapacity = kSplatPixelCapacity;
 
-// Entries reserved: the sprites' pixel entries count up from the first entry, the far bodies'
-// down from the last (all of a frame's bodies are reserved before any sprite), so the pixel pass
-// visits the sprites' entries only.
+// Sprites and pixel entries reserved (the far bodies reserve none: they write their pixels
+// themselves).
 struct SplatCounters {
   uint sprites;
-  uint pixels;      // sprites' pixel entries, from entry 0 up
-  uint bodyPixels;  // far bodies' hit pixels, from entry kPixelCapacity − 1 down
+  uint pixels;
 };
 
-// How many entries the far bodies hold, how many the sprites may fill (the rest), and how many
-// of those they hold.
-uint bodyEntries(SplatCounters c) { return min(c.bodyPixels, kPixelCapacity); }
-uint spriteEntryLimit(SplatCounters c) { return kPixelCapacity - bodyEntries(c); }
-uint spriteEntries(SplatCounters c) { return min(c.pixels, spriteEntryLimit(c)); }
+// The entries the pixel pass visits: those reserved, up to the capacity.
+uint spriteEntries(SplatCounters c) { return min(c.pixels, kPixelCapacity); }
 
-// A pixel entry (render_bindings.h): screen pixel xy and the sprite to ray-cast there (a far
-// body's entry: 0; kSplatNoSprite: no entry).
+// A pixel entry (render_bindings.h): screen pixel xy and the sprite to ray-cast there
+// (kSplatNoSprite: no entry).
 uint64_t splatEntry(ivec2 xy, uint sprite) {
   return (uint64_t(uint(xy.x) | (uint(xy.y) << 16)) << 32) | uint64_t(sprite);
 }

@@ -5,8 +5,7 @@
 // The far joints, step 2: one invocation per reserved pixel entry (joint_splat.comp) ray-casts
 // its sprite's ellipsoid through the pixel the entry names, so neighbouring lanes do equal work
 // whatever the sprites' sizes. A fixed number of workgroups strides over the entries, so the pass
-// needs no indirect arguments. The far bodies' entries, counted down from the last
-// (SplatCounters), are not visited. CPU twin: render::splatJointsCpu.
+// needs no indirect arguments. CPU twin: render::splatJointsCpu.
 #include "shared_types.h"
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
@@ -20,7 +19,7 @@ layout(std430, binding = kRenderBindingPixelOwners) readonly buffer Owners { uin
 layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { SplatCounters counters; };
 
 void main() {
-  uint total = spriteEntries(counters);  // the sprites' entries alone
+  uint total = spriteEntries(counters);
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
     uint64_t e = owners[entry];

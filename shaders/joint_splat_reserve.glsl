@@ -14,16 +14,16 @@ bool spriteBox(JointSprite s, out ivec2 lo, out ivec2 hi) {
 
 // One reservation per subgroup (its lanes' sprites and pixels summed), not two atomics per
 // joint on two shared counters: lavapipe runs a lane's atomics one at a time. Returns the first
-// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities (the
-// entries below `limit`, where the far bodies' begin: spriteEntryLimit). The caller gives every
-// entry reserved below the limit its value, kSplatNoEntry when the entries are not kept (in the
+// pixel entry; `fits` when the sprite (if any) and every entry are below the capacities. The
+// caller gives every entry reserved below the capacity its value, kSplatNoEntry when the entries
+// are not kept (in the
 // loop that writes them: a loop of its own here would run its body for every caller, its lanes
 // masked off). A lane's sprite and entries travel as one word (render_bindings.h,
 // kSplatReserveSpriteShift), so one sum and one scan over the subgroup serve both: lavapipe runs
 // each as a loop over the lanes.
 const uint kReservePixelMask = (1u << kSplatReserveSpriteShift) - 1u;
 
-uint reserveEntries(uint spriteCount, uint pixelCount, uint limit, out uint sprite, out bool fits) {
+uint reserveEntries(uint spriteCount, uint pixelCount, out uint sprite, out bool fits) {
   uint spriteBase = 0u, firstBase = 0u;
   uint word = (spriteCount << kSplatReserveSpriteShift) | pixelCount;
   uint total = subgroupAdd(word);
@@ -35,19 +35,8 @@ uint reserveEntries(uint spriteCount, uint pixelCount, uint limit, out uint spri
   uint before = subgroupExclusiveAdd(word);
   sprite = subgroupBroadcastFirst(spriteBase) + (before >> kSplatReserveSpriteShift);
   uint first = subgroupBroadcastFirst(firstBase) + (before & kReservePixelMask);
-  fits = (spriteCount == 0u || sprite < kSpriteCapacity) && first <= limit - min(pixelCount, limit);
-  return first;
-}
-
-// A far body's `hits` entries, one reservation per subgroup, counted down from the last entry
-// (SplatCounters): returns the body's first, as a count from the top; `fits` when all are within
-// the capacity.
-uint reserveBodyEntries(uint hits, out bool fits) {
-  uint base = 0u;
-  uint total = subgroupAdd(hits);
-  if (subgroupElect() && total > 0u) base = atomicAdd(counters.bodyPixels, total);
-  uint first = subgroupBroadcastFirst(base) + subgroupExclusiveAdd(hits);
-  fits = first <= kPixelCapacity - min(hits, kPixelCapacity);
+  fits = (spriteCount == 0u || sprite < kSpriteCapacity) &&
+         first <= kPixelCapacity - min(pixelCount, kPixelCapacity);
   return first;
 }
 
@@ -103,8 +92,8 @@ ivec2 silhouetteRow(Silhouette c, int row, ivec2 lo, ivec2 hi) {
 // centre its silhouette holds (about two thirds of the box: a slanted bone leaves most of it
 // empty), for the pixel pass; listed for the graphics pipeline's draw instead when it is too wide,
 // or when the work lists are full. Not splatted here in that case: lavapipe would run that loop's
-// body, ray-cast and all, for every joint with its lanes masked off. limit: spriteEntryLimit.
-void splatSprite(uint joint, JointSprite s, vec3 tint, uint limit) {
+// body, ray-cast and all, for every joint with its lanes masked off.
+void splatSprite(uint joint, JointSprite s, vec3 tint) {
   ivec2 lo = ivec2(0), hi = ivec2(-1);  // too wide: an empty box, so its lanes skip the rows
   bool wide = s.sizePx > push.maxPixels;
   if (!wide && !spriteBox(s, lo, hi)) return;
@@ -116,7 +105,7 @@ void splatSprite(uint joint, JointSprite s, vec3 tint, uint limit) {
   }
   uint sprite;
   bool fits;
-  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, limit, sprite, fits);
+  uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits);
   if (wide || !fits) {
     uint slot = atomicAdd(draws[4 * push.chunk], 1u);
     nearList[push.listBase + slot] = joint;
@@ -125,7 +114,7 @@ void splatSprite(uint joint, JointSprite s, vec3 tint, uint limit) {
   for (int y = lo.y; y <= hi.y; ++y) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
     for (int x = span.x; x <= span.y; ++x, ++entry)
-      if (entry < limit) owners[entry] = fits ? splatEntry(ivec2(x, y), sprite) : kSplatNoEntry;
+      if (entry < kPixelCapacity) owners[entry] = fits ? splatEntry(ivec2(x, y), sprite) : kSplatNoEntry;
   }
   if (fits && pixelCount > 0u) sprites[sprite] = SplatSprite(s.inverse0, s.inverse1, s.inverse2, vec4(tint, 0.0));
 }
@@ -137,20 +126,12 @@ ivec2 boxPixel(ivec2 lo, uint boxWidth, uint i) {
   return lo + ivec2(i - row * boxWidth, row);
 }
 
-// A far body's hit pixel: its visibility atomicMin and its entry, `fromTop` entries down from the
-// last (none when the entries do not fit).
-void splatBodyPixel(ivec2 xy, uint64_t packed, bool fits, uint fromTop) {
-  uint pixel = uint(xy.y) * uint(frame.viewport.x) + uint(xy.x);
-  atomicMin(visibility[pixel], packed);
-  if (fromTop < kPixelCapacity) owners[kPixelCapacity - 1u - fromTop] = fits ? splatEntry(xy, 0u) : kSplatNoEntry;
-}
-
 // A far body: a few pixels, about as many in every lane, so they are covered here rather than
 // through a sprite. Shaded once, where the ray through its centre hits it, and at that depth:
-// per pixel only whether the ray meets the ellipsoid (farBodyPixel), so that only the pixels hit
-// get entries (naming them, for the resolve). A box of at most 64 pixels keeps its hits as bits
-// and visits only those (lanes wait for the most hits, not the largest box); a larger one asks
-// each pixel again.
+// per pixel only whether the ray meets the ellipsoid (farBodyPixel), and an atomicMin where it
+// does. Nothing is listed: the frame's resolve reads every pixel. A box of at most 64 pixels
+// keeps its hits as bits and visits only those (lanes wait for the most hits, not the largest
+// box); a larger one asks each pixel again.
 void splatBody(JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
@@ -158,32 +139,30 @@ void splatBody(JointSprite s, vec3 tint) {
   uint pixelCount = boxWidth * uint(hi.y - lo.y + 1);
   mat3 inv = transpose(mat3(s.inverse0.xyz, s.inverse1.xyz, s.inverse2.xyz));
   vec3 o = inv * frame.eye.xyz + vec3(s.inverse0.w, s.inverse1.w, s.inverse2.w);
-  uint hits = 0u;
-  uvec2 hitBits = uvec2(0u);
-  for (uint i = 0u; i < pixelCount; ++i) {  // one loop over the box, not rows then columns
-    if (!farBodyPixel(o, inv, vec2(boxPixel(lo, boxWidth, i)) + 0.5)) continue;
-    ++hits;
-    if (i < 32u) hitBits.x |= 1u << i;
-    else if (i < 64u) hitBits.y |= 1u << (i - 32u);
-  }
-  bool fits;
-  uint first = reserveBodyEntries(hits, fits);
   uint64_t packed = farBodyShade(s, tint);
+  uint width = uint(frame.viewport.x);
   if (pixelCount <= 64u) {
+    uint hits = 0u;
+    uvec2 hitBits = uvec2(0u);
+    for (uint i = 0u; i < pixelCount; ++i) {  // one loop over the box, not rows then columns
+      if (!farBodyPixel(o, inv, vec2(boxPixel(lo, boxWidth, i)) + 0.5)) continue;
+      ++hits;
+      if (i < 32u) hitBits.x |= 1u << i;
+      else hitBits.y |= 1u << (i - 32u);
+    }
     for (uint k = 0u; k < hits; ++k) {
       bool low = hitBits.x != 0u;
       uint i = low ? uint(findLSB(hitBits.x)) : 32u + uint(findLSB(hitBits.y));
       if (low) hitBits.x &= hitBits.x - 1u;
       else hitBits.y &= hitBits.y - 1u;
-      splatBodyPixel(boxPixel(lo, boxWidth, i), packed, fits, first + k);
+      ivec2 xy = boxPixel(lo, boxWidth, i);
+      atomicMin(visibility[uint(xy.y) * width + uint(xy.x)], packed);
     }
     return;
   }
-  for (uint i = 0u, k = 0u; i < pixelCount; ++i) {
+  for (uint i = 0u; i < pixelCount; ++i) {
     ivec2 xy = boxPixel(lo, boxWidth, i);
-    if (!farBodyPixel(o, inv, vec2(xy) + 0.5)) continue;
-    splatBodyPixel(xy, packed, fits, first + k);
-    ++k;
+    if (farBodyPixel(o, inv, vec2(xy) + 0.5)) atomicMin(visibility[uint(xy.y) * width + uint(xy.x)], packed);
   }
 }
 

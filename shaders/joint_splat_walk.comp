@@ -39,9 +39,8 @@ layout(std430, binding = kRenderBindingSplatCounters) buffer Counters { SplatCou
 layout(std430, binding = kRenderBindingWalkList) readonly buffer WalkList { uint walkList[]; };
 layout(std430, binding = kRenderBindingListCounts) readonly buffer ListCounts { uint listCounts[]; };
 
-// Joints first..end-1 of chunk-local character `local`; limit: where the far bodies' entries
-// begin (spriteEntryLimit).
-void walkJoints(uint local, uint first, uint end, uint limit) {
+// Joints first..end-1 of chunk-local character `local`.
+void walkJoints(uint local, uint first, uint end) {
   uint character = local + push.firstCharacter;
   uint base = local * push.jointCount;  // its first joint in the chunk
   uvec4 mask = characterMask(character);
@@ -52,16 +51,15 @@ void walkJoints(uint local, uint first, uint end, uint limit) {
     JointMatrix a;
     if (!drawnPoseJoint(base + j, pose, j, push.flags, mask, bones, a)) continue;
     JointSprite s = jointSprite(a, frame);
-    if (s.visible) splatSprite(base + j, s, tint, limit);
+    if (s.visible) splatSprite(base + j, s, tint);
   }
 }
 
 void main() {
   uint k = gl_GlobalInvocationID.x;
   if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs]) return;
-  uint limit = spriteEntryLimit(counters);  // every far body was reserved by the pass before
   bool perJoint = gl_NumWorkGroups.y > 1u;  // a row per joint (one joint: the same either way)
   uint first = perJoint ? gl_WorkGroupID.y : 0u;
   uint end = perJoint ? first + 1u : push.jointCount;
-  walkJoints(walkList[push.firstCharacter + k], first, end, limit);
+  walkJoints(walkList[push.firstCharacter + k], first, end);
 }

@@ -43,9 +43,8 @@ const uint kSplatSpriteBytes = 64u;          // SplatSprite
 const uint kSplatPixelCapacity = 4194304u;   // 4 Mi pixel entries (a 1280×720 frame 4.5 times)
 const uint kSplatEntryBytes = 8u;            // a pixel entry: 64 bits
 // A pixel entry names its screen pixel from the start, x | y << 16 in its high 32 bits, and its
-// sprite in the low 32 (a far body's entry: 0, the pixel pass does not visit it). So the pixel
-// pass finds its pixel without the sprite's box and the resolve finds it without the pixel pass
-// writing it back. An entry reserved past a capacity has kSplatNoSprite for its sprite.
+// sprite in the low 32, so the pixel pass finds its pixel without the sprite's box. An entry
+// reserved past a capacity has kSplatNoSprite for its sprite.
 const uint kSplatNoSprite = 0xFFFFFFFFu;     // an entry's sprite bits: no entry
 const uint kSplatMaxSpritePixels = 64u;      // the largest maxPixels a splat accepts
 // The walk reserves a joint's sprite and its pixel entries as one word (joint_splat_reserve.glsl):

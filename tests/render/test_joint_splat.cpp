@@ -131,7 +131,7 @@ struct SplatCase {
 struct GpuSplat {
   std::vector<uint64_t> visibility;
   std::vector<uint32_t> nearJoints;  // listed for the graphics pipeline: crowd-wide, sorted
-  std::vector<uint32_t> counters;    // sprites, sprite pixels, far-body pixels reserved
+  std::vector<uint32_t> counters;    // sprites and sprite pixels reserved
   std::vector<uint32_t> listCounts;  // per chunk (render_bindings.h, kSplatListArgsWords)
   std::vector<uint32_t> onScreenEntries;
 };
@@ -172,7 +172,7 @@ class GpuSplatRun {
         g.nearJoints.push_back(first + nearEntries[first + n]);
     }
     std::sort(g.nearJoints.begin(), g.nearJoints.end());
-    g.counters = gpu::readback<uint32_t>(ctx_, lists_.counters, 3);
+    g.counters = gpu::readback<uint32_t>(ctx_, lists_.counters, 2);
     g.listCounts =
         gpu::readback<uint32_t>(ctx_, listCounts_, chunks_.size() * gpu_types::kSplatListArgsWords);
     g.onScreenEntries = gpu::readback<uint32_t>(ctx_, onScreenList_, c_.characters());
@@ -318,9 +318,7 @@ VisibilityDiff compareVisibility(const std::vector<uint64_t>& gpu,
 bool checkVisibility(const SplatCase& c, const GpuSplat& g, const render::SplatInputsCpu& drawn,
                      const gpu_types::FrameUniforms& frame) {
   MESSAGE("work lists: ", g.counters[0], " sprites (capacity ", c.spriteCapacity, "), ",
-          g.counters[1], " sprite pixels and ", g.counters[2], " far-body pixels (capacity ",
-          c.pixelCapacity, ")");
-  if (c.levels) CHECK(g.counters[2] > 0);  // the far bodies' entries, counted apart
+          g.counters[1], " sprite pixels (capacity ", c.pixelCapacity, ")");
   CHECK(g.counters[0] > 0);
   render::SplatCpuResult cpu =
       render::splatJointsCpu(drawn.joints, frame, c.joints, c.maxPixels, c.width, c.height);
@@ -328,8 +326,7 @@ bool checkVisibility(const SplatCase& c, const GpuSplat& g, const render::SplatI
   std::vector<uint32_t> overflowed;
   std::set_difference(g.nearJoints.begin(), g.nearJoints.end(), wide.begin(), wide.end(),
                       std::back_inserter(overflowed));
-  const bool full =
-      g.counters[0] > c.spriteCapacity || g.counters[1] + g.counters[2] > c.pixelCapacity;
+  const bool full = g.counters[0] > c.spriteCapacity || g.counters[1] > c.pixelCapacity;
   MESSAGE(overflowed.size(), " joints listed because the work lists were full");
   CHECK(full == !overflowed.empty());
   CHECK(std::includes(g.nearJoints.begin(), g.nearJoints.end(), wide.begin(), wide.end()));
