@@ -52,6 +52,10 @@ void main() {
     } else {
       depth = 1.0;
     }
-    ground[row * width + x] = uvec2(colour, floatBitsToUint(depth));
+    // One step further than the ground (below 1.0, which the depth image needs): a hit at the
+    // ground's own depth (a foot on it) wins the atomicMin, as it wins splat_resolve.frag's test.
+    uint depthBits = floatBitsToUint(depth);
+    if (depth < 1.0) depthBits += 1u;
+    ground[row * width + x] = uvec2(colour, depthBits);
   }
 }
