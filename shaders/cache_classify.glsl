@@ -1,6 +1,8 @@
-// The body of cache_classify.comp and cache_classify_groups.comp (which defines
+// The body of cache_classify.comp, cache_classify_groups.comp (which defines
 // THRONG_CACHE_CLASSIFY_GROUPS: every clip set of a crowd in one dispatch, each character's
-// cache from its group's entry in the group table, the groups' bucketSlot in one buffer).
+// cache from its group's entry in the group table, the groups' bucketSlot in one buffer) and
+// cache_classify_scheduled.comp (THRONG_CACHE_CLASSIFY_SCHEDULED: the update-rate LOD's moved
+// chunks, a workgroup each, update_rate.h).
 // Motion cache, step 4 (one invocation per character of a chunk, or of the crowd). A character whose bucket is
 // resident gets its poseSource: the row of its cache entry nearest its phase (rows are dense
 // enough for smooth playback, synth::cacheRowCount says why), from which the renderer composes
@@ -18,9 +20,13 @@ layout(std430, binding = kCacheClassifyBindingBucketSlot) readonly buffer Bucket
 layout(std430, binding = kCacheClassifyBindingCharacterList) writeonly buffer CharacterList { uint characterList[]; };
 layout(std430, binding = kCacheClassifyBindingListCounts) buffer ListCounts { uint listCounts[]; };
 layout(std430, binding = kCacheClassifyBindingPoseSource) writeonly buffer PoseSource { uint poseSource[]; };
-#ifdef THRONG_CACHE_CLASSIFY_GROUPS
+#if defined(THRONG_CACHE_CLASSIFY_GROUPS)
 layout(push_constant) uniform Push { ClassifyGroupsPush push; };
 layout(std140, binding = kCacheClassifyBindingGroups) uniform Groups { SynthGroupTable table; };
+#elif defined(THRONG_CACHE_CLASSIFY_SCHEDULED)
+layout(push_constant) uniform Push { ClassifySchedulePush push; };
+layout(std430, binding = kCacheClassifyBindingChunkList) readonly buffer ChunkList { uvec2 chunkList[]; };
+layout(std430, binding = kCacheClassifyBindingArgs) readonly buffer Args { ScheduledClassifyArgs args; };
 #else
 layout(push_constant) uniform Push { CachePush push; };
 #endif
@@ -31,6 +37,7 @@ struct CacheOf {
   uint slotBase, bucketCount, rowCount, dataBase, chunk, chunkFirst;
 };
 
+#ifndef THRONG_CACHE_CLASSIFY_SCHEDULED
 CacheOf cacheOf(uint i) {
 #ifdef THRONG_CACHE_CLASSIFY_GROUPS
   // Chunks of push.chunkSize characters, numbered across groups, each group's from its first
@@ -49,12 +56,11 @@ CacheOf cacheOf(uint i) {
   return CacheOf(0u, uint(bucketSlot.length()), push.rowCount, push.dataBase, push.chunk, push.firstCharacter);
 #endif
 }
+#endif
 
-void main() {
-  uint local = gl_GlobalInvocationID.x;
-  if (local >= push.characterCount) return;
-  uint i = push.firstCharacter + local;
-  CacheOf cache = cacheOf(i);
+// Character i: its pose source, and when its bucket is not resident its place in its pose
+// chunk's list.
+void classify(uint i, CacheOf cache) {
   vec4 m = texelFetch(motionTexels, int(i));
   int slot = bucketSlot[cache.slotBase + speedBucket(speedWeight(m), push.bucketWidth, cache.bucketCount)];
   if (slot >= 0) {
@@ -68,3 +74,21 @@ void main() {
   uint index = atomicAdd(listCounts[cache.chunk], 1u);
   characterList[cache.chunkFirst + index] = i - cache.chunkFirst;
 }
+
+#ifdef THRONG_CACHE_CLASSIFY_SCHEDULED
+// A workgroup per listed chunk (or per chunk), an invocation per character.
+void main() {
+  uint chunk = args.allChunks != 0u ? gl_WorkGroupID.x : chunkList[gl_WorkGroupID.x].x;
+  uint i = chunk * kUpdateChunkCharacters + gl_LocalInvocationID.x;
+  if (i >= push.characterCount) return;
+  uint poseChunk = i / push.poseChunk;
+  classify(i, CacheOf(0u, uint(bucketSlot.length()), push.rowCount, push.dataBase, poseChunk,
+                      poseChunk * push.poseChunk));
+}
+#else
+void main() {
+  uint local = gl_GlobalInvocationID.x;
+  if (local >= push.characterCount) return;
+  classify(push.firstCharacter + local, cacheOf(push.firstCharacter + local));
+}
+#endif

@@ -118,6 +118,17 @@ const uint kCacheClassifyBindingPoseSource = 9u;
 // cache_classify_groups.comp also: the group table; bucketSlot is then every group's, shared.
 const uint kCacheClassifyBindingGroups = 10u;  // uniform SynthGroupTable
 
+// cache_classify_scheduled.comp also (the update-rate LOD): the chunks moved this step and the
+// dispatch's arguments, whose fourth word says it covers every chunk instead.
+const uint kCacheClassifyBindingChunkList = 11u;  // update_schedule.comp's list
+const uint kCacheClassifyBindingArgs = 12u;       // ScheduledClassifyArgs
+
+// cache_classify_args.comp: the scheduled classify's dispatch, from the schedule's and the
+// cache's counts.
+const uint kClassifyArgsBindingFreshSlots = 0u;  // the cache insert's [0]: entries filled now
+const uint kClassifyArgsBindingSchedule = 1u;    // update_schedule.comp's dispatch (x: its list)
+const uint kClassifyArgsBindingArgs = 2u;        // ScheduledClassifyArgs
+
 // cache_dispatch_args.comp: the list counts as indirect dispatch sizes.
 const uint kCacheArgsBindingListCounts = 7u;
 const uint kCacheArgsBindingDispatchArgs = 8u;

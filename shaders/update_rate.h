@@ -41,6 +41,28 @@ THRONG_STRUCT(UpdateSchedulePush) {
   float sinceSeconds[kUpdateMaxInterval];
 };
 
+// Push constants of cache_classify_scheduled.comp: the motion cache's classify over the chunks
+// that moved (a character that stood still keeps its pose source and, when not cached, the
+// joints the pose pass wrote for it), or over every chunk when the cache filled an entry this
+// step (it may have evicted one that a still character's pose source names).
+THRONG_STRUCT(ClassifySchedulePush) {
+  uint characterCount;  // the crowd's (one clip set, from character 0)
+  uint rowCount;        // poses per cache entry
+  float bucketWidth;
+  uint dataBase;        // the cache's first matrix in the data buffer
+  uint jointCount;
+  uint poseChunk;       // characters per pose chunk: a miss is listed in its chunk's list
+  uint pad0;
+  uint pad1;
+};
+// cache_classify_args.comp's output: the classify's VkDispatchIndirectCommand (a workgroup per
+// listed chunk, or per chunk) and whether it covers every chunk.
+THRONG_STRUCT(ScheduledClassifyArgs) {
+  uint x;
+  uint y;
+  uint z;
+  uint allChunks;
+};
 // The steps between a chunk's updates when its largest character is maxHeight pixels tall.
 THRONG_UPDATE_INLINE uint updateInterval(float maxHeight, float lagPerHeight, float maxLag,
                                   uint maxInterval) {

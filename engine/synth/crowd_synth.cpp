@@ -67,6 +67,8 @@ void makeUpdateRate(const gpu::Context& context, CrowdSynth& synth, const LodOpt
   THRONG_CHECK(synth.scheduledRootMotion.localSizeX() == kUpdateChunkCharacters,
                "root_motion_scheduled.comp's workgroup must be a chunk of ", kUpdateChunkCharacters,
                " characters");
+  if (synth.cached())
+    synth.scheduledClassify = makeScheduledClassify(context, synth.updateRate->chunkCount);
 }
 
 void makeSharedBuffers(const gpu::Context& context, CrowdSynth& synth, const LodOptions& lod) {
@@ -346,11 +348,28 @@ void recordSharedClassify(VkCommandBuffer cmd, const SynthPrograms& programs,
   job.record(cmd, programs);
 }
 
+// The classify over the chunks this step's schedule moved (one clip set).
+void recordScheduledClassify(VkCommandBuffer cmd, const CrowdSynth& synth, uint32_t chunk) {
+  const SynthGroup& g = synth.front();
+  ScheduledClassifyJob job{&synth.crowd,
+                           &g.cache,
+                           &*synth.updateRate,
+                           &synth.scheduledClassify->dispatchArgs,
+                           &synth.poseSource,
+                           &synth.characterLists,
+                           &synth.listCounts,
+                           g.count,
+                           chunk,
+                           synth.jointCount()};
+  job.record(cmd, *synth.scheduledClassify);
+}
+
 // The cache passes of every group (the lookup was done by root motion), then the classify pass
-// over each group's pose chunks (numbered across groups), then their indirect dispatch
-// arguments.
+// over each group's pose chunks (numbered across groups), or over the chunks the update-rate
+// schedule moved when `scheduled`, then their indirect dispatch arguments.
 void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
-                         const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal) {
+                         const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal,
+                         bool scheduled) {
   std::vector<CacheJob> jobs;
   for (const SynthGroup& g : synth.groups)
     jobs.push_back({&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count});
@@ -367,7 +386,9 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
   for (size_t k = 0; k < jobs.size(); ++k) jobs[k].recordFill(cmd, *programs[k]);
   vkCmdFillBuffer(cmd, synth.listCounts.get(), 0, VkDeviceSize(chunkTotal) * 4, 0u);
   gpu::computeToComputeBarrier(cmd);
-  if (synth.sharedPasses()) {
+  if (scheduled) {
+    recordScheduledClassify(cmd, synth, chunk);
+  } else if (synth.sharedPasses()) {
     recordSharedClassify(cmd, *programs.front(), synth, chunk);
   } else {
     recordGroupClassify(cmd, programs, synth, chunk);
@@ -430,8 +451,10 @@ void recordPosePasses(VkCommandBuffer cmd, std::span<const SynthPrograms* const>
   if (lod && !coverageDone) recordCoverage(cmd, programs, synth, *lodCamera);
   mark();
   const uint32_t chunk = poseChunk(synth, maxBindingBytes);
+  // Root motion with its coverage ran on the schedule (recordRootMotion).
+  const bool scheduled = coverageDone && synth.scheduledClassify.has_value();
   if (synth.cached())
-    recordCacheClassify(cmd, programs, synth, chunk, firstChunks(synth, chunk).back());
+    recordCacheClassify(cmd, programs, synth, chunk, firstChunks(synth, chunk).back(), scheduled);
   mark();
   recordPose(cmd, programs, synth, chunk, lod);
   mark();

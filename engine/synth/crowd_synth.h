@@ -14,6 +14,7 @@
 #include "synth/group_passes.h"
 #include "synth/motion_cache.h"
 #include "synth/motion_gpu.h"
+#include "synth/scheduled_classify.h"
 #include "synth/synth_jobs.h"
 #include "synth/update_rate.h"
 
@@ -64,6 +65,8 @@ struct CrowdSynth {
   // With the update-rate LOD: the chunks' schedule and the root motion it dispatches.
   std::optional<GpuUpdateRate> updateRate;
   gpu::ComputeProgram scheduledRootMotion;
+  // With the motion cache too: its classify over the moved chunks (scheduled_classify.h).
+  std::optional<ScheduledClassify> scheduledClassify;
   std::vector<SynthGroup> groups;  // contiguous ranges, in order, covering every character
   // With several groups: root motion and the cache classify run over all of them in one
   // dispatch each, from these shared buffers (group_passes.h).
