@@ -1,6 +1,9 @@
 #include "synth/cpu_synth.h"
 
+#include <exception>
 #include <functional>
+#include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -15,14 +18,33 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
     body(0, count);
     return;
   }
+  // An exception may not leave a thread (std::terminate): the first is kept and rethrown here,
+  // after every started thread has joined. A range whose thread could not start runs here.
+  std::mutex mutex;
+  std::exception_ptr error;
+  const auto run = [&](size_t begin, size_t end) {
+    try {
+      body(begin, end);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
-  size_t chunk = (count + threads - 1) / threads;
+  std::vector<std::pair<size_t, size_t>> unstarted;
+  const size_t chunk = (count + threads - 1) / threads;
   for (unsigned t = 0; t < threads; ++t) {
-    size_t begin = t * chunk, end = std::min(count, begin + chunk);
+    const size_t begin = t * chunk, end = std::min(count, begin + chunk);
     if (begin >= end) break;
-    workers.emplace_back(body, begin, end);
+    try {
+      workers.emplace_back(run, begin, end);
+    } catch (const std::system_error&) {
+      unstarted.emplace_back(begin, end);
+    }
   }
+  for (const auto& [begin, end] : unstarted) run(begin, end);
   for (std::thread& w : workers) w.join();
+  if (error) std::rethrow_exception(error);
 }
 
 void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, unsigned threads,
