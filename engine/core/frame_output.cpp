@@ -25,7 +25,18 @@ FrameOutput::FrameOutput(const FrameOutputOptions& options) : options_(options) 
     video_.emplace(*options_.video, VideoOptions{options_.width, options_.height, options_.fps});
   stats_.workers = workerCount(options_);
   options_.queueDepth = std::max(options_.queueDepth, stats_.workers + 1);  // every worker busy
-  for (int k = 0; k < stats_.workers; ++k) workers_.emplace_back([this] { run(); });
+  spares_.reserve(size_t(options_.queueDepth));  // so a worker's push_back never allocates
+  try {
+    for (int k = 0; k < stats_.workers; ++k) workers_.emplace_back([this] { run(); });
+  } catch (...) {  // a thread that cannot start: the started ones are stopped before unwinding
+    {
+      std::lock_guard lock(mutex_);
+      closing_ = true;
+    }
+    changed_.notify_all();
+    joinWorkers();
+    throw;
+  }
 }
 
 FrameOutput::~FrameOutput() {
