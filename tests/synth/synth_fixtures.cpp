@@ -3,11 +3,25 @@
 #include <algorithm>
 #include <cmath>
 
+#include "anim/default_clips.h"
 #include "core/error.h"
 #include "core/math.h"
 #include "core/rng.h"
 
 namespace throng::test {
+
+const anim::MotionPair& builtInRunPair() {
+  static const anim::MotionPair pair = [] {
+    const anim::ClipPair clips = anim::defaultRunPair();
+    return anim::makeMotionPair(clips.slow, clips.fast);
+  }();
+  return pair;
+}
+
+const anim::Skeleton& builtInRunSkeleton() {
+  static const anim::ClipPair clips = anim::defaultRunPair();
+  return clips.slow.skeleton;
+}
 
 anim::MotionPair syntheticPair(int joints, int slowFrames, int fastFrames, uint32_t seed) {
   Rng rng(seed);
@@ -31,7 +45,8 @@ anim::MotionPair syntheticPair(int joints, int slowFrames, int fastFrames, uint3
         clip.rotations.push_back(glm::normalize(q + glm::vec4(0, 0, 0, 1.5f)));
       }
       float t = float(f) / frames;
-      clip.rootPositions.push_back(glm::vec3(0.05f * std::sin(2 * kPi * t), 0.95f + 0.04f * std::cos(4 * kPi * t), travel * t));
+      clip.rootPositions.push_back(glm::vec3(0.05f * std::sin(2 * kPi * t),
+                                             0.95f + 0.04f * std::cos(4 * kPi * t), travel * t));
     }
     clip.cycleTravel = glm::vec3(0.0f, 0.0f, travel);
     return clip;
@@ -40,7 +55,8 @@ anim::MotionPair syntheticPair(int joints, int slowFrames, int fastFrames, uint3
   std::vector<glm::vec3> offsets(joints, glm::vec3(0.0f));
   for (int j = 1; j < joints; ++j) {
     parents[j] = static_cast<int>(rng.next() % j);
-    offsets[j] = glm::vec3(rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f));
+    offsets[j] =
+        glm::vec3(rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f), rng.uniform(-0.3f, 0.3f));
   }
   anim::Clip slow = makeClip(slowFrames, 2.5f, parents, offsets);
   for (auto& o : offsets) o *= 1.05f;

@@ -5,11 +5,16 @@
 #include <string>
 
 #include "anim/motion_texture.h"
+#include "anim/skeleton.h"
 
 namespace throng::test {
 
 // Random skeleton (parents-first tree), random unit rotations per frame, cyclic root track.
 anim::MotionPair syntheticPair(int joints, int slowFrames, int fastFrames, uint32_t seed);
+
+// The built-in run pair (anim::defaultRunPair), made once, and its skeleton.
+const anim::MotionPair& builtInRunPair();
+const anim::Skeleton& builtInRunSkeleton();
 
 // Max |a - b| over two float arrays of equal length.
 float maxAbsDifference(const float* a, const float* b, size_t count);

@@ -16,23 +16,11 @@
 #include "gpu_fixture.h"
 #include "synth/crowd_synth.h"
 #include "synth/scheduled_classify.h"
+#include "synth_fixtures.h"
 
 using namespace throng;
 
 namespace {
-
-const anim::MotionPair& runPair() {
-  static const anim::MotionPair pair = [] {
-    const anim::ClipPair clips = anim::defaultRunPair();
-    return anim::makeMotionPair(clips.slow, clips.fast);
-  }();
-  return pair;
-}
-
-const anim::Skeleton& runSkeleton() {
-  static const anim::ClipPair clips = anim::defaultRunPair();
-  return clips.slow.skeleton;
-}
 
 synth::ClassifySchedulePush smallPush() {
   synth::ClassifySchedulePush push{};
@@ -91,13 +79,13 @@ TEST_CASE("scheduled classify: moved chunks are classified, or every chunk after
 
 TEST_CASE("scheduled classify: GPU equals the twin step by step, and no pose source goes stale") {
   gpu::Context& ctx = test::gpuContext();
-  const anim::MotionPair& pair = runPair();
+  const anim::MotionPair& pair = test::builtInRunPair();
   crowd::ScenarioOptions scenario;
   scenario.characters = 4500;  // 71 chunks
   crowd::Crowd crowd = crowd::makeScenario(scenario);
   synth::MotionCacheOptions cacheOptions;
   cacheOptions.enabled = true;
-  const synth::LodOptions lod{true, {}, &runSkeleton(), 2.0f};
+  const synth::LodOptions lod{true, {}, &test::builtInRunSkeleton(), 2.0f};
   // Room for 4 entries: a speed epoch spreads the crowd over more buckets, so entries are
   // evicted while characters that stand still name them.
   cacheOptions.budgetBytes =

@@ -25,22 +25,9 @@ using namespace throng;
 
 namespace {
 
-const anim::MotionPair& runPair() {
-  static const anim::MotionPair pair = [] {
-    const anim::ClipPair clips = anim::defaultRunPair();
-    return anim::makeMotionPair(clips.slow, clips.fast);
-  }();
-  return pair;
-}
-
 bool anyContains(const std::vector<std::string>& problems, const std::string& text) {
   return std::any_of(problems.begin(), problems.end(),
                      [&](const std::string& p) { return p.find(text) != std::string::npos; });
-}
-
-const anim::Skeleton& runSkeleton() {
-  static const anim::ClipPair clips = anim::defaultRunPair();
-  return clips.slow.skeleton;
 }
 
 }  // namespace
@@ -56,7 +43,8 @@ TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong")
   CHECK(anyContains(problems, "the lag must be > 0 pixels"));
   CHECK_THROWS_WITH_AS(empty.record(VK_NULL_HANDLE, gpu::ComputeProgram()),
                        doctest::Contains("UpdateScheduleJob is invalid"), Error);
-  const synth::UpdateRateParams params = synth::makeUpdateRateParams(runPair(), 1.5f, 2.0f);
+  const synth::UpdateRateParams params =
+      synth::makeUpdateRateParams(test::builtInRunPair(), 1.5f, 2.0f);
   synth::GpuUpdateRate rate = synth::makeGpuUpdateRate(ctx, 1000, params);
   synth::UpdateScheduleJob job{&rate.chunkState, &rate.chunkList, &rate.dispatchArgs,
                                rate.chunkCount};
@@ -71,25 +59,27 @@ TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong")
   job.params.maxInterval = 8;
   job.sinceSeconds[0] = -1.0f;
   CHECK(anyContains(job.validate(), "sinceSeconds must be seconds >= 0, got -1"));
-  CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(runPair(), 1.5f, -1.0f),
+  CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(test::builtInRunPair(), 1.5f, -1.0f),
                        doctest::Contains("the lag must be a number of pixels >= 0"), Error);
-  CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(runPair(), 0.0f, 1.0f),
+  CHECK_THROWS_WITH_AS(synth::makeUpdateRateParams(test::builtInRunPair(), 0.0f, 1.0f),
                        doctest::Contains("standing height must be > 0"), Error);
   // The schedule needs the coverage LOD (its heights) and one clip set.
   crowd::ScenarioOptions scenario;
   scenario.characters = 300;
   const crowd::Crowd crowd = crowd::makeScenario(scenario);
-  synth::LodOptions noLod{false, {}, &runSkeleton(), 2.0f};
-  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, runPair(), crowd, {}, noLod),
+  synth::LodOptions noLod{false, {}, &test::builtInRunSkeleton(), 2.0f};
+  CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, test::builtInRunPair(), crowd, {}, noLod),
                        doctest::Contains("needs the coverage LOD on"), Error);
-  const anim::MotionPair* pairs[] = {&runPair(), &runPair()};
+  const anim::MotionPair* pairs[] = {&test::builtInRunPair(), &test::builtInRunPair()};
   const uint32_t first[] = {0, 100, 300};
-  synth::LodOptions lod{true, {}, &runSkeleton(), 2.0f};
+  synth::LodOptions lod{true, {}, &test::builtInRunSkeleton(), 2.0f};
   CHECK_THROWS_WITH_AS(synth::makeCrowdSynth(ctx, pairs, first, crowd, {}, lod),
                        doctest::Contains("needs a crowd of one clip set, this one has 2"), Error);
   // Root motion with a schedule but no coverage has no heights to give it.
-  const synth::CrowdSynth synth = synth::makeCrowdSynth(ctx, runPair(), crowd, {}, lod);
-  synth::RootMotionJob root{&synth.front().motion, &runPair(), &synth.crowd, 0, 0, 1 / 30.0f};
+  const synth::CrowdSynth synth =
+      synth::makeCrowdSynth(ctx, test::builtInRunPair(), crowd, {}, lod);
+  synth::RootMotionJob root{
+      &synth.front().motion, &test::builtInRunPair(), &synth.crowd, 0, 0, 1 / 30.0f};
   root.updateRate = &*synth.updateRate;
   root.scheduledProgram = &synth.scheduledRootMotion;
   CHECK(anyContains(root.validate(), "the update-rate schedule needs the coverage"));
@@ -142,7 +132,7 @@ TEST_CASE("update-rate LOD: intervals follow the projected height, chunks are st
 }
 
 TEST_CASE("update-rate LOD: a move by several steps lands where moving every step does") {
-  const anim::MotionPair& pair = runPair();
+  const anim::MotionPair& pair = test::builtInRunPair();
   // Within a cycle the root integrates exactly: four steps of dt and one of 4 dt agree.
   glm::vec4 placement(1.0f, 0.0f, 2.0f, 0.7f),
       motion = gpu_types::makeMotion(0.1f, 0.4f, 0.4f, 1.1f);
@@ -163,12 +153,12 @@ TEST_CASE("update-rate LOD: a move by several steps lands where moving every ste
 
 TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twin step by step") {
   gpu::Context& ctx = test::gpuContext();
-  const anim::MotionPair& pair = runPair();
+  const anim::MotionPair& pair = test::builtInRunPair();
   crowd::ScenarioOptions scenario;
   scenario.characters = 4500;  // 71 chunks: staggered in blocks of two
   crowd::Crowd cpu = crowd::makeScenario(scenario);
   cpu.steering = anim::Steering::Circle;
-  const synth::LodOptions lod{true, {}, &runSkeleton(), 2.0f};
+  const synth::LodOptions lod{true, {}, &test::builtInRunSkeleton(), 2.0f};
   synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, cpu, {}, lod);
   synth::SynthPrograms programs(ctx, pair);
   const synth::SynthPrograms* used[] = {&programs};
@@ -229,12 +219,12 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
 
 TEST_CASE("update-rate LOD: a crowd near the camera moves every step, as without the schedule") {
   gpu::Context& ctx = test::gpuContext();
-  const anim::MotionPair& pair = runPair();
+  const anim::MotionPair& pair = test::builtInRunPair();
   crowd::ScenarioOptions scenario;
   scenario.characters = 1000;
   const crowd::Crowd crowd = crowd::makeScenario(scenario);
-  const synth::LodOptions plainLod{true, {}, &runSkeleton()};
-  const synth::LodOptions scheduledLod{true, {}, &runSkeleton(), 1.0f};
+  const synth::LodOptions plainLod{true, {}, &test::builtInRunSkeleton()};
+  const synth::LodOptions scheduledLod{true, {}, &test::builtInRunSkeleton(), 1.0f};
   const synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd, {}, plainLod);
   const synth::CrowdSynth scheduled = synth::makeCrowdSynth(ctx, pair, crowd, {}, scheduledLod);
   synth::SynthPrograms programs(ctx, pair);
