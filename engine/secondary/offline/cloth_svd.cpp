@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -90,7 +91,13 @@ void forEachColumnBlock(
   };
   unsigned n = std::min<unsigned>(threadCount(threads), std::max(1u, blocks));
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < n; ++t) pool.emplace_back(worker);
+  for (unsigned t = 1; t < n; ++t) {
+    try {  // a thread that cannot start: the shared counter lets the others take its blocks
+      pool.emplace_back(worker);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
   worker();
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);

@@ -1,10 +1,20 @@
 #include "secondary/offline/worker_pool.h"
 
+#include <system_error>
+
 namespace throng::secondary {
 
 WorkerPool::WorkerPool(unsigned threads) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { loop(); });
+  // A thread that cannot start leaves the pool with the ones that did (the caller's thread
+  // works too), rather than unwinding past joinable threads.
+  for (unsigned i = 1; i < threads; ++i) {
+    try {
+      workers_.emplace_back([this] { loop(); });
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
 }
 
 WorkerPool::~WorkerPool() {
