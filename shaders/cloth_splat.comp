@@ -8,7 +8,8 @@
 // then walks the pixels of the cape's bounding box once, stepping the planes along each row; at
 // each pixel the nearest triangle covering its centre (the first on equal depth) gives
 // (depth bits << 32 | colour), kept with one 64-bit atomicMin in the joint renderer's visibility
-// buffer like joint_splat.comp; the renderer's resolve pass writes it with depth. Flat two-sided
+// buffer like joint_splat.comp; the renderer's resolve (visibility_planes.comp, or
+// splat_resolve.frag) writes it with depth. Flat two-sided
 // shading per triangle. Twin: secondary::splatCapesCpu (the same planes and steps).
 //
 // Why this shape (lavapipe runs 8 lanes in lock step and executes every branch with a mask, so

@@ -6,7 +6,7 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 // The far joints, step 1: one invocation per character on screen (joint_splat_list.comp's list,
 // dispatched by its length). A far character a few pixels tall is one ellipsoid
-// (joint_far_body.glsl) ray-cast here over its box, its pixel entries naming the pixels it hit;
+// (joint_far_body.glsl) ray-cast here over its box, an atomicMin on each pixel it hits;
 // every other character is listed for joint_splat_walk.comp, which walks its joints, so that
 // lanes walking joints are not spread over subgroups of bodies. CPU twin: render::splatJointsCpu
 // over render::splattedJointMatrices.

@@ -1,6 +1,6 @@
 // The splat's work lists: their capacities (specialization constants 0 and 1 of every splat
-// shader, so tests can shrink them), their counters and their pixel entries, shared by the passes
-// that reserve entries and the resolve that reads them. Needs render_bindings.h and 64-bit
+// shader, so tests can shrink them), their counters and their pixel entries, shared by the walk
+// that reserves entries and the pixel pass that reads them. Needs render_bindings.h and 64-bit
 // integers first.
 #ifndef THRONG_JOINT_SPLAT_COUNTERS_GLSL
 #define THRONG_JOINT_SPLAT_COUNTERS_GLSL

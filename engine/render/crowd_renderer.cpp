@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <initializer_list>
+#include <utility>
 
 #include "core/error.h"
 #include "gpu/commands.h"
@@ -210,6 +211,8 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   passTimer_->mark(cmd, "before-pass");
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
+  THRONG_CHECK(!groundCopied_ || target.transferDst,
+               "beginDraw: the splat started from the ground, for a target that takes copies");
   if (groundCopied_) {
     resolvePlanes(cmd, params, frameSlot);
     copyPlanesIn(cmd, target, params);
@@ -238,7 +241,10 @@ bool CrowdRenderer::groundFor(VkCommandBuffer cmd, const DrawParams& params, uin
   const FrameUniforms frame = makeFrameUniforms(params);
   std::memcpy(key.data(), &frame, sizeof(frame));
   std::memcpy(key.data() + sizeof(frame), &params.clearColor, sizeof(VkClearColorValue));
-  if (groundVisibility_ && key == groundKey_) return true;
+  if (groundVisibility_ && key == groundKey_) {
+    previousKey_ = key;
+    return true;
+  }
   // A camera that moves every frame never pays for a ground it would use once: it is made when
   // the same view comes twice in a row.
   const bool again = key == previousKey_;
@@ -261,7 +267,10 @@ bool CrowdRenderer::groundFor(VkCommandBuffer cmd, const DrawParams& params, uin
   }
   // Earlier frames' copies read the ground.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
-  groundKey_ = key;
+  // The ground is this view's once the frame that makes it is recorded whole (endDraw): a frame
+  // that fails while recording is never submitted, and its ground never made.
+  groundKey_.clear();
+  pendingGroundKey_ = key;
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
       gpu::storageBinding(gpu_types::kRenderBindingGroundVisibility, groundVisibility_)};
@@ -422,6 +431,7 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
 }
 
 void CrowdRenderer::endDraw(VkCommandBuffer cmd, const FrameTargets& target) {
+  if (!pendingGroundKey_.empty()) groundKey_ = std::exchange(pendingGroundKey_, {});
   passTimer_->mark(cmd, "after-resolve");
   vkCmdEndRenderingKHR(cmd);
   passTimer_->mark(cmd, "end-pass");

@@ -114,13 +114,14 @@ class CrowdRenderer {
   void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
                       bool load);
-  gpu::ComputeProgram groundProgram_;  // ground.comp
-  gpu::ComputeProgram planesProgram_;  // visibility_planes.comp
-  gpu::Buffer groundVisibility_;       // ground.comp's words, the visibility buffer's start
-  std::vector<uint8_t> groundKey_;     // the view they show (uniforms and clear colour)
-  std::vector<uint8_t> previousKey_;   // the previous frame's view
-  bool groundCopied_ = false;          // this frame's splat started from the ground
-  gpu::Buffer framePlanes_;            // this frame's colour and depth planes
+  gpu::ComputeProgram groundProgram_;      // ground.comp
+  gpu::ComputeProgram planesProgram_;      // visibility_planes.comp
+  gpu::Buffer groundVisibility_;           // ground.comp's words, the visibility buffer's start
+  std::vector<uint8_t> groundKey_;         // the view they show (uniforms and clear colour)
+  std::vector<uint8_t> pendingGroundKey_;  // a ground recorded in a frame not yet whole
+  std::vector<uint8_t> previousKey_;       // the previous frame's view
+  bool groundCopied_ = false;              // this frame's splat started from the ground
+  gpu::Buffer framePlanes_;                // this frame's colour and depth planes
 };
 
 }  // namespace throng::render

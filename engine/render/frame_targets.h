@@ -16,8 +16,9 @@ struct FrameTargets {
   // TRANSFER_SRC_OPTIMAL for readback, PRESENT_SRC_KHR for a swapchain, COLOR_ATTACHMENT_OPTIMAL
   // when overlays draw after the crowd.
   VkImageLayout finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  // Colour and depth take transfer writes (TRANSFER_DST usage): the joint splat is then resolved
-  // by compute and copied in, instead of a full-screen fragment pass.
+  // Colour and depth take transfer writes (TRANSFER_DST usage): while the view stands still, the
+  // joint splat is then resolved by compute and copied in, instead of a full-screen fragment
+  // pass.
   bool transferDst = false;
 };
 

@@ -116,7 +116,8 @@ struct SplatJob {
 
   std::vector<std::string> validate() const;
   // Resets the visibility buffer, lists the characters on screen and splats them (chunked);
-  // leaves barriers for the resolves (compute or fragment shader).
+  // leaves barriers for the fragment resolve and the near joints' indirect draw (the compute
+  // resolve, CrowdRenderer::resolvePlanes, orders itself after every compute write).
   void record(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 
  private:

@@ -45,7 +45,9 @@ void PassTimer::collect(const std::vector<uint64_t>& ticks) {
 
 void PassTimer::beginFrame(VkCommandBuffer cmd) {
   if (!pool_) return;
-  if (!pending_.empty()) collect(pool_->fetch());
+  // Without waiting: a frame that failed while recording was never submitted, and its marks
+  // are dropped (the timer expects one frame in flight at a time).
+  if (!pending_.empty()) collect(pool_->fetchIfAvailable());
   pool_->reset();
   pool_->write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
 }

@@ -57,7 +57,8 @@ struct ClothSplatJob {
   const gpu::Buffer* visibility = nullptr;  // input/output: width × height uint64
 
   std::vector<std::string> validate() const;
-  // Ends with a barrier making the visibility buffer visible to the resolve's fragment stage.
+  // Ends with a barrier making the visibility buffer visible to the fragment resolve (the
+  // compute resolve orders itself after every compute write).
   void record(VkCommandBuffer cmd, const ClothPrograms& programs) const;  // uses cloth->splat
 };
 

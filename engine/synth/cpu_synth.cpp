@@ -32,6 +32,8 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
   };
   std::vector<std::thread> workers;
   std::vector<std::pair<size_t, size_t>> unstarted;
+  workers.reserve(threads);  // no allocation failure once threads run
+  unstarted.reserve(threads);
   const size_t chunk = (count + threads - 1) / threads;
   for (unsigned t = 0; t < threads; ++t) {
     const size_t begin = t * chunk, end = std::min(count, begin + chunk);

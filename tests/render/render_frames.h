@@ -1,6 +1,7 @@
 #pragma once
-// Test helper: a scene's frames through scene::recordFrame into a 320×180 offscreen target, the
-// last one read back. The render tests that compare two ways of drawing the same crowd use it.
+// Test helper: a scene's frames through scene::recordFrame into an offscreen target (320×180
+// unless told), the last one read back. The render tests that compare two ways of drawing the same
+// crowd use it.
 #include <array>
 
 #include "core/image.h"
@@ -14,9 +15,10 @@ namespace throng::test {
 // `frames` steps of 1/30 s seen by `camera`; `transferDst`: the target takes copies (render's
 // offscreen path) or not (as the viewer's swapchain, the full-screen resolve).
 inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
-                               int frames, bool transferDst = true) {
+                               int frames, bool transferDst = true, uint32_t width = 320,
+                               uint32_t height = 180) {
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
-  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 320, 180);
+  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
   gpu::TimestampPool timestamps(ctx, 8);
   scene::FrameSettings settings;
   settings.camera = camera;
@@ -40,7 +42,8 @@ inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const ren
 inline std::array<ImageRgba8, 2> renderBothResolves(gpu::Context& ctx, const crowd::Crowd& crowd,
                                                     const anim::MotionPair& pair,
                                                     const render::Camera& camera,
-                                                    const synth::LodOptions& lod) {
+                                                    const synth::LodOptions& lod,
+                                                    uint32_t width = 320, uint32_t height = 180) {
   std::array<ImageRgba8, 2> images;
   for (int copies = 0; copies < 2; ++copies) {
     scene::SceneSetup setup;
@@ -48,7 +51,7 @@ inline std::array<ImageRgba8, 2> renderBothResolves(gpu::Context& ctx, const cro
     setup.pairs.push_back(pair);
     setup.groupFirst = {0, uint32_t(crowd.size())};
     scene::Scene scene(ctx, std::move(setup), {}, lod);
-    images[copies] = renderFrames(ctx, scene, camera, 3, copies == 1);
+    images[copies] = renderFrames(ctx, scene, camera, 3, copies == 1, width, height);
   }
   return images;
 }

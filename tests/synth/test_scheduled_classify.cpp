@@ -112,7 +112,7 @@ TEST_CASE("scheduled classify: GPU equals the twin step by step, and no pose sou
     const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 0.3f * distance, -distance), glm::vec3(0.0f),
                                        glm::vec3(0, 1, 0));
     const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
-    // Speed epochs send the crowd to the fast buckets at step 3 and to the slow ones at step 20:
+    // Speed epochs send the crowd to the fast buckets at step 3 and to the middle ones at step 30:
     // the characters that move ask for buckets that are not resident, whose entries evict those
     // that characters standing still name.
     anim::SpeedRetarget retarget;

@@ -225,8 +225,12 @@ TEST_CASE("update-rate LOD: a crowd near the camera moves every step, as without
   const crowd::Crowd crowd = crowd::makeScenario(scenario);
   const synth::LodOptions plainLod{true, {}, &test::builtInRunSkeleton()};
   const synth::LodOptions scheduledLod{true, {}, &test::builtInRunSkeleton(), 1.0f};
-  const synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd, {}, plainLod);
-  const synth::CrowdSynth scheduled = synth::makeCrowdSynth(ctx, pair, crowd, {}, scheduledLod);
+  // With the motion cache: the scheduled classify covers the listed chunks (here every chunk).
+  synth::MotionCacheOptions cache;
+  cache.enabled = true;
+  const synth::CrowdSynth plain = synth::makeCrowdSynth(ctx, pair, crowd, cache, plainLod);
+  const synth::CrowdSynth scheduled = synth::makeCrowdSynth(ctx, pair, crowd, cache, scheduledLod);
+  REQUIRE(scheduled.scheduledClassify.has_value());
   synth::SynthPrograms programs(ctx, pair);
   const synth::SynthPrograms* used[] = {&programs};
   const glm::mat4 view =
@@ -252,5 +256,8 @@ TEST_CASE("update-rate LOD: a crowd near the camera moves every step, as without
   CHECK(test::maxAbsDifference(&a.placement[0].x, &b.placement[0].x, crowd.size() * 4) == 0.0f);
   CHECK(test::maxAbsDifference(&a.motion[0].x, &b.motion[0].x, crowd.size() * 4) == 0.0f);
   CHECK(std::memcmp(masksA.data(), masksB.data(), masksA.size() * sizeof(masksA[0])) == 0);
+  const auto sourceA = gpu::readback<uint32_t>(ctx, plain.poseSource, crowd.size());
+  const auto sourceB = gpu::readback<uint32_t>(ctx, scheduled.poseSource, crowd.size());
+  CHECK(sourceA == sourceB);
   CHECK(ctx.validationMessageCount() == 0);
 }

@@ -91,6 +91,7 @@ void forEachColumnBlock(
   };
   unsigned n = std::min<unsigned>(threadCount(threads), std::max(1u, blocks));
   std::vector<std::thread> pool;
+  pool.reserve(n);
   for (unsigned t = 1; t < n; ++t) {
     try {  // a thread that cannot start: the shared counter lets the others take its blocks
       pool.emplace_back(worker);

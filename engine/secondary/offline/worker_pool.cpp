@@ -8,6 +8,7 @@ WorkerPool::WorkerPool(unsigned threads) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // A thread that cannot start leaves the pool with the ones that did (the caller's thread
   // works too), rather than unwinding past joinable threads.
+  workers_.reserve(threads);
   for (unsigned i = 1; i < threads; ++i) {
     try {
       workers_.emplace_back([this] { loop(); });
