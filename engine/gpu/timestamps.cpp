@@ -29,21 +29,22 @@ uint32_t TimestampPool::write(VkCommandBuffer cmd, VkPipelineStageFlagBits stage
   return used_++;
 }
 
+VkResult TimestampPool::query(std::vector<uint64_t>& ticks, VkQueryResultFlags flags) const {
+  ticks.assign(used_, 0);
+  if (used_ == 0) return VK_SUCCESS;
+  return vkGetQueryPoolResults(device_, pool_, 0, used_, ticks.size() * sizeof(uint64_t),
+                               ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | flags);
+}
+
 std::vector<uint64_t> TimestampPool::fetch() const {
-  std::vector<uint64_t> ticks(used_);
-  if (used_ == 0) return ticks;
-  VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, used_, ticks.size() * sizeof(uint64_t),
-                                 ticks.data(), sizeof(uint64_t),
-                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  std::vector<uint64_t> ticks;
+  VK_CHECK(query(ticks, VK_QUERY_RESULT_WAIT_BIT));
   return ticks;
 }
 
 std::vector<uint64_t> TimestampPool::fetchIfAvailable() const {
-  std::vector<uint64_t> ticks(used_);
-  if (used_ == 0) return ticks;
-  const VkResult result =
-      vkGetQueryPoolResults(device_, pool_, 0, used_, ticks.size() * sizeof(uint64_t), ticks.data(),
-                            sizeof(uint64_t), VK_QUERY_RESULT_64_BIT);
+  std::vector<uint64_t> ticks;
+  const VkResult result = query(ticks, 0);
   if (result == VK_NOT_READY) return {};
   VK_CHECK(result);
   return ticks;

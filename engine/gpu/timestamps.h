@@ -24,6 +24,8 @@ class TimestampPool {
   double millisecondsBetween(const std::vector<uint64_t>& ticks, uint32_t from, uint32_t to) const;
 
  private:
+  // The used marks' ticks with the given result flags (64-bit always).
+  VkResult query(std::vector<uint64_t>& ticks, VkQueryResultFlags flags) const;
   VkDevice device_ = VK_NULL_HANDLE;
   Handle<VkQueryPool> pool_;
   uint32_t capacity_ = 0;

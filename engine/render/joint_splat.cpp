@@ -91,18 +91,14 @@ std::vector<std::string> SplatJob::validate() const {
     problems.push_back("input 'frameUniforms' buffer is missing");
   if (!visibility || !*visibility) problems.push_back("output 'visibility' buffer is missing");
   if (width == 0 || height == 0) problems.push_back("the target size is zero");
-  if (visibility && *visibility &&
-      visibility->size() < VkDeviceSize(width) * height * sizeof(uint64_t))
+  const VkDeviceSize visibilityBytes = VkDeviceSize(width) * height * sizeof(uint64_t);
+  if (visibility && *visibility && visibility->size() < visibilityBytes)
     problems.push_back(concat("output 'visibility' holds ", visibility->size(), " bytes, ", width,
-                              "x", height, " needs ",
-                              VkDeviceSize(width) * height * sizeof(uint64_t)));
-  if (initialVisibility &&
-      (!*initialVisibility ||
-       initialVisibility->size() < VkDeviceSize(width) * height * sizeof(uint64_t)))
+                              "x", height, " needs ", visibilityBytes));
+  if (initialVisibility && (!*initialVisibility || initialVisibility->size() < visibilityBytes))
     problems.push_back(concat("input 'initialVisibility' holds ",
                               *initialVisibility ? initialVisibility->size() : 0, " bytes, ", width,
-                              "x", height, " needs ",
-                              VkDeviceSize(width) * height * sizeof(uint64_t)));
+                              "x", height, " needs ", visibilityBytes));
   if (characterCount > 0 && jointCount == 0) problems.push_back("jointCount is zero");
   // Walked per joint, a row of workgroups per joint; every device allows 65535 rows
   // (maxComputeWorkGroupCount[1]).

@@ -23,7 +23,7 @@ PassTimer::~PassTimer() {
   // unless recording failed (the marks were never submitted: they are dropped, and a destructor
   // neither waits for them nor throws).
   try {
-    collect(pool_->fetchIfAvailable());
+    collect();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pass times: %s\n", e.what());
   }
@@ -35,7 +35,11 @@ PassTimer::~PassTimer() {
   }
 }
 
-void PassTimer::collect(const std::vector<uint64_t>& ticks) {
+void PassTimer::collect() {
+  if (pending_.empty()) return;
+  // Without waiting: a frame that failed while recording was never submitted, and its marks
+  // are dropped (the timer expects one frame in flight at a time).
+  const std::vector<uint64_t> ticks = pool_->fetchIfAvailable();
   for (size_t i = 0; i < pending_.size() && i + 1 < ticks.size(); ++i) {
     if (!times_.count(pending_[i])) order_.push_back(pending_[i]);
     times_[pending_[i]].push_back(pool_->millisecondsBetween(ticks, uint32_t(i), uint32_t(i + 1)));
@@ -45,9 +49,7 @@ void PassTimer::collect(const std::vector<uint64_t>& ticks) {
 
 void PassTimer::beginFrame(VkCommandBuffer cmd) {
   if (!pool_) return;
-  // Without waiting: a frame that failed while recording was never submitted, and its marks
-  // are dropped (the timer expects one frame in flight at a time).
-  if (!pending_.empty()) collect(pool_->fetchIfAvailable());
+  collect();
   pool_->reset();
   pool_->write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
 }

@@ -27,7 +27,7 @@ class PassTimer {
   void mark(VkCommandBuffer cmd, const char* pass);
 
  private:
-  void collect(const std::vector<uint64_t>& ticks);  // the pending marks' times, if any
+  void collect();  // the pending marks' times, when their frame completed
   std::unique_ptr<gpu::TimestampPool> pool_;
   std::vector<std::string> pending_;  // pass of each mark after the first
   std::map<std::string, std::vector<double>> times_;
