@@ -135,7 +135,9 @@ void main() {
                rootAt(false, clips.slowFrames, clips.slowRootBase, clips.slowTravel, phase0 * slowFrames);
   vec3 dFast = rootAt(true, clips.fastFrames, clips.fastRootBase, clips.fastTravel, phase1 * fastFrames) -
                rootAt(true, clips.fastFrames, clips.fastRootBase, clips.fastTravel, phase0 * fastFrames);
-  vec3 d = dSlow * (1.0 - w) + dFast * w;
+  // A step of no time moves no one: the two rootAt calls agree, but contracted into fused
+  // multiply-adds their difference need not be exactly zero.
+  vec3 d = dt > 0.0 ? dSlow * (1.0 - w) + dFast * w : vec3(0.0);
   float c = cos(place.w), s = sin(place.w);
   float scale = characterScale(m);
   place.x += scale * (d.x * c + d.z * s);

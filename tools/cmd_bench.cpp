@@ -327,10 +327,11 @@ struct BenchSession {
     if (r.loop)
       std::printf(
           "  wall per frame %.2f ms (mean), %.2fx the GPU frame; median %.2f ms, %.2fx; PNG "
-          "encoding %.2f ms per frame on %d worker%s\n",
+          "encoding %.2f ms per frame on %d worker%s; prepared in %.0f ms before the first "
+          "frame\n",
           r.loop->wallMs, r.loop->wallMs / r.loop->gpuMs(), r.loop->wallMedianMs,
           r.loop->wallMedianMs / r.loop->gpuMs(), r.loop->encodeMs, r.loop->encodeWorkers,
-          r.loop->encodeWorkers == 1 ? "" : "s");
+          r.loop->encodeWorkers == 1 ? "" : "s", r.loop->prepareMs);
     std::fflush(stdout);
   }
 };
@@ -462,6 +463,7 @@ nlohmann::json benchJson(const BenchSession& s, const std::optional<ClothBenchRe
       row["wall_ms_per_frame"] = r.loop->wallMs;
       row["wall_median_ms_per_frame"] = r.loop->wallMedianMs;
       row["encode_ms_per_frame"] = r.loop->encodeMs;
+      row["prepare_ms"] = r.loop->prepareMs;
     }
     if (r.passes)
       row["passes_ms_median"] = {{"root_motion", r.passes->rootMotion},

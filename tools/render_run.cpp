@@ -101,6 +101,10 @@ void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scen
     std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
                 t.synthesisMs, t.renderMs, context.info().name.c_str());
   std::printf(
+      "prepared in %.0f ms before the first frame (first draws and buffer touches, the motion "
+      "cache's fill%s)\n",
+      t.prepareMs, o.scene.cameraPath.empty() ? ", the ground" : "");
+  std::printf(
       "wall time per frame: mean %.2f ms, median %.2f ms; encoding %.2f ms per frame on %d "
       "worker%s, %.2f ms per frame waiting for them\n",
       t.wallMs, t.wallMedianMs, t.encodeMs, t.encodeWorkers, t.encodeWorkers == 1 ? "" : "s",
@@ -118,6 +122,14 @@ struct FrameSubmitter {
       : context(c), pool(c), cmd(pool.allocate()), fence(c), timestamps(c, 8) {}
 };
 
+// Ends, submits and waits for the frame recorded into gpu.cmd.
+void submitAndWait(FrameSubmitter& gpu) {
+  gpu::endCommands(gpu.cmd);
+  gpu::submit(gpu.context, gpu.cmd, gpu.fence.get());
+  gpu.fence.wait();
+  gpu.fence.reset();
+}
+
 // Records, submits and waits for one frame with its readback; its GPU times.
 scene::FrameTimings runOneFrame(FrameSubmitter& gpu, scene::Scene& scene,
                                 const scene::SceneStep& step, render::CrowdRenderer& renderer,
@@ -129,11 +141,22 @@ scene::FrameTimings runOneFrame(FrameSubmitter& gpu, scene::Scene& scene,
       gpu.cmd, gpu.context, scene, step, renderer, cloth, settings, gpu.timestamps);
   render::recordReadback(gpu.cmd, target);
   renderer.passTimer().mark(gpu.cmd, "readback");
-  gpu::endCommands(gpu.cmd);
-  gpu::submit(gpu.context, gpu.cmd, gpu.fence.get());
-  gpu.fence.wait();
-  gpu.fence.reset();
+  submitAndWait(gpu);
   return scene::readFrameTimings(gpu.timestamps, marks);
+}
+
+// What the first frame would pay once (scene::recordPreparation and the readback's first
+// copy), paid before the frames are timed; its wall milliseconds.
+double prepareFrames(FrameSubmitter& gpu, const scene::Scene& scene,
+                     render::CrowdRenderer& renderer, const scene::FrameSettings& settings,
+                     render::OffscreenTarget& target) {
+  const auto start = std::chrono::steady_clock::now();
+  gpu.timestamps.reset();
+  gpu::beginCommands(gpu.cmd);
+  scene::recordPreparation(gpu.cmd, gpu.context, scene, renderer, settings, gpu.timestamps);
+  render::recordReadback(gpu.cmd, target);
+  submitAndWait(gpu);
+  return millisecondsSince(start);
 }
 
 // What the run left in the scene: goals reached, the motion cache's counters.
@@ -156,6 +179,7 @@ scene::FrameSettings offscreenSettings(const RenderOptions& o, const RenderInput
   settings.targets = render::offscreenFrameTargets(target);
   settings.groundExtent = sceneGroundExtent(o.scene);
   settings.tintLevels = o.scene.lodTint;
+  settings.stillView = o.scene.cameraPath.empty();
   return settings;
 }
 
@@ -182,8 +206,9 @@ struct FrameSeries {
 
 // What the run reports: medians of the GPU times, wall and encoding per frame.
 RenderRunTimes runTimes(uint32_t characters, const FrameSeries& series, double wallMs,
-                        const FrameOutputStats& encoded, int frames) {
+                        const FrameOutputStats& encoded, int frames, double prepareMs) {
   RenderRunTimes times;
+  times.prepareMs = prepareMs;
   times.frames = frames;
   times.characters = characters;
   times.steerMs = median(series.steerMs);
@@ -216,6 +241,7 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   FrameOutput output(frameOutputOptions(o, in));  // encodes on workers: off the frame's timing
   SceneTrajectories trajectories(o.scene, scene, uint64_t(o.frames));
   std::optional<Progress> progress;
+  const double prepareMs = prepareFrames(gpu, scene, renderer, settings, target);
   if (o.report) progress.emplace("render", o.frames);
   const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
@@ -246,7 +272,8 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   if (context.validationEnabled() && context.validationMessageCount() > 0)
     fail(context.validationMessageCount(), " Vulkan validation message(s) during the run");
   const FrameOutputStats encoded = output.stats();
-  const RenderRunTimes times = runTimes(scene.count(), series, wallMs, encoded, o.frames);
+  const RenderRunTimes times =
+      runTimes(scene.count(), series, wallMs, encoded, o.frames, prepareMs);
   if (!o.report) return times;
   printRenderTimes(o, in, scene, context, times, encoded);
   if (trajectories.enabled())

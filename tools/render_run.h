@@ -24,9 +24,9 @@ struct RenderOptions {
 };
 
 // The run's medians of GPU time per frame, its wall time per frame (the mean: from the first
-// frame's recording to the last frame encoded, setup and the encoders' drain included; the
-// median: one frame loop's turn, recording to the frame handed to the encoders) and the
-// encoders' time.
+// frame's recording to the last frame encoded, the encoders' drain included; the median: one
+// frame loop's turn, recording to the frame handed to the encoders), the encoders' time and the
+// preparation before the first frame (what a first frame pays once: scene::recordPreparation).
 struct RenderRunTimes {
   int frames = 0;
   uint32_t characters = 0;
@@ -35,6 +35,7 @@ struct RenderRunTimes {
   double wallMedianMs = 0.0;
   double encodeMs = 0.0;  // per frame, summed over the workers
   int encodeWorkers = 0;
+  double prepareMs = 0.0;  // wall milliseconds, once
   double gpuMs() const { return steerMs + synthesisMs + renderMs; }
 };
 

@@ -105,7 +105,9 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
       rootAt(slow, phase1 * float(slow.frameCount)) - rootAt(slow, phase0 * float(slow.frameCount));
   glm::vec3 dFast =
       rootAt(fast, phase1 * float(fast.frameCount)) - rootAt(fast, phase0 * float(fast.frameCount));
-  glm::vec3 d = mixVec(dSlow, dFast, w);
+  // A step of no time moves no one (as in root_motion.glsl, whose fused multiply-adds can leave
+  // the difference of two equal roots just off zero).
+  glm::vec3 d = dt > 0.0f ? mixVec(dSlow, dFast, w) : glm::vec3(0.0f);
   if (steering == Steering::Circle)
     placement.w = circleHeading(glm::vec2(placement.x, placement.z));
   float c = std::cos(placement.w), s = std::sin(placement.w);

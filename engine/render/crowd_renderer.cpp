@@ -246,10 +246,10 @@ bool CrowdRenderer::groundFor(VkCommandBuffer cmd, const DrawParams& params, uin
     return true;
   }
   // A camera that moves every frame never pays for a ground it would use once: it is made when
-  // the same view comes twice in a row.
+  // the same view comes twice in a row, or at once when the caller says it stays.
   const bool again = key == previousKey_;
   previousKey_ = key;
-  if (!again) return false;
+  if (!again && !params.stillView) return false;
   const VkDeviceSize pixels = VkDeviceSize(params.width) * params.height;
   const VkDeviceSize groundBytes = pixels * sizeof(uint64_t);
   if (!groundVisibility_ || groundVisibility_.size() != groundBytes) {

@@ -35,6 +35,9 @@ struct DrawParams {
   const gpu::Buffer* groups = nullptr;  // storyboard group per character (uint): colour by group
   CachedPoseInputs cachedPoses;  // motion cache on: cached characters' joints are composed here
   VkClearColorValue clearColor{{0.55f, 0.66f, 0.78f, 1.0f}};
+  // The caller keeps this view for the frames to come (a headless run without a camera path):
+  // the ground is made the first time the view is seen, not the second.
+  bool stillView = false;
   // Static walls drawn as panels: segments (ax, az, bx, bz) as RGBA32F uniform texels.
   VkBufferView wallSegments = VK_NULL_HANDLE;
   uint32_t wallSegmentCount = 0;
@@ -57,8 +60,9 @@ class CrowdRenderer {
   // splat into the visibility buffer, their draw inside the render pass):
   //  1. recordSplat: the camera uniforms of `frameSlot`, then the compute splat of small joints
   //     into the visibility buffer, which starts as the ground when `target` takes copies and
-  //     the view is the previous frame's; returns the buffer (null when every joint is drawn as
-  //     a sprite). Whatever splats into it before beginDraw is resolved with the joints;
+  //     the view is the previous frame's or stays (DrawParams::stillView); returns the buffer (null
+  //     when every joint is drawn as a sprite). Whatever splats into it before beginDraw is
+  //     resolved with the joints;
   //  2. beginDraw (the same frame, the same target): puts the visibility buffer into the
   //     target's colour and depth by compute and copies (a ground in the buffer) or clears the
   //     target, begins the render pass and draws the walls, the near joints and, with the target

@@ -21,6 +21,7 @@ render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings)
   params.masks = synth.lod ? &synth.masks : nullptr;
   params.lodLevels = synth.lod ? &synth.front().coverageParts : nullptr;
   params.tintLevels = settings.tintLevels;
+  params.stillView = settings.stillView;
   params.groups = scene.tints();
   if (const crowd::WallBuffers* walls = scene.walls()) {
     params.wallSegments = walls->segmentTexels.get();
@@ -32,30 +33,68 @@ render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings)
   return params;
 }
 
+namespace {
+
+// The synthesis stage of a frame: the coverage LOD sees it through the draw's camera and viewport.
+SynthesisStage synthesisStage(const gpu::Context& context, const Scene& scene,
+                              const SceneStep& step, const FrameSettings& settings) {
+  const render::Camera& camera = settings.camera;
+  return {&scene, &step,
+          synth::coverageCamera(camera.view(), camera.fovYDegrees, settings.targets.width,
+                                settings.targets.height, camera.nearPlane),
+          context.info().maxStorageBufferRange};
+}
+
+// The synthesized joints and LOD masks are read by the capes' compute and the draw.
+void synthesisToDrawBarrier(VkCommandBuffer cmd) {
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+}
+
+}  // namespace
+
 FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, const Scene& scene,
                             const SceneStep& step, render::CrowdRenderer& renderer,
                             secondary::ClothLayer* capes, const FrameSettings& settings,
                             gpu::TimestampPool& timestamps) {
   const render::FrameTargets& targets = settings.targets;
-  const render::Camera& camera = settings.camera;
   FrameTimestamps marks;
   marks.start = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
   // 1. Steer.
   SteerStage{&scene, &step}.record(cmd);
   marks.steered = timestamps.write(cmd);
-  // 2. Synthesize; the coverage LOD sees the frame through the draw's camera and viewport.
-  SynthesisStage synthesis{&scene, &step,
-                           synth::coverageCamera(camera.view(), camera.fovYDegrees, targets.width,
-                                                 targets.height, camera.nearPlane),
-                           context.info().maxStorageBufferRange};
-  synthesis.record(cmd);
+  // 2. Synthesize.
+  synthesisStage(context, scene, step, settings).record(cmd);
   marks.synthesized = timestamps.write(cmd);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  synthesisToDrawBarrier(cmd);
   // 3. Secondary motion.
-  SecondaryStage{capes, camera, targets.width, targets.height, settings.frameSlot}.record(cmd);
+  SecondaryStage{capes, settings.camera, targets.width, targets.height, settings.frameSlot}.record(
+      cmd);
   // 4. Draw.
   DrawStage{&renderer, capes, drawParams(scene, settings), targets, settings.frameSlot}.record(cmd);
+  marks.rendered = timestamps.write(cmd);
+  return marks;
+}
+
+FrameTimestamps recordPreparation(VkCommandBuffer cmd, const gpu::Context& context,
+                                  const Scene& scene, render::CrowdRenderer& renderer,
+                                  const FrameSettings& settings, gpu::TimestampPool& timestamps) {
+  const render::Camera& camera = settings.camera;
+  const synth::CoverageCamera lodCamera =
+      synth::coverageCamera(camera.view(), camera.fovYDegrees, settings.targets.width,
+                            settings.targets.height, camera.nearPlane);
+  FrameTimestamps marks;
+  marks.start = marks.steered = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+  // Root motion for no time (the motion cache's lookup) without the coverage: given the camera,
+  // it would run the update-rate LOD's schedule, whose clock a step of no time must not move.
+  // The pose passes then do the coverage. No wall constraint: nobody moved.
+  synth::recordRootMotionPasses(cmd, scene.programs(), scene.synth(), 0.0f);
+  synth::recordPosePasses(cmd, scene.programs(), scene.synth(),
+                          context.info().maxStorageBufferRange, &lodCamera);
+  marks.synthesized = timestamps.write(cmd);
+  synthesisToDrawBarrier(cmd);
+  DrawStage{&renderer, nullptr, drawParams(scene, settings), settings.targets, settings.frameSlot}
+      .record(cmd);
   marks.rendered = timestamps.write(cmd);
   return marks;
 }

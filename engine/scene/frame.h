@@ -22,6 +22,7 @@ struct FrameSettings {
   float groundExtent = 100.0f;
   uint32_t frameSlot = 0;   // < render::kFramesInFlight
   bool tintLevels = false;  // colour characters by LOD level (paper Fig. 8)
+  bool stillView = false;   // the camera stays for the frames to come (DrawParams::stillView)
 };
 
 // Timestamp indices written by recordFrame.
@@ -44,6 +45,16 @@ FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, co
                             const SceneStep& step, render::CrowdRenderer& renderer,
                             secondary::ClothLayer* capes, const FrameSettings& settings,
                             gpu::TimestampPool& timestamps);
+
+// Records what a first frame pays once, so that it is paid before the frames are timed: the
+// synthesis passes at dt = 0 (nothing moves; the motion cache fills as the first frame would
+// fill it) and the draw (a pipeline's first draw, where lavapipe compiles its shaders; the first
+// touch of every buffer; a still view's ground). Neither steering nor capes: their state would
+// move on. What it draws is not a frame of the run. Returns its timestamps like recordFrame
+// (steered = start).
+FrameTimestamps recordPreparation(VkCommandBuffer cmd, const gpu::Context& context,
+                                  const Scene& scene, render::CrowdRenderer& renderer,
+                                  const FrameSettings& settings, gpu::TimestampPool& timestamps);
 
 FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks);
 

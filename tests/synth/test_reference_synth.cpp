@@ -105,6 +105,21 @@ TEST_CASE("root motion: one cycle travels the blended distance along the heading
   }
 }
 
+TEST_CASE("root motion: a step of no time moves no one, exactly") {
+  anim::ClipPair clips = anim::defaultRunPair();
+  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
+  for (float phase : {0.0f, 0.137f, 0.5f, 0.999f})
+    for (float w : {0.0f, 0.43f, 1.0f}) {
+      CAPTURE(phase);
+      CAPTURE(w);
+      const glm::vec4 placement0(3.7f, 0.0f, -12.25f, 0.8f), motion0(phase, w, 0.9f, 1.1f);
+      glm::vec4 placement = placement0, motion = motion0;
+      anim::stepCharacter(pair, placement, motion, 0.0f, anim::Steering::KeepHeading);
+      CHECK(placement == placement0);
+      CHECK(motion == motion0);
+    }
+}
+
 TEST_CASE("root motion: the speed weight changes only at the end of a cycle") {
   anim::MotionPair pair = test::syntheticPair(5, 30, 24, 2);
   glm::vec4 placement(0.0f), motion(0.1f, 0.2f, 0.9f, 1.0f);
