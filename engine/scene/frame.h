@@ -47,8 +47,8 @@ FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, co
                             gpu::TimestampPool& timestamps);
 
 // Records what a first frame pays once, so that it is paid before the frames are timed: the
-// synthesis passes at dt = 0 (nothing moves; the motion cache fills as the first frame would
-// fill it) and the draw (a pipeline's first draw, where lavapipe compiles its shaders; the first
+// synthesis passes at dt = 0 (nothing moves and the update-rate LOD's schedule keeps its clock;
+// the motion cache fills as the first frame would fill it) and the draw (a pipeline's first draw, where lavapipe compiles its shaders; the first
 // touch of every buffer; a still view's ground). Neither steering nor capes: their state would
 // move on. What it draws is not a frame of the run. Returns its timestamps like recordFrame
 // (steered = start).
