@@ -13,10 +13,11 @@
 namespace throng::test {
 
 // `frames` steps of 1/30 s seen by `camera`; `transferDst`: the target takes copies (render's
-// offscreen path) or not (as the viewer's swapchain, the full-screen resolve).
+// offscreen path) or not (as the viewer's swapchain, the full-screen resolve); `capes`: worn by
+// the scene's crowd (null: none).
 inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
                                int frames, bool transferDst = true, uint32_t width = 320,
-                               uint32_t height = 180) {
+                               uint32_t height = 180, secondary::ClothLayer* capes = nullptr) {
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
   gpu::TimestampPool timestamps(ctx, 8);
@@ -29,7 +30,7 @@ inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const ren
     timestamps.reset();
     const scene::SceneStep step = scene.advance(1 / 30.0f);
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-      scene::recordFrame(cmd, ctx, scene, step, renderer, nullptr, settings, timestamps);
+      scene::recordFrame(cmd, ctx, scene, step, renderer, capes, settings, timestamps);
       render::recordReadback(cmd, target);
     });
   }
