@@ -100,10 +100,8 @@ void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scen
   else
     std::printf("GPU time per frame (median): synthesis %.2f ms, render %.2f ms  [%s]\n",
                 t.synthesisMs, t.renderMs, context.info().name.c_str());
-  std::printf(
-      "prepared in %.0f ms before the first frame (first draws and buffer touches, the motion "
-      "cache's fill%s)\n",
-      t.prepareMs, o.scene.cameraPath.empty() ? ", the ground" : "");
+  std::printf("prepared in %.0f ms before the first frame (first draws and buffer touches%s)\n",
+              t.prepareMs, o.scene.cameraPath.empty() ? ", the ground" : "");
   std::printf(
       "wall time per frame: mean %.2f ms, median %.2f ms; encoding %.2f ms per frame on %d "
       "worker%s, %.2f ms per frame waiting for them\n",
@@ -145,15 +143,15 @@ scene::FrameTimings runOneFrame(FrameSubmitter& gpu, scene::Scene& scene,
   return scene::readFrameTimings(gpu.timestamps, marks);
 }
 
-// What the first frame would pay once (scene::recordPreparation and the readback's first
+// What the first frame would pay once (scene::FramePreparation and the readback's first
 // copy), paid before the frames are timed; its wall milliseconds.
 double prepareFrames(FrameSubmitter& gpu, const scene::Scene& scene,
                      render::CrowdRenderer& renderer, const scene::FrameSettings& settings,
                      render::OffscreenTarget& target) {
   const auto start = std::chrono::steady_clock::now();
-  gpu.timestamps.reset();
+  const scene::FramePreparation preparation(gpu.context, scene);
   gpu::beginCommands(gpu.cmd);
-  scene::recordPreparation(gpu.cmd, gpu.context, scene, renderer, settings, gpu.timestamps);
+  preparation.record(gpu.cmd, renderer, settings);
   render::recordReadback(gpu.cmd, target);
   submitAndWait(gpu);
   return millisecondsSince(start);

@@ -26,7 +26,7 @@ struct RenderOptions {
 // The run's medians of GPU time per frame, its wall time per frame (the mean: from the first
 // frame's recording to the last frame encoded, the encoders' drain included; the median: one
 // frame loop's turn, recording to the frame handed to the encoders), the encoders' time and the
-// preparation before the first frame (what a first frame pays once: scene::recordPreparation).
+// preparation before the first frame (what a first frame pays once: scene::FramePreparation).
 struct RenderRunTimes {
   int frames = 0;
   uint32_t characters = 0;

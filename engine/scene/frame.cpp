@@ -76,27 +76,41 @@ FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, co
   return marks;
 }
 
-FrameTimestamps recordPreparation(VkCommandBuffer cmd, const gpu::Context& context,
-                                  const Scene& scene, render::CrowdRenderer& renderer,
-                                  const FrameSettings& settings, gpu::TimestampPool& timestamps) {
+FramePreparation::FramePreparation(const gpu::Context& context, const Scene& scene)
+    : context_(&context), scene_(&scene) {
+  const synth::CrowdSynth& synth = scene.synth();
+  if (synth.lod)
+    savedMasks_ =
+        gpu::Buffer(context, synth.masks.size(), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+}
+
+void FramePreparation::record(VkCommandBuffer cmd, render::CrowdRenderer& renderer,
+                              const FrameSettings& settings) const {
+  const synth::CrowdSynth& synth = scene_->synth();
   const render::Camera& camera = settings.camera;
   const synth::CoverageCamera lodCamera =
       synth::coverageCamera(camera.view(), camera.fovYDegrees, settings.targets.width,
                             settings.targets.height, camera.nearPlane);
-  FrameTimestamps marks;
-  marks.start = marks.steered = timestamps.write(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-  // Root motion for no time (the motion cache's lookup) without the coverage: given the camera,
-  // it would run the update-rate LOD's schedule, whose clock a step of no time must not move.
-  // The pose passes then do the coverage. No wall constraint: nobody moved.
-  synth::recordRootMotionPasses(cmd, scene.programs(), scene.synth(), 0.0f);
-  synth::recordPosePasses(cmd, scene.programs(), scene.synth(),
-                          context.info().maxStorageBufferRange, &lodCamera);
-  marks.synthesized = timestamps.write(cmd);
+  const VkBufferCopy masks{0, 0, synth.masks.size()};
+  const VkPipelineStageFlags readers = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
+                                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                                       VK_PIPELINE_STAGE_TRANSFER_BIT;
+  if (savedMasks_) {
+    gpu::memoryBarrier(cmd, readers, VK_PIPELINE_STAGE_TRANSFER_BIT);
+    vkCmdCopyBuffer(cmd, synth.masks.get(), savedMasks_.get(), 1, &masks);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  }
+  synth::recordPosePasses(cmd, scene_->programs(), synth, context_->info().maxStorageBufferRange,
+                          &lodCamera);
   synthesisToDrawBarrier(cmd);
-  DrawStage{&renderer, nullptr, drawParams(scene, settings), settings.targets, settings.frameSlot}
+  DrawStage{&renderer, nullptr, drawParams(*scene_, settings), settings.targets, settings.frameSlot}
       .record(cmd);
-  marks.rendered = timestamps.write(cmd);
-  return marks;
+  if (savedMasks_) {
+    gpu::memoryBarrier(cmd, readers | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+    vkCmdCopyBuffer(cmd, savedMasks_.get(), synth.masks.get(), 1, &masks);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, readers);
+  }
 }
 
 FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks) {

@@ -46,15 +46,26 @@ FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, co
                             secondary::ClothLayer* capes, const FrameSettings& settings,
                             gpu::TimestampPool& timestamps);
 
-// Records what a first frame pays once, so that it is paid before the frames are timed: the
-// synthesis passes at dt = 0 (nothing moves and the update-rate LOD's schedule keeps its clock;
-// the motion cache fills as the first frame would fill it) and the draw (a pipeline's first draw, where lavapipe compiles its shaders; the first
-// touch of every buffer; a still view's ground). Neither steering nor capes: their state would
-// move on. What it draws is not a frame of the run. Returns its timestamps like recordFrame
-// (steered = start).
-FrameTimestamps recordPreparation(VkCommandBuffer cmd, const gpu::Context& context,
-                                  const Scene& scene, render::CrowdRenderer& renderer,
-                                  const FrameSettings& settings, gpu::TimestampPool& timestamps);
+// What a first frame pays once, paid before the frames are timed: the coverage, motion cache
+// and pose passes and the draw (a pipeline's first draw, where lavapipe compiles its shaders;
+// the first touch of every buffer; a still view's ground). It leaves the scene as it found it:
+// no root motion and no steering (nothing moves, the update-rate LOD's schedule keeps its clock,
+// the motion cache is asked for nothing, so its first frame counts what it would have counted),
+// no capes, and the LOD masks, which the coverage pass moves on by a step of their hysteresis,
+// copied back afterwards. What it draws is not a frame of the run.
+class FramePreparation {
+ public:
+  // Makes the masks' copy (throws gpu::LimitError past a device limit).
+  FramePreparation(const gpu::Context& context, const Scene& scene);
+  // Records it. Keep this object until the commands completed (the masks' copy).
+  void record(VkCommandBuffer cmd, render::CrowdRenderer& renderer,
+              const FrameSettings& settings) const;
+
+ private:
+  const gpu::Context* context_;
+  const Scene* scene_;
+  gpu::Buffer savedMasks_;  // empty without the coverage LOD
+};
 
 FrameTimings readFrameTimings(const gpu::TimestampPool& timestamps, const FrameTimestamps& marks);
 

@@ -54,6 +54,7 @@ TEST_CASE("render video: H.264 MP4 with the right size and frame count, no PNGs 
   CHECK(probe(video) == "h264,320,240,12");
   CHECK(fs::exists(dir / "frames" / "frame_0011.png"));
   CHECK(run.output.find("wall time per frame") != std::string::npos);
+  CHECK(run.output.find("prepared in") != std::string::npos);
 
   fs::path only = dir / "only.mp4";
   auto seconds = test::runThrong(std::string(kSmallScene) + " --seconds 0.5 --fps 24 --video " +

@@ -61,6 +61,7 @@ TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
     CHECK(row["wall_ms_per_frame"].get<double>() > 0.0);
     CHECK(row["wall_median_ms_per_frame"].get<double>() > 0.0);
     CHECK(row["encode_ms_per_frame"].get<double>() > 0.0);
+    CHECK(row["prepare_ms"].get<double>() > 0.0);  // the one-time costs, before the first frame
   }
   CHECK(run.output.find("wall per frame") != std::string::npos);
   CHECK(renderLoopFolders() == foldersBefore);
