@@ -25,6 +25,8 @@ class PassTimer {
   void beginFrame(VkCommandBuffer cmd);
   // The time since the previous mark is booked to `pass`.
   void mark(VkCommandBuffer cmd, const char* pass);
+  // The marks since beginFrame are not booked: their work was no frame (scene::FramePreparation).
+  void discardPending() { pending_.clear(); }
 
  private:
   void collect();  // the pending marks' times, when their frame completed

@@ -35,20 +35,27 @@ render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings)
 
 namespace {
 
-// The synthesis stage of a frame: the coverage LOD sees it through the draw's camera and viewport.
-SynthesisStage synthesisStage(const gpu::Context& context, const Scene& scene,
-                              const SceneStep& step, const FrameSettings& settings) {
+// The coverage LOD sees a frame through the draw's camera and viewport.
+synth::CoverageCamera coverageCameraFor(const FrameSettings& settings) {
   const render::Camera& camera = settings.camera;
-  return {&scene, &step,
-          synth::coverageCamera(camera.view(), camera.fovYDegrees, settings.targets.width,
-                                settings.targets.height, camera.nearPlane),
-          context.info().maxStorageBufferRange};
+  return synth::coverageCamera(camera.view(), camera.fovYDegrees, settings.targets.width,
+                               settings.targets.height, camera.nearPlane);
 }
 
 // The synthesized joints and LOD masks are read by the capes' compute and the draw.
 void synthesisToDrawBarrier(VkCommandBuffer cmd) {
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
                      VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+}
+
+// The stages that read or write the LOD masks: the synthesis passes and the splat (compute) and
+// the joints' vertex shader.
+constexpr VkPipelineStageFlags kMaskStages =
+    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT;
+
+void copyWhole(VkCommandBuffer cmd, const gpu::Buffer& from, const gpu::Buffer& to) {
+  const VkBufferCopy region{0, 0, from.size()};
+  vkCmdCopyBuffer(cmd, from.get(), to.get(), 1, &region);
 }
 
 }  // namespace
@@ -64,7 +71,8 @@ FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, co
   SteerStage{&scene, &step}.record(cmd);
   marks.steered = timestamps.write(cmd);
   // 2. Synthesize.
-  synthesisStage(context, scene, step, settings).record(cmd);
+  SynthesisStage{&scene, &step, coverageCameraFor(settings), context.info().maxStorageBufferRange}
+      .record(cmd);
   marks.synthesized = timestamps.write(cmd);
   synthesisToDrawBarrier(cmd);
   // 3. Secondary motion.
@@ -80,36 +88,33 @@ FramePreparation::FramePreparation(const gpu::Context& context, const Scene& sce
     : context_(&context), scene_(&scene) {
   const synth::CrowdSynth& synth = scene.synth();
   if (synth.lod)
-    savedMasks_ =
-        gpu::Buffer(context, synth.masks.size(), gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+    savedMasks_ = gpu::Buffer(context, synth.masks.size(),
+                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              gpu::MemoryUse::DeviceLocal);
 }
 
 void FramePreparation::record(VkCommandBuffer cmd, render::CrowdRenderer& renderer,
                               const FrameSettings& settings) const {
   const synth::CrowdSynth& synth = scene_->synth();
-  const render::Camera& camera = settings.camera;
-  const synth::CoverageCamera lodCamera =
-      synth::coverageCamera(camera.view(), camera.fovYDegrees, settings.targets.width,
-                            settings.targets.height, camera.nearPlane);
-  const VkBufferCopy masks{0, 0, synth.masks.size()};
-  const VkPipelineStageFlags readers = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
-                                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
-                                       VK_PIPELINE_STAGE_TRANSFER_BIT;
   if (savedMasks_) {
-    gpu::memoryBarrier(cmd, readers, VK_PIPELINE_STAGE_TRANSFER_BIT);
-    vkCmdCopyBuffer(cmd, synth.masks.get(), savedMasks_.get(), 1, &masks);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+    // After whatever last wrote the masks; before the coverage pass overwrites them.
+    gpu::memoryBarrier(cmd, kMaskStages | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT);
+    copyWhole(cmd, synth.masks, savedMasks_);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, kMaskStages);
   }
+  const synth::CoverageCamera lodCamera = coverageCameraFor(settings);
   synth::recordPosePasses(cmd, scene_->programs(), synth, context_->info().maxStorageBufferRange,
                           &lodCamera);
   synthesisToDrawBarrier(cmd);
   DrawStage{&renderer, nullptr, drawParams(*scene_, settings), settings.targets, settings.frameSlot}
       .record(cmd);
   if (savedMasks_) {
-    gpu::memoryBarrier(cmd, readers | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+    // After the pose passes, the splat and the joints' draw read them; before the first frame's.
+    gpu::memoryBarrier(cmd, kMaskStages | VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_PIPELINE_STAGE_TRANSFER_BIT);
-    vkCmdCopyBuffer(cmd, savedMasks_.get(), synth.masks.get(), 1, &masks);
-    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, readers);
+    copyWhole(cmd, savedMasks_, synth.masks);
+    gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, kMaskStages);
   }
 }
 

@@ -52,7 +52,9 @@ FrameTimestamps recordFrame(VkCommandBuffer cmd, const gpu::Context& context, co
 // no root motion and no steering (nothing moves, the update-rate LOD's schedule keeps its clock,
 // the motion cache is asked for nothing, so its first frame counts what it would have counted),
 // no capes, and the LOD masks, which the coverage pass moves on by a step of their hysteresis,
-// copied back afterwards. What it draws is not a frame of the run.
+// copied back afterwards. What it draws is not a frame of the run. Meant for before a scene's
+// first frame: later, an update-rate scene's full classify would rewrite chunks' pose sources
+// that its next scheduled classify does not visit.
 class FramePreparation {
  public:
   // Makes the masks' copy (throws gpu::LimitError past a device limit).

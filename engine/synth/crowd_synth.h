@@ -112,7 +112,9 @@ void recordSynthesis(VkCommandBuffer cmd, std::span<const SynthPrograms* const> 
 // The two halves of recordSynthesis, for a frame that puts work between them (constraints on
 // where root motion moved the characters, e.g. walls): root motion of every group (with the
 // cache on, also the cache's lookup step), then a barrier; then coverage, the rest of the motion
-// cache and pose. recordPosePasses needs recordRootMotionPasses before it in the same frame.
+// cache and pose. recordPosePasses needs recordRootMotionPasses before it in the same frame,
+// except before a crowd's first frame (scene::FramePreparation): nothing has asked the cache for
+// a bucket yet, so its insert does nothing and every character is posed.
 // With LOD on and `lodCamera` given to recordRootMotionPasses, root motion also does the
 // coverage pass (one pass fewer) and returns true: pass that on as `coverageDone`. Give it no
 // camera when work between the halves moves characters.

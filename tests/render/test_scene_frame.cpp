@@ -53,12 +53,18 @@ scene::SceneSetup lineSetup(uint32_t walkers, uint32_t talkers, bool onePair) {
 
 struct Rendered {
   std::vector<glm::vec4> placement, motion;
-  ImageRgba8 image;
+  ImageRgba8 image;     // the last frame
+  ImageRgba8 first;     // the first frame
+  ImageRgba8 prepared;  // what the preparation drew (Start::Prepared)
+  synth::MotionCacheStats cache;
 };
 
-// `prepared`: scene::FramePreparation runs first, and the view is still (its ground made then).
+// How a run starts: its view moving, still (its ground made at the first frame), or still and
+// prepared first (scene::FramePreparation).
+enum class Start { Moving, Still, Prepared };
+
 Rendered run(scene::Scene& steered, int frames, float dt, const render::Camera& camera,
-             uint32_t width, uint32_t height, bool prepared = false) {
+             uint32_t width, uint32_t height, Start start = Start::Moving) {
   gpu::Context& ctx = test::gpuContext();
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
@@ -66,12 +72,16 @@ Rendered run(scene::Scene& steered, int frames, float dt, const render::Camera& 
   settings.camera = camera;
   settings.targets = render::offscreenFrameTargets(target);
   settings.groundExtent = 60.0f;
-  settings.stillView = prepared;
+  settings.stillView = start != Start::Moving;
   gpu::TimestampPool timestamps(ctx, 8);
-  if (prepared) {
+  Rendered r;
+  if (start == Start::Prepared) {
     const scene::FramePreparation preparation(ctx, steered);
-    gpu::submitAndWait(ctx,
-                       [&](VkCommandBuffer cmd) { preparation.record(cmd, renderer, settings); });
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      preparation.record(cmd, renderer, settings);
+      render::recordReadback(cmd, target);
+    });
+    r.prepared = render::readbackImage(target);
   }
   for (int f = 0; f < frames; ++f) {
     timestamps.reset();
@@ -80,11 +90,12 @@ Rendered run(scene::Scene& steered, int frames, float dt, const render::Camera& 
       scene::recordFrame(cmd, ctx, steered, step, renderer, nullptr, settings, timestamps);
       render::recordReadback(cmd, target);
     });
+    if (f == 0) r.first = render::readbackImage(target);
   }
-  Rendered r;
   r.placement = gpu::readback<glm::vec4>(ctx, steered.crowd().placement, steered.count());
   r.motion = gpu::readback<glm::vec4>(ctx, steered.crowd().motion, steered.count());
   r.image = render::readbackImage(target);
+  if (steered.synth().cached()) r.cache = synth::readCacheStats(steered.synth());
   CHECK(ctx.validationMessageCount() == 0);
   return r;
 }
@@ -203,14 +214,21 @@ TEST_CASE("steered scene: inconsistent setups are refused") {
   }
 }
 
+size_t differingPixels(const ImageRgba8& a, const ImageRgba8& b) {
+  REQUIRE(a.pixels.size() == b.pixels.size());
+  size_t differing = 0;
+  for (size_t p = 0; p < a.pixels.size(); ++p) differing += a.pixels[p] != b.pixels[p];
+  return differing;
+}
+
 TEST_CASE("scene: the preparation before the first frame moves nothing") {
   // With the coverage LOD and the motion cache on, a run prepared with scene::FramePreparation
-  // ends where an unprepared one does and draws the same pictures: it only pays the first
-  // frame's one-time costs early. Steered: the line of walkers from above. Unsteered: 500
-  // runners at the street camera, near and far, with the update-rate LOD (which needs an
-  // unsteered crowd). There levels change at the runners' cycle ends once their timers allow:
-  // masks left as the preparation moved them (its coverage pass starts their timers one frame
-  // early) change 255 pixels of the last frame.
+  // ends where an unprepared one does, draws the same pictures and counts the same cache hits:
+  // it only pays the first frame's one-time costs early. Steered: walkers and talkers (two clip
+  // sets) from above. Unsteered: 500 runners at the street camera, near and far, with the
+  // update-rate LOD (which needs an unsteered crowd). There levels change at the runners' cycle
+  // ends once their timers allow: masks left as the preparation moved them (its coverage pass
+  // starts their timers one frame early) change 255 pixels of the last frame.
   const anim::ClipPair walk = anim::defaultWalkPair(), runPair = anim::defaultRunPair();
   synth::MotionCacheOptions cache;
   cache.enabled = true;
@@ -230,7 +248,7 @@ TEST_CASE("scene: the preparation before the first frame moves nothing") {
     glm::vec4 start(0.0f);
     for (int prepared = 0; prepared < 2; ++prepared) {
       CAPTURE(prepared);
-      scene::SceneSetup setup = lineSetup(6, 0, true);
+      scene::SceneSetup setup = lineSetup(5, 2, false);
       if (!steeredScene) {
         setup = scene::SceneSetup{};
         setup.crowd = crowd::makeScenario(scenario);
@@ -239,7 +257,8 @@ TEST_CASE("scene: the preparation before the first frame moves nothing") {
       }
       start = setup.crowd.placement[0];
       scene::Scene scene(test::gpuContext(), std::move(setup), cache, lod);
-      runs[prepared] = run(scene, 20, 1.0f / 30.0f, camera, 800, 450, prepared == 1);
+      runs[prepared] = run(scene, 20, 1.0f / 30.0f, camera, 800, 450,
+                           prepared == 1 ? Start::Prepared : Start::Still);
       CHECK(scene.seconds() == doctest::Approx(20.0 / 30.0));
     }
     size_t placementsDiffer = 0, motionsDiffer = 0;
@@ -249,13 +268,54 @@ TEST_CASE("scene: the preparation before the first frame moves nothing") {
     }
     CHECK(placementsDiffer == 0);
     CHECK(motionsDiffer == 0);
-    REQUIRE(runs[1].image.pixels.size() == runs[0].image.pixels.size());
-    size_t differing = 0;
-    for (size_t p = 0; p < runs[0].image.pixels.size(); ++p)
-      differing += runs[1].image.pixels[p] != runs[0].image.pixels[p];
-    CHECK(differing == 0);
+    CHECK(differingPixels(runs[1].image, runs[0].image) == 0);
+    CHECK(runs[1].cache.hits == runs[0].cache.hits);
+    CHECK(runs[1].cache.misses == runs[0].cache.misses);
+    CHECK(runs[1].cache.entries == runs[0].cache.entries);
+    // The preparation drew the crowd as it stands before the first step: nearer the first frame
+    // (a step later) than the first frame is to the last (19 steps later). A preparation that
+    // drew nothing would leave the target as it was made.
+    const double preparedToFirst =
+        compareImages(runs[1].prepared, runs[1].first, 24).fractionDifferent;
+    const double firstToLast = compareImages(runs[1].first, runs[1].image, 24).fractionDifferent;
+    MESSAGE("pixels over 24 levels apart: preparation to first frame ", preparedToFirst,
+            ", first to last frame ", firstToLast);
+    CHECK(preparedToFirst > 0.0);
+    CHECK(preparedToFirst < firstToLast);
     // The characters moved: the comparison is between two runs that did something.
     CHECK(glm::length(glm::vec2(runs[0].placement[0].x - start.x,
                                 runs[0].placement[0].z - start.z)) > 0.2f);
   }
+}
+
+TEST_CASE("scene: a frame of zero seconds moves no one, exactly") {
+  // Root motion of a zero step: the difference of two equal roots, which fused multiply-adds
+  // would leave a few ulp off zero. Plain root motion (no LOD) and the one that does the
+  // coverage, for one clip set and for two (the passes that serve every group at once).
+  const anim::ClipPair walk = anim::defaultWalkPair(), runPair = anim::defaultRunPair();
+  crowd::ScenarioOptions scenario;
+  scenario.characters = 400;
+  scenario.seed = 3;
+  const render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  for (bool lodOn : {false, true})
+    for (bool twoSets : {false, true}) {
+      CAPTURE(lodOn);
+      CAPTURE(twoSets);
+      scene::SceneSetup setup;
+      setup.crowd = crowd::makeScenario(scenario);
+      setup.pairs.push_back(anim::makeMotionPair(runPair.slow, runPair.fast));
+      setup.groupFirst = {0, scenario.characters};
+      if (twoSets) {
+        setup.pairs.push_back(anim::makeMotionPair(walk.slow, walk.fast));
+        setup.groupFirst = {0, scenario.characters / 2, scenario.characters};
+      }
+      const synth::LodOptions lod{lodOn, {}, &runPair.slow.skeleton, 0.0f};
+      scene::Scene scene(test::gpuContext(), std::move(setup), {}, lod);
+      const Rendered moved = run(scene, 3, 1.0f / 30.0f, camera, 160, 90);
+      const Rendered still = run(scene, 1, 0.0f, camera, 160, 90);
+      size_t differ = 0;
+      for (uint32_t i = 0; i < scene.count(); ++i)
+        differ += still.placement[i] != moved.placement[i] || still.motion[i] != moved.motion[i];
+      CHECK(differ == 0);
+    }
 }

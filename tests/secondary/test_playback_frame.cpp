@@ -49,8 +49,8 @@ Rendered renderCrowd(const secondary::ClothDatabase* db, bool transferDst) {
 
 TEST_CASE("frame: capes look the same through the planes pass and the full-screen resolve") {
   gpu::Context& ctx = test::gpuContext();
-  if (!ctx.info().int64Atomics) {
-    MESSAGE("SKIPPED: device lacks 64-bit buffer atomics (no splat)");
+  if (!render::CrowdRenderer(ctx, render::kColorFormat, render::kDepthFormat).splatSupported()) {
+    MESSAGE("SKIPPED: the device cannot splat (64-bit buffer atomics, compute subgroups)");
     return;
   }
   const secondary::PlaybackPrimary primary = test::syntheticPrimary(0.5f, {6, 5, 4});
