@@ -69,12 +69,12 @@ const uint kSplatOnScreenArgs = 0u;
 const uint kSplatWalkArgs = 4u;
 
 // The frame's planes (visibility_planes.comp, copied into the target's colour and depth images):
-// the colour plane from word 0, the depth plane from this word, even so that both planes hold
-// whole pairs of pixels.
+// the colour plane from word 0, the depth plane from this word, a multiple of four so that both planes hold
+// whole quads of pixels.
 #ifdef __cplusplus
 inline
 #endif
-uint visibilityDepthPlane(uint pixels) { return (pixels + 1u) & ~1u; }
+uint visibilityDepthPlane(uint pixels) { return (pixels + 3u) & ~3u; }
 const uint kPlanesGroups = 1024u;  // visibility_planes.comp's workgroups at most (grid-stride)
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on

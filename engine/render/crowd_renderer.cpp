@@ -295,10 +295,10 @@ void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
       gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_),
       gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_)};
-  // Two pixels per invocation, at most kPlanesGroups workgroups striding over the rest: lavapipe
+  // Four pixels per invocation, at most kPlanesGroups workgroups striding over the rest: lavapipe
   // pays for every workgroup it starts.
-  const uint32_t pairs = (params.width * params.height + 1u) / 2u;
-  const uint32_t groups = std::min((pairs + 63u) / 64u, gpu_types::kPlanesGroups);
+  const uint32_t quads = (params.width * params.height + 3u) / 4u;
+  const uint32_t groups = std::min((quads + 63u) / 64u, gpu_types::kPlanesGroups);
   gpu::dispatch(cmd, planesProgram_, bindings, nullptr, 0, groups * planesProgram_.localSizeX());
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   passTimer_->mark(cmd, "splat-resolve");
