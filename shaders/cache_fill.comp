@@ -5,11 +5,13 @@
 // Motion cache, step 3 (an indirect dispatch, one invocation per fresh slot × row): synthesize
 // the character-space pose of every entry inserted this frame at its bucket's speed, once for
 // all characters that share it; row r at phase r / R, sampled continuously like the pose pass.
+// With far bodies drawn, each pose's FarBodyPose too (coverage_types.h).
 // CPU twin: synth::MotionCacheCpu::update.
 #include "shared_types.h"
 #include "synth_bindings.h"
 #include "motion_common.glsl"
 #include "speed_buckets.glsl"
+#include "coverage_types.h"
 
 layout(local_size_x = 64) in;
 #include "motion_texels.glsl"
@@ -17,7 +19,9 @@ layout(std430, binding = kCacheFillBindingRadius) readonly buffer Radius { float
 layout(std140, binding = kCacheFillBindingConstantOffsets) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = kCacheFillBindingSlotBucket) readonly buffer SlotBucket { int slotBucket[]; };
 layout(std430, binding = kCacheFillBindingFreshSlots) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
-layout(std430, binding = kCacheFillBindingCacheData) writeonly buffer CacheData { JointMatrix joints[]; };
+layout(std430, binding = kCacheFillBindingCacheData) buffer CacheData { JointMatrix joints[]; };
+layout(std140, binding = kCacheFillBindingParts) uniform Parts { CoverageParts parts; };
+layout(std430, binding = kCacheFillBindingFarBodyPoses) writeonly buffer FarBodyPoses { FarBodyPose farBodyPoses[]; };
 void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
   joints[index].row0 = row0;
   joints[index].row1 = row1;
@@ -36,4 +40,13 @@ void main() {
   uint base = push.dataBase + (slot * push.rowCount + row) * uint(kJointCount);
   composePose(base, clipSample(phase, push.slowFrames), clipSample(phase, push.fastFrames), w,
               vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0, uvec2(0xFFFFFFFFu));
+  if (push.farBodies == 0u) return;
+  // This invocation's own stores, read back: the three joints the far body is placed from.
+  JointMatrix torso = joints[base + parts.parts[kPartTorso].joint];
+  JointMatrix left = joints[base + parts.parts[kPartLeftLeg].joint];
+  JointMatrix right = joints[base + parts.parts[kPartRightLeg].joint];
+  farBodyPoses[base / uint(kJointCount)] =
+      FarBodyPose(vec4(torso.row0.yw, torso.row1.yw), vec4(left.row0.yw, left.row1.yw),
+                  vec4(right.row0.yw, right.row1.yw), vec4(torso.row2.yw, left.row2.yw),
+                  vec4(right.row2.yw, 0.0, 0.0));
 }

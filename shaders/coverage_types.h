@@ -94,6 +94,20 @@ THRONG_STRUCT(CoverageParts) {
   vec4 boneRadius[48];    // float level·64 + j: radius of that long bone over joint j's own
 };
 
+// What the far body (joint_far_body.glsl) reads of a cached pose, written by cache_fill.comp
+// beside the pose: of the torso's and the legs' centre joints (CoverageParts.parts), the y and
+// w components of each matrix row, (row0.y, row0.w, row1.y, row1.w) and then row2's. Read from
+// this small table rather than from three joint matrices of the cache, 1200 bytes apart at 25
+// joints: the far-body pass reads it for every cached character on screen, and on a CPU those
+// scattered rows miss the cache.
+THRONG_STRUCT(FarBodyPose) {
+  vec4 torso;             // the torso's (row0.y, row0.w, row1.y, row1.w)
+  vec4 leftLeg;
+  vec4 rightLeg;
+  vec4 torsoLeftRow2;     // the torso's (row2.y, row2.w), then the left leg's
+  vec4 rightRow2;         // the right leg's (row2.y, row2.w), 0, 0
+};
+
 // Per character output (std430), also read back as the previous frame's mask.
 THRONG_STRUCT(CoverageMask) {
   uint lo;                // joints synthesized this frame, 0..31

@@ -2,15 +2,29 @@
 // screen is splatted as one ellipsoid (its standing height, kFarBodyWidth of it across) instead
 // of its far level's joints: one sprite, not a dozen, for a figure whose limbs are a pixel wide.
 // Placed from three joints the far level always synthesizes, the torso's and the legs' centre
-// joints; their mean heights (CoverageParts.parts) give the character's scale. Needs
-// joint_lod.glsl first. CPU twin: render::farBodyMatrix (engine/render/joint_far_body_cpu.cpp).
+// joints; their mean heights (CoverageParts.parts) give the character's scale. A cached
+// character's three are read from its pose's FarBodyPose (cache_fill.comp), the same numbers as
+// in its cached matrices, and placed by the same arithmetic as placeCachedJoint. Needs
+// joint_lod.glsl and joint_fetch.glsl first. CPU twin: render::farBodyMatrix (engine/render/joint_far_body_cpu.cpp).
 #ifndef THRONG_JOINT_FAR_BODY_GLSL
 #define THRONG_JOINT_FAR_BODY_GLSL
 
 layout(constant_id = 2) const float kFarBodyPixels = kSplatFarBodyPixels;
 
+layout(std430, binding = kRenderBindingFarBodyPoses) readonly buffer FarBodyPoses { FarBodyPose farBodyPoses[]; };
+
 vec3 partPoint(JointMatrix a, float bonePoint) {
   return vec3(a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w, a.row2.y * bonePoint + a.row2.w);
+}
+
+// partPoint of placeCachedJoint(p, place, scale) from the (y, w) components of p's rows, each
+// term as placeCachedJoint computes it, so that both ways give the same bits.
+vec3 cachedPartPoint(vec2 row0, vec2 row1, vec2 row2, CharacterPose pose, float bonePoint) {
+  float c = cos(pose.place.w), s = sin(pose.place.w);
+  vec2 a0 = pose.scale * (c * row0 + s * row2) + vec2(0.0, pose.place.x);
+  vec2 a1 = pose.scale * row1 + vec2(0.0, pose.place.y);
+  vec2 a2 = pose.scale * (c * row2 - s * row0) + vec2(0.0, pose.place.z);
+  return vec3(a0.x * bonePoint + a0.y, a1.x * bonePoint + a1.y, a2.x * bonePoint + a2.y);
 }
 
 // The body ellipsoid as a joint draw matrix; a zero matrix (never visible) where the joints
@@ -19,9 +33,17 @@ JointMatrix farBodyMatrix(CharacterPose pose, uint base) {
   CoveragePart torso = lodParts.parts[kPartTorso];
   CoveragePart left = lodParts.parts[kPartLeftLeg];
   CoveragePart right = lodParts.parts[kPartRightLeg];
-  vec3 spine = partPoint(fetchPoseJoint(pose, base + torso.joint, torso.joint), torso.bonePoint);
-  vec3 knees = 0.5 * (partPoint(fetchPoseJoint(pose, base + left.joint, left.joint), left.bonePoint) +
-                      partPoint(fetchPoseJoint(pose, base + right.joint, right.joint), right.bonePoint));
+  vec3 spine, knees;
+  if (pose.source != kPoseInJoints) {
+    FarBodyPose f = farBodyPoses[pose.source / push.jointCount];
+    spine = cachedPartPoint(f.torso.xy, f.torso.zw, f.torsoLeftRow2.xy, pose, torso.bonePoint);
+    knees = 0.5 * (cachedPartPoint(f.leftLeg.xy, f.leftLeg.zw, f.torsoLeftRow2.zw, pose, left.bonePoint) +
+                   cachedPartPoint(f.rightLeg.xy, f.rightLeg.zw, f.rightRow2.xy, pose, right.bonePoint));
+  } else {
+    spine = partPoint(joints[base + torso.joint], torso.bonePoint);
+    knees = 0.5 * (partPoint(joints[base + left.joint], left.bonePoint) +
+                   partPoint(joints[base + right.joint], right.bonePoint));
+  }
   float meanSpan = torso.centre.y - 0.5 * (left.centre.y + right.centre.y);
   float scale = meanSpan > 0.0 ? (spine.y - knees.y) / meanSpan : 0.0;
   if (!(scale > 0.0)) return JointMatrix(vec4(0.0), vec4(0.0), vec4(0.0));

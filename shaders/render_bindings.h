@@ -32,6 +32,7 @@ const uint kRenderBindingFramePlanes = 17u;  // visibility_planes.comp: colour p
 const uint kRenderBindingWalkList = 19u;      // characters whose joints are splatted, per chunk
 const uint kRenderBindingListCounts = 20u;    // per chunk: each list's length and dispatch
 const uint kRenderBindingOnScreenList = 21u;  // characters on screen, per chunk
+const uint kRenderBindingFarBodyPoses = 22u;  // joint_far_body.glsl: FarBodyPose per cached pose
 
 // The splat's work lists: a joint reserves a sprite and one entry per pixel of its silhouette,
 // and the pixel pass shades one pixel per invocation, so a 20×20 joint next to a 2×2 one costs

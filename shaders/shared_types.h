@@ -153,7 +153,7 @@ THRONG_STRUCT(CachePush) {
   uint jointCount;        // classify: cached pose entries are jointCount matrices apart
   uint slowFrames;        // fill: rows of the slow and fast motion textures
   uint fastFrames;
-  uint pad0;
+  uint farBodies;         // fill: also each pose's FarBodyPose (the LOD on: far bodies drawn)
   uint pad1;
 };
 

@@ -107,6 +107,8 @@ const uint kCacheFillBindingConstantOffsets = 6u;  // uniform
 const uint kCacheFillBindingSlotBucket = 7u;
 const uint kCacheFillBindingFreshSlots = 8u;
 const uint kCacheFillBindingCacheData = 10u;
+const uint kCacheFillBindingParts = 14u;         // uniform CoverageParts (push.farBodies != 0)
+const uint kCacheFillBindingFarBodyPoses = 15u;  // FarBodyPose per cached pose
 
 // cache_classify.comp: cached characters' pose source, the others into the pose lists.
 const uint kCacheClassifyBindingMotion = 0u;  // uniform texel buffer

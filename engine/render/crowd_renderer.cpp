@@ -34,8 +34,12 @@ uint32_t drawFlags(const DrawParams& params) {
 
 // The given inputs, or the placeholder for each binding the shaders declare but will not read.
 CachedPoseInputs boundCachedPoses(const DrawParams& params, const gpu::Buffer& placeholder) {
-  if (params.cachedPoses.enabled()) return params.cachedPoses;
-  return {&placeholder, &placeholder, &placeholder, &placeholder};
+  CachedPoseInputs bound =
+      params.cachedPoses.enabled()
+          ? params.cachedPoses
+          : CachedPoseInputs{&placeholder, &placeholder, &placeholder, &placeholder};
+  if (!bound.farBodyPoses) bound.farBodyPoses = &placeholder;
+  return bound;
 }
 
 // The splat's passes keep 64-bit atomic minima and share work within subgroups (arithmetic,

@@ -119,6 +119,15 @@ std::vector<std::string> SplatJob::validate() const {
   if (!cachedPoses.enabled())
     problems.push_back(
         "inputs 'cachedPoses' are missing (bind small placeholders without a motion cache)");
+  const uint32_t cachedFarBodies =
+      gpu_types::kDrawCachedPoses | gpu_types::kDrawUseMasks | gpu_types::kDrawLodLevels;
+  if (!cachedPoses.farBodyPoses)
+    problems.push_back(
+        "input 'cachedPoses.farBodyPoses' is missing (a placeholder without far bodies)");
+  else if ((flags & cachedFarBodies) == cachedFarBodies &&
+           cachedPoses.farBodyPoses->size() < sizeof(gpu_types::FarBodyPose))
+    problems.push_back(
+        "cached characters' far bodies need 'cachedPoses.farBodyPoses' (synth::makeFarBodyPoses)");
   size_t chunks =
       jointChunks(characterCount, jointCount, std::max(1u, maxStorageBufferRange)).size();
   if (!draws || !*draws)
@@ -185,6 +194,7 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
       gpu::storageBinding(gpu_types::kRenderBindingMotion, *cachedPoses.motion),
       gpu::storageBinding(gpu_types::kRenderBindingPoseSource, *cachedPoses.poseSource),
       gpu::storageBinding(gpu_types::kRenderBindingCacheData, *cachedPoses.cacheData),
+      gpu::storageBinding(gpu_types::kRenderBindingFarBodyPoses, *cachedPoses.farBodyPoses),
       gpu::storageBinding(gpu_types::kRenderBindingGroups, groups ? *groups : *masks),
       gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
                           sizeof(gpu_types::CoverageParts)),

@@ -37,6 +37,9 @@ struct CachedPoseInputs {
   const gpu::Buffer* motion = nullptr;      // vec4 per character (crowd): scale in w
   const gpu::Buffer* poseSource = nullptr;  // uint per character (cache classify pass)
   const gpu::Buffer* cacheData = nullptr;   // JointMatrix per cache slot, segment and joint
+  // The far bodies' table (synth::makeFarBodyPoses), filled with the cache when the LOD is on;
+  // the renderer binds a placeholder without it (no far bodies are drawn then).
+  const gpu::Buffer* farBodyPoses = nullptr;
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 

@@ -29,7 +29,7 @@ render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings)
   }
   if (synth.cached())
     params.cachedPoses = {&synth.crowd.placement, &synth.crowd.motion, &synth.poseSource,
-                          &synth.cacheData};
+                          &synth.cacheData, synth.farBodyPoses ? &synth.farBodyPoses : nullptr};
   return params;
 }
 

@@ -32,6 +32,8 @@ static_assert(sizeof(CoveragePart) == 32, "CoveragePart must match the GLSL std1
 static_assert(sizeof(CoverageLevel) == 32, "CoverageLevel must match the GLSL std140 struct");
 static_assert(sizeof(CoverageParts) == 1248, "CoverageParts must match the GLSL std140 block");
 static_assert(sizeof(CoverageMask) == 16, "CoverageMask must match the GLSL std430 struct");
+using gpu_types::FarBodyPose;
+static_assert(sizeof(FarBodyPose) == 80, "FarBodyPose must match the GLSL std430 struct");
 
 // Default thresholds: projected standing height in pixels (f·H/z) from which a character is
 // mid and near. Every level draws four limbs; mid keeps elbows and knees from 56 px, near

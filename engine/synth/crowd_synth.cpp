@@ -168,6 +168,9 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context,
   std::vector<GpuMotionCache*> caches;
   for (SynthGroup& group : synth.groups) caches.push_back(&group.cache);
   synth.cacheData = makeCacheData(context, caches);
+  if (lod.enabled && cache.enabled)
+    synth.farBodyPoses =
+        makeFarBodyPoses(context, synth.cacheData, uint32_t(pairs.front()->jointCount()));
   if (lod.enabled) {
     synth.lod = true;
     std::vector<CoverageMask> none(std::max<size_t>(crowd.size(), 1), CoverageMask{});
@@ -371,8 +374,13 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
                          const CrowdSynth& synth, uint32_t chunk, uint32_t chunkTotal,
                          bool scheduled) {
   std::vector<CacheJob> jobs;
-  for (const SynthGroup& g : synth.groups)
+  for (const SynthGroup& g : synth.groups) {
     jobs.push_back({&g.motion, &synth.crowd, &g.cache, &synth.cacheData, g.first, g.count});
+    if (synth.farBodyPoses) {
+      jobs.back().parts = &g.coverageParts;
+      jobs.back().farBodyPoses = &synth.farBodyPoses;
+    }
+  }
   // Each step for every group, then one barrier.
   if (synth.sharedPasses()) {
     GroupInsertJob insert{&synth.shared, {}};

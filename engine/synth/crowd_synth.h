@@ -57,6 +57,7 @@ struct CrowdSynth {
   gpu::Buffer listCounts;      // one per chunk
   gpu::Buffer dispatchArgs;    // a VkDispatchIndirectCommand per chunk
   gpu::Buffer cacheData;       // every group's cache entries (makeCacheData)
+  gpu::Buffer farBodyPoses;    // with LOD and cache: the far bodies' table (makeFarBodyPoses)
   // With LOD on: each character's mask, and the frame's camera for the root motion pass that
   // does the coverage too (written at the start of the frame's root motion).
   bool lod = false;

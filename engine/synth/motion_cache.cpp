@@ -6,6 +6,7 @@
 
 #include "anim/reference_synth.h"
 #include "core/error.h"
+#include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
 namespace throng::synth {
@@ -79,6 +80,17 @@ gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache*
   return gpu::Buffer(context,
                      std::max<uint64_t>(16 * sizeof(JointMatrix), matrices * sizeof(JointMatrix)),
                      gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+}
+
+VkDeviceSize farBodyPosesBytes(const gpu::Buffer& cacheData, uint32_t jointCount) {
+  const VkDeviceSize poses = cacheData.size() / sizeof(JointMatrix) / std::max(jointCount, 1u);
+  return (poses + 1) * sizeof(gpu_types::FarBodyPose);
+}
+
+gpu::Buffer makeFarBodyPoses(const gpu::Context& context, const gpu::Buffer& cacheData,
+                             uint32_t jointCount) {
+  return gpu::Buffer(context, farBodyPosesBytes(cacheData, jointCount), gpu::kStorageUsage,
+                     gpu::MemoryUse::DeviceLocal);
 }
 
 MotionCacheStats addCacheStats(const MotionCacheStats& a, const MotionCacheStats& b) {

@@ -85,6 +85,11 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
 // A data buffer for these caches, one after the other: sets each cache's dataBase. Throws
 // Error when the entries would not be addressable by a 32-bit matrix index.
 gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache* const> caches);
+// The far bodies' table beside a data buffer (gpu_types::FarBodyPose, shaders/coverage_types.h):
+// one per pose of jointCount matrices, at the pose's first matrix index / jointCount.
+VkDeviceSize farBodyPosesBytes(const gpu::Buffer& cacheData, uint32_t jointCount);
+gpu::Buffer makeFarBodyPoses(const gpu::Context& context, const gpu::Buffer& cacheData,
+                             uint32_t jointCount);
 MotionCacheStats readCacheStats(const GpuMotionCache& cache);
 // The sum over several caches (the clip sets of one crowd).
 MotionCacheStats addCacheStats(const MotionCacheStats& a, const MotionCacheStats& b);

@@ -100,6 +100,8 @@ SynthPrograms::SynthPrograms(const gpu::Context& context, const anim::MotionPair
       poseTexelsInUniform(texelsFitUniform(pair, uniformTexelCapacity(context))),
       specialization(poseSpecialization(pair, uniformTexelCapacity(context))) {
   noList = gpu::Buffer(context, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  noParts = gpu::Buffer(context, sizeof(CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                        gpu::MemoryUse::DeviceLocal);
 }
 
 gpu::ComputeProgram makeScheduledRootMotionProgram(const gpu::Context& context,
@@ -129,6 +131,13 @@ std::vector<std::string> CacheJob::validate() const {
   if (cache && motion && cache->jointCount != motion->jointCount)
     problems.push_back(concat("the cache holds ", cache->jointCount,
                               " joints per pose, the motion pair has ", motion->jointCount));
+  if (!parts != !farBodyPoses)
+    problems.push_back("inputs 'parts' and 'farBodyPoses' go together (far bodies), or neither");
+  if (cache && data && *data && farBodyPoses &&
+      farBodyPoses->size() < farBodyPosesBytes(*data, cache->jointCount))
+    problems.push_back(concat("output 'farBodyPoses' holds ", farBodyPoses->size(),
+                              " bytes, the cache's poses need ",
+                              farBodyPosesBytes(*data, cache->jointCount)));
   return problems;
 }
 
@@ -161,7 +170,7 @@ void CacheJob::recordInsert(VkCommandBuffer cmd, const SynthPrograms& programs) 
 void CacheJob::recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   gpu::throwIfInvalid("CacheJob", validate());
   if (cache->capacity == 0) return;
-  const CachePush push = cachePush(*this);
+  CachePush push = cachePush(*this);
   // Only the entries inserted this frame: an indirect dispatch sized by the insert pass.
   gpu::Binding fill[] = {
       gpu::storageBinding(gpu_types::kTexelsBindingSlow, motion->slowTexels),
@@ -172,7 +181,11 @@ void CacheJob::recordFill(VkCommandBuffer cmd, const SynthPrograms& programs) co
       gpu::uniformBinding(gpu_types::kCacheFillBindingConstantOffsets, motion->constantOffsets),
       gpu::storageBinding(gpu_types::kCacheFillBindingSlotBucket, cache->slotBucket),
       gpu::storageBinding(gpu_types::kCacheFillBindingFreshSlots, cache->freshSlots),
-      gpu::storageBinding(gpu_types::kCacheFillBindingCacheData, *data)};
+      gpu::storageBinding(gpu_types::kCacheFillBindingCacheData, *data),
+      gpu::uniformBinding(gpu_types::kCacheFillBindingParts, parts ? *parts : programs.noParts),
+      gpu::storageBinding(gpu_types::kCacheFillBindingFarBodyPoses,
+                          farBodyPoses ? *farBodyPoses : programs.noList)};
+  push.farBodies = farBodyPoses ? 1u : 0u;
   gpu::dispatchIndirect(cmd, programs.cacheFill, fill, &push, sizeof(push), cache->fillArgs, 0);
 }
 

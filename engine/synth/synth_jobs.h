@@ -37,6 +37,7 @@ struct SynthPrograms {
   gpu::ComputeProgram cacheInsertGroups;
   gpu::ComputeProgram cacheClassifyGroups;
   gpu::Buffer noList;                     // bindings for a pose pass over a plain range
+  gpu::Buffer noParts;                    // the cache fill's CoverageParts without far bodies
   std::vector<int32_t> poseParents;       // the skeleton `pose` was specialized for
   std::vector<bool> poseAnimatedOffsets;  // and which joints' offsets it reads per frame
   bool poseTexelsInUniform = false;       // and where it reads the texels (motion_gpu.h)
@@ -136,6 +137,10 @@ struct CacheJob {
   const gpu::Buffer* data = nullptr;           // output: the entries, from cache->dataBase
   uint32_t firstCharacter = 0;                 // the group [first, first + count)
   uint32_t characterCount = 0;                 // 0: every character from firstCharacter
+  // Optional, both or neither (far bodies drawn: the LOD on): the fill also writes each fresh
+  // pose's FarBodyPose, of the joints the group's CoverageParts name.
+  const gpu::Buffer* parts = nullptr;         // input: uniform CoverageParts
+  const gpu::Buffer* farBodyPoses = nullptr;  // output: makeFarBodyPoses over `data`
 
   std::vector<std::string> validate() const;
   // The steps after the lookup (done by RootMotionJob with `cache` set), one by one so that a

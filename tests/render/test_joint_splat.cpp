@@ -230,7 +230,7 @@ class GpuSplatRun {
                             bindingRange_,
                             &unread_,
                             0,
-                            {&unread_, &unread_, &unread_, &unread_}};  // no cache
+                            {&unread_, &unread_, &unread_, &unread_, &unread_}};  // no cache
     if (!c_.masks.empty()) {
       job_.masks = &masks_;
       job_.flags = gpu_types::kDrawUseMasks | (c_.levels ? gpu_types::kDrawLodLevels : 0u);

@@ -47,6 +47,25 @@ TEST_CASE("CacheJob: validity") {
   job.cache = &disabled;
   problems = job.validate();
   CHECK(std::find(problems.begin(), problems.end(), "the cache is disabled") != problems.end());
+  // The far bodies' table and the parts that say which joints go into it come together, and
+  // the table holds a FarBodyPose for every pose of the data buffer.
+  synth::GpuMotionCache enabled = synth::makeGpuMotionCache(ctx, pair, {true});
+  std::vector<synth::GpuMotionCache*> caches{&enabled};
+  gpu::Buffer data = synth::makeCacheData(ctx, caches);
+  gpu::Buffer small(ctx, 16, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  job.cache = &enabled;
+  job.data = &data;
+  job.farBodyPoses = &small;
+  auto mentions = [](const std::vector<std::string>& list, const char* text) {
+    return std::any_of(list.begin(), list.end(),
+                       [&](const std::string& p) { return p.find(text) != std::string::npos; });
+  };
+  CHECK(mentions(job.validate(), "go together"));
+  job.parts = &small;
+  CHECK(mentions(job.validate(), "output 'farBodyPoses' holds 16 bytes"));
+  gpu::Buffer table = synth::makeFarBodyPoses(ctx, data, uint32_t(pair.jointCount()));
+  job.farBodyPoses = &table;
+  CHECK_FALSE(mentions(job.validate(), "farBodyPoses"));
   CHECK_THROWS_WITH_AS(synth::validateCacheOptions({true, 0.0f, 1}),
                        doctest::Contains("--bucket-width"), Error);
 }
