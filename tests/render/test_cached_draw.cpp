@@ -18,13 +18,13 @@ using namespace throng;
 namespace {
 // One group of `crowd` animated by `pair`.
 std::unique_ptr<scene::Scene> makeScene(const anim::MotionPair& pair, const crowd::Crowd& crowd,
-                                        const synth::MotionCacheOptions& cache) {
+                                        const synth::MotionCacheOptions& cache,
+                                        const synth::LodOptions& lod = {}) {
   scene::SceneSetup setup;
   setup.crowd = crowd;
   setup.pairs.push_back(pair);
   setup.groupFirst = {0, uint32_t(crowd.size())};
-  return std::make_unique<scene::Scene>(test::gpuContext(), std::move(setup), cache,
-                                        synth::LodOptions{});
+  return std::make_unique<scene::Scene>(test::gpuContext(), std::move(setup), cache, lod);
 }
 
 // One still frame of `scene` as it stands, drawn with `params`, read back.
@@ -84,12 +84,10 @@ TEST_CASE("cached draw: a far body from the far-body table equals one from its m
   crowd::ScenarioOptions scenario;
   scenario.characters = 2000;
   scenario.seed = 5;
-  scene::SceneSetup setup;
-  setup.crowd = crowd::makeScenario(scenario);
-  setup.pairs.push_back(anim::makeMotionPair(clips.slow, clips.fast));
-  setup.groupFirst = {0, scenario.characters};
-  scene::Scene scene(ctx, std::move(setup), cache,
-                     synth::LodOptions{true, {}, &clips.slow.skeleton, 0.0f});
+  std::unique_ptr<scene::Scene> lodScene =
+      makeScene(anim::makeMotionPair(clips.slow, clips.fast), crowd::makeScenario(scenario), cache,
+                synth::LodOptions{true, {}, &clips.slow.skeleton, 0.0f});
+  scene::Scene& scene = *lodScene;
   const render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
   test::renderFrames(ctx, scene, camera, 3, true, 480, 270);
 
