@@ -5,7 +5,8 @@
 // joints; their mean heights (CoverageParts.parts) give the character's scale. A cached
 // character's three are read from its pose's FarBodyPose (cache_fill.comp), the same numbers as
 // in its cached matrices, and placed by the same arithmetic as placeCachedJoint. Needs
-// joint_lod.glsl and joint_fetch.glsl first. CPU twin: render::farBodyMatrix (engine/render/joint_far_body_cpu.cpp).
+// joint_lod.glsl and joint_fetch.glsl first. CPU twin: render::farBodyMatrix
+// (engine/render/joint_far_body_cpu.cpp).
 #ifndef THRONG_JOINT_FAR_BODY_GLSL
 #define THRONG_JOINT_FAR_BODY_GLSL
 

@@ -70,8 +70,8 @@ const uint kSplatOnScreenArgs = 0u;
 const uint kSplatWalkArgs = 4u;
 
 // The frame's planes (visibility_planes.comp, copied into the target's colour and depth images):
-// the colour plane from word 0, the depth plane from this word, a multiple of four so that both planes hold
-// whole quads of pixels.
+// the colour plane from word 0, the depth plane from this word, a multiple of four so that both
+// planes hold whole runs of four pixels.
 #ifdef __cplusplus
 inline
 #endif

@@ -1,18 +1,17 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_scalar_block_layout : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // The frame's visibility buffer into the colour and depth planes the target is copied from. The
 // buffer started as the ground (ground.comp's words, copied in) and every splat kept each pixel's
 // nearest hit in it by atomicMin, so it holds the whole picture: a pixel's word is its colour
 // (low 32 bits) and its depth (high 32). Four pixels per invocation: lavapipe runs each storage
-// access as a loop over the lanes, so one 32-byte load and two 16-byte stores move four pixels.
+// access as a loop over the lanes, so two 16-byte loads and two 16-byte stores move four pixels
+// (one 32-byte load of four 64-bit words cost lavapipe more than the loop it saves).
 #include "shared_types.h"
 #include "render_bindings.h"
 
 layout(local_size_x = 64) in;
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
-// The visibility words one at a time, and four pixels' words at a time.
+// The visibility words as pairs (colour, depth), one at a time or two pixels' at a time.
 layout(std430, binding = kRenderBindingVisibility) readonly buffer Visibility { uvec2 visibility[]; };
 layout(std430, binding = kRenderBindingVisibility) readonly buffer VisibilityPairs { uvec4 visibilityPairs[]; };
 // The colour plane, then the depth plane from word visibilityDepthPlane(pixels) (a multiple of
