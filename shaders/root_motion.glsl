@@ -54,12 +54,23 @@ layout(std140, binding = kRootMotionBindingCoverageView) uniform View { Coverage
 #ifdef THRONG_ROOT_MOTION_SCHEDULED
 // The update-rate LOD (update_rate.h): workgroup g moves the chunk of kUpdateChunkCharacters
 // (the local size) that list entry g names, by the seconds since its last move, and raises the chunk's largest
-// projected height for the next schedule.
+// projected height for the next schedule: of the characters that may be on screen before the
+// chunk's next move (the others count as 0 px tall, so a chunk of them waits the longest interval).
 #include "update_rate.h"
 layout(std430, binding = kRootMotionBindingChunkState) buffer ChunkState { uvec2 chunkState[]; };
 layout(std430, binding = kRootMotionBindingChunkList) readonly buffer ChunkList { uvec2 chunkList[]; };
 #endif
 layout(push_constant) uniform Push { RootMotionPush push; };
+
+#ifdef THRONG_ROOT_MOTION_SCHEDULED
+// Whether the character's body sphere (bodyOnScreen's), grown by how far it may walk before its
+// chunk's next move, meets this step's view: it may be drawn before it moves again.
+bool mayBeOnScreen(vec4 place, vec4 m) {
+  float height = parts.body.x * characterScale(m);
+  vec3 middle = cameraSpace(camera.view, place.xyz + vec3(0.0, 0.5 * height, 0.0));
+  return sphereInFrustum(camera.viewport, camera.frustum, middle, (0.8 + push.reachPerHeight) * height);
+}
+#endif
 
 // A character's clips: the dispatch's (push constants), or its group's in the group table.
 struct Clips {
@@ -157,6 +168,7 @@ void main() {
 #ifdef THRONG_ROOT_MOTION_SCHEDULED
   float h;
   maskWords[i] = frameMaskWords(camera.view, camera.viewport, camera.frustum, place, m, maskWords[i], h);
+  if (!mayBeOnScreen(place, m)) h = 0.0;
   // Heights are positive, so their bits order like the floats.
   float chunkHeight = subgroupMax(h);
   if (subgroupElect()) atomicMax(chunkState[entry.x].x, floatBitsToUint(chunkHeight));

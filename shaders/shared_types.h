@@ -66,7 +66,9 @@ THRONG_STRUCT(RootMotionPush) {
   vec4 slowCycleTravel;   // xyz: root displacement over one slow cycle
   vec4 fastCycleTravel;
   uint cacheBucketCount;  //   (the cache's lookup step, done here: no pass of its own)
-  uint pad0;
+  // Scheduled (update_rate.h): how far a character may walk, in its standing heights, before its
+  // chunk's next move; the body sphere that decides whether it may be drawn grows by it.
+  float reachPerHeight;
   uint pad1;
   uint pad2;
 };

@@ -9,7 +9,9 @@
 // multiple of k), so each step moves about the same share of the crowd, in runs of consecutive
 // chunks: memory read in long runs (on the 2-core VM a quarter of the chunks moved cost 0.27 of
 // moving all of them with blocks of 256, 0.36 staggered chunk by chunk). Each update moves by
-// the seconds of every step since the chunk's last.
+// the seconds of every step since the chunk's last. A character that cannot reach the view before
+// its chunk's next move (RootMotionPush::reachPerHeight) counts as 0 px tall: a chunk of such
+// characters moves every maxInterval steps, and none of them walks into view lagging.
 #ifndef THRONG_UPDATE_RATE_H
 #define THRONG_UPDATE_RATE_H
 

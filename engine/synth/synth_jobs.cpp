@@ -207,6 +207,8 @@ RootMotionPush rootMotionPush(const RootMotionJob& job) {
     push.cacheBucketWidth = job.cache->options.bucketWidth;
     push.cacheBucketCount = job.cache->bucketCount;
   }
+  if (job.updateRate)
+    push.reachPerHeight = updateReachPerHeight(job.updateRate->params, job.updateRate->recent);
   return push;
 }
 }  // namespace

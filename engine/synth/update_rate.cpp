@@ -86,6 +86,11 @@ RecentSteps advanceRecentSteps(RecentSteps& recent, float dt) {
   return since;
 }
 
+float updateReachPerHeight(const UpdateRateParams& params, const RecentSteps& recent) {
+  const float longest = *std::max_element(recent.begin(), recent.end());
+  return float(params.maxInterval) * params.lagPerHeight(longest);
+}
+
 glm::uvec2 initialChunkState() {
   return {std::bit_cast<uint32_t>(std::numeric_limits<float>::infinity()), ~0u};
 }
@@ -129,15 +134,22 @@ void stepScheduledCpu(const anim::MotionPair& pair, crowd::Crowd& crowd,
     anim::applyRetarget(i, retarget, crowd.motion[i]);
   }
   const CoveragePush push = makeCoveragePush(camera, uint32_t(pair.jointCount()), 0, n, 0u);
-  for (const ChunkMove& move : schedule.schedule(params, dt)) {
+  const std::vector<ChunkMove> moves = schedule.schedule(params, dt);
+  const float reachPerHeight = updateReachPerHeight(params, schedule.recent);
+  for (const ChunkMove& move : moves) {
     const uint32_t end = std::min(n, (move.chunk + 1) * kUpdateChunkCharacters);
     for (uint32_t i = move.chunk * kUpdateChunkCharacters; i < end; ++i) {
-      anim::stepCharacter(pair, crowd.placement[i], crowd.motion[i], move.seconds,
-                          anim::Steering::KeepHeading);
-      masks[i] = coverageCharacter(push, parts, crowd.placement[i], crowd.motion[i], nullptr,
-                                   masks[i], nullptr);
+      glm::vec4& p = crowd.placement[i];
+      const glm::vec4& m = crowd.motion[i];
+      anim::stepCharacter(pair, p, crowd.motion[i], move.seconds, anim::Steering::KeepHeading);
+      masks[i] = coverageCharacter(push, parts, p, m, nullptr, masks[i], nullptr);
+      // Mirrors mayBeOnScreen in root_motion.glsl.
+      const float height = parts.body.x * gpu_types::characterScale(m);
+      const glm::vec3 middle =
+          cameraSpace(push, glm::vec3(p) + glm::vec3(0.0f, 0.5f * height, 0.0f));
+      const bool mayBeOnScreen = sphereInFrustum(push, middle, (0.8f + reachPerHeight) * height);
       schedule.raiseHeight(move.chunk,
-                           characterHeightPixels(push, parts, crowd.placement[i], crowd.motion[i]));
+                           mayBeOnScreen ? characterHeightPixels(push, parts, p, m) : 0.0f);
     }
   }
 }

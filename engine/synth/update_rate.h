@@ -4,7 +4,11 @@
 // few pixels tall costs the share of it that moves. The bound: between two moves, no joint
 // point of a character (joint origin or bone end) is drawn more than maxLagPixels from where
 // moving it every step would draw it, at the heights its chunk had at its last move (a camera
-// that comes nearer is followed within one interval, at most kUpdateMaxInterval steps). Root
+// that comes nearer is followed within one interval, at most kUpdateMaxInterval steps). A
+// character that cannot reach the view before its chunk's next move (at the longest recent
+// step) counts as 0 px tall: a chunk of such characters moves every maxInterval steps, none of
+// them walks into view lagging, and a camera that turns toward them is followed within that
+// interval, like one that comes nearer. Root
 // motion integrates exactly over the skipped steps (the root rows are lerped in the phase), so
 // a character catches up to within rounding, but for a cycle end inside the skipped steps, where
 // the new speed weight starts at the move instead of at the cycle end.
@@ -66,6 +70,10 @@ using RecentSteps = std::array<float, kUpdateMaxInterval>;
 // Records a step of dt; returns the seconds of the last 1, 2, … steps (UpdateSchedulePush::
 // sinceSeconds), summed in one order for both sides.
 RecentSteps advanceRecentSteps(RecentSteps& recent, float dt);
+// RootMotionPush::reachPerHeight: a chunk's next move is at most maxInterval steps away, each
+// taken as long as the longest of the recent steps; how far a joint point moves in that time, in
+// standing heights.
+float updateReachPerHeight(const UpdateRateParams& params, const RecentSteps& recent);
 
 // CPU twin of update_schedule.comp and of the chunk heights the scheduled root motion raises.
 struct UpdateScheduleCpu {

@@ -14,6 +14,7 @@
 #include "anim/reference_synth.h"
 #include "core/error.h"
 #include "crowd/scenario.h"
+#include "crowd/spatial_order.h"
 #include "gpu/commands.h"
 #include "gpu_fixture.h"
 #include "synth/crowd_synth.h"
@@ -214,6 +215,72 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
   CHECK(worstPlacement <= 1e-4f);
   CHECK(worstMotion <= 1e-4f);
   CHECK(maskMismatches == 0);
+  CHECK(ctx.validationMessageCount() == 0);
+}
+
+TEST_CASE("update-rate LOD: chunks off screen wait the longest interval; none walks into view lagging") {
+  gpu::Context& ctx = test::gpuContext();
+  const anim::MotionPair& pair = test::builtInRunPair();
+  crowd::ScenarioOptions scenario;
+  scenario.characters = 64 * 48;  // a square 28 m wide, dense: chunks are patches 4 m wide
+  scenario.density = 4.0f;
+  crowd::Crowd everyStep = crowd::makeScenario(scenario);
+  everyStep = crowd::permuted(everyStep, crowd::spatialOrder(everyStep));
+  const synth::LodOptions lod{true, {}, &test::builtInRunSkeleton(), 2.0f};
+  synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, everyStep, {}, lod);
+  synth::SynthPrograms programs(ctx, pair);
+  const synth::SynthPrograms* used[] = {&programs};
+  const synth::CoverageParts parts =
+      *static_cast<const synth::CoverageParts*>(gpuSynth.front().coverageParts.mapped());
+  const uint32_t chunks = gpuSynth.updateRate->chunkCount;
+  const float dt = 1 / 30.0f;
+  size_t checked = 0, lagging = 0, laggingAfterTurn = 0;
+  uint32_t fewestMoved = chunks, totalMoved = 0;
+  for (int step = 0; step < 40; ++step) {
+    // From the middle of the crowd at head height, along +x, then (a turn) along -x: everything
+    // on screen is near enough to move every step, everything behind waits. Characters walk
+    // into view all the time at the sides; after the turn, the chunks now in view catch up
+    // within one interval.
+    const float look = step < 20 ? 1.0f : -1.0f;
+    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 1.7f, 0.0f),
+                                       glm::vec3(look, 1.5f, 0.2f), glm::vec3(0, 1, 0));
+    const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      CHECK(synth::recordRootMotionPasses(cmd, used, gpuSynth, dt, {}, &camera));
+    });
+    const uint32_t moved = synth::readMovedChunks(ctx, *gpuSynth.updateRate);
+    if (step > 0) fewestMoved = std::min(fewestMoved, moved);
+    if (step > 0) totalMoved += moved;
+    for (size_t i = 0; i < everyStep.size(); ++i)
+      anim::stepCharacter(pair, everyStep.placement[i], everyStep.motion[i], dt,
+                          anim::Steering::KeepHeading);
+    crowd::Crowd gpuCrowd;
+    crowd::downloadCrowd(ctx, gpuSynth.crowd, gpuCrowd);
+    // Every character whose body is on screen where moving every step puts it is drawn there.
+    const synth::CoveragePush push = synth::makeCoveragePush(camera, 1, 0, 1, 0u);
+    for (size_t i = 0; i < everyStep.size(); ++i) {
+      const float height = parts.body.x * gpu_types::characterScale(everyStep.motion[i]);
+      const glm::vec3 middle = synth::cameraSpace(
+          push, glm::vec3(everyStep.placement[i]) + glm::vec3(0.0f, 0.5f * height, 0.0f));
+      if (!synth::sphereInFrustum(push, middle, 0.8f * height)) continue;
+      const bool lags =
+          glm::length(glm::vec3(gpuCrowd.placement[i] - everyStep.placement[i])) > 1e-3f;
+      if (step >= 20 && step < 20 + int(synth::kUpdateMaxInterval)) {
+        laggingAfterTurn += lags;
+        continue;
+      }
+      ++checked;
+      lagging += lags;
+    }
+  }
+  MESSAGE(checked, " bodies on screen checked over 32 steps, ", lagging,
+          " drawn away from where moving every step puts them (", laggingAfterTurn,
+          " in the 8 steps after the turn); ", totalMoved, " chunk moves in 39 steps of ", chunks,
+          " chunks, at least ", fewestMoved, " a step");
+  CHECK(checked > 10000);
+  CHECK(lagging == 0);
+  CHECK(totalMoved < chunks * 39 * 3 / 4);  // the chunks behind the camera wait
+  CHECK(fewestMoved > chunks / 8);           // the ones in view move every step
   CHECK(ctx.validationMessageCount() == 0);
 }
 
