@@ -218,7 +218,8 @@ TEST_CASE("update-rate LOD: scheduled root motion and coverage equal the CPU twi
   CHECK(ctx.validationMessageCount() == 0);
 }
 
-TEST_CASE("update-rate LOD: chunks off screen wait the longest interval; none walks into view lagging") {
+TEST_CASE(
+    "update-rate LOD: chunks off screen wait the longest interval; none walks into view lagging") {
   gpu::Context& ctx = test::gpuContext();
   const anim::MotionPair& pair = test::builtInRunPair();
   crowd::ScenarioOptions scenario;
@@ -242,8 +243,8 @@ TEST_CASE("update-rate LOD: chunks off screen wait the longest interval; none wa
     // into view all the time at the sides; after the turn, the chunks now in view catch up
     // within one interval.
     const float look = step < 20 ? 1.0f : -1.0f;
-    const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 1.7f, 0.0f),
-                                       glm::vec3(look, 1.5f, 0.2f), glm::vec3(0, 1, 0));
+    const glm::mat4 view =
+        glm::lookAt(glm::vec3(0.0f, 1.7f, 0.0f), glm::vec3(look, 1.5f, 0.2f), glm::vec3(0, 1, 0));
     const synth::CoverageCamera camera = synth::coverageCamera(view, 45.0f, 1280, 720, 0.1f);
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       CHECK(synth::recordRootMotionPasses(cmd, used, gpuSynth, dt, {}, &camera));
@@ -280,7 +281,7 @@ TEST_CASE("update-rate LOD: chunks off screen wait the longest interval; none wa
   CHECK(checked > 10000);
   CHECK(lagging == 0);
   CHECK(totalMoved < chunks * 39 * 3 / 4);  // the chunks behind the camera wait
-  CHECK(fewestMoved > chunks / 8);           // the ones in view move every step
+  CHECK(fewestMoved > chunks / 8);          // the ones in view move every step
   CHECK(ctx.validationMessageCount() == 0);
 }
 
