@@ -77,6 +77,10 @@ inline
 #endif
 uint visibilityDepthPlane(uint pixels) { return (pixels + 3u) & ~3u; }
 const uint kPlanesGroups = 1024u;  // visibility_planes.comp's workgroups at most (grid-stride)
+// visibility_planes.comp's push constant: 1 when the depth plane is written, 0 when only the colour
+// plane is (nothing drawn after the splat reads the depths but near joints, and those read the
+// visibility buffer: joints_over_splat.frag).
+const uint kPlanesWithDepth = 1u;
 
 // The far body (joint_far_body.glsl): a far-level character under this many pixels tall on
 // screen is splatted as one ellipsoid its standing height tall and kFarBodyWidth of it across

@@ -18,6 +18,7 @@ layout(std430, binding = kRenderBindingVisibility) readonly buffer VisibilityPai
 // four, so that both planes hold whole uvec4s).
 layout(std430, binding = kRenderBindingFramePlanes) writeonly buffer Planes { uint planes[]; };
 layout(std430, binding = kRenderBindingFramePlanes) writeonly buffer PlaneQuads { uvec4 planeQuads[]; };
+layout(push_constant) uniform Push { uint planes; } push;  // kPlanesWithDepth or 0
 
 void main() {
   uint pixels = uint(frame.viewport.x) * uint(frame.viewport.y);
@@ -26,13 +27,13 @@ void main() {
   for (uint i = gl_GlobalInvocationID.x; i < pixels / 4u; i += stride) {
     uvec4 a = visibilityPairs[2u * i], b = visibilityPairs[2u * i + 1u];
     planeQuads[i] = uvec4(a.xz, b.xz);
-    planeQuads[depthQuads + i] = uvec4(a.yw, b.yw);
+    if (push.planes == kPlanesWithDepth) planeQuads[depthQuads + i] = uvec4(a.yw, b.yw);
   }
   uint rest = pixels & 3u;
   if (gl_GlobalInvocationID.x < rest) {
     uint p = pixels - rest + gl_GlobalInvocationID.x;
     uvec2 last = visibility[p];
     planes[p] = last.x;
-    planes[visibilityDepthPlane(pixels) + p] = last.y;
+    if (push.planes == kPlanesWithDepth) planes[visibilityDepthPlane(pixels) + p] = last.y;
   }
 }

@@ -85,6 +85,9 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   jointDesc.cullMode = VK_CULL_MODE_NONE;
   jointDesc.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
   joints_ = gpu::GraphicsProgram(context, jointDesc);
+  gpu::GraphicsPipelineDesc overSplatDesc = jointDesc;
+  overSplatDesc.fragmentShader = "joints_over_splat.frag";
+  jointsOverSplat_ = gpu::GraphicsProgram(context, overSplatDesc);
   gpu::GraphicsPipelineDesc groundDesc = jointDesc;
   groundDesc.vertexShader = "ground.vert";
   groundDesc.fragmentShader = "ground.frag";
@@ -217,13 +220,16 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
   THRONG_CHECK(!groundCopied_ || target.transferDst,
                "beginDraw: the splat started from the ground, for a target that takes copies");
+  // Near joints read the splat's depths from the visibility buffer; walls and the caller's draws
+  // need them in the depth attachment.
+  depthPlane_ = params.wallSegmentCount > 0 || params.moreDepthDraws;
   if (groundCopied_) {
     resolvePlanes(cmd, params, frameSlot);
     copyPlanesIn(cmd, target, params);
   } else {
     clearTargets(cmd, target);
   }
-  beginRendering(cmd, target, params, groundCopied_);
+  beginRendering(cmd, target, params, groundCopied_, groundCopied_ && depthPlane_);
   drawJoints(cmd, params, frameSlot);
 }
 
@@ -303,8 +309,13 @@ void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
   // pays for every workgroup it starts.
   const uint32_t quads = (params.width * params.height + 3u) / 4u;
   const uint32_t groups = std::min((quads + 63u) / 64u, gpu_types::kPlanesGroups);
-  gpu::dispatch(cmd, planesProgram_, bindings, nullptr, 0, groups * planesProgram_.localSizeX());
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+  const uint32_t planes = depthPlane_ ? gpu_types::kPlanesWithDepth : 0u;
+  gpu::dispatch(cmd, planesProgram_, bindings, &planes, sizeof(planes),
+                groups * planesProgram_.localSizeX());
+  // The copies read the planes; without the depth plane the near joints read the visibility
+  // buffer.
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
   passTimer_->mark(cmd, "splat-resolve");
 }
 
@@ -313,24 +324,33 @@ void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target
   gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  gpu::transitionImage(cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   VkBufferImageCopy region{};
   region.imageExtent = {params.width, params.height, 1};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   vkCmdCopyBufferToImage(cmd, framePlanes_.get(), target.color,
-                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-  region.bufferOffset =
-      VkDeviceSize(gpu_types::visibilityDepthPlane(params.width * params.height)) * 4u;
-  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
-  vkCmdCopyBufferToImage(cmd, framePlanes_.get(), target.depth,
                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  if (!depthPlane_) {  // cleared when the render pass begins
+    gpu::transitionImage(
+        cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+        VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    passTimer_->mark(cmd, "planes-copy");
+    return;
+  }
+  gpu::transitionImage(cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  region.bufferOffset =
+      VkDeviceSize(gpu_types::visibilityDepthPlane(params.width * params.height)) * 4u;
+  region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+  vkCmdCopyBufferToImage(cmd, framePlanes_.get(), target.depth,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   gpu::transitionImage(
       cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -341,17 +361,17 @@ void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target
 }
 
 void CrowdRenderer::beginRendering(VkCommandBuffer cmd, const FrameTargets& target,
-                                   const DrawParams& params, bool load) {
+                                   const DrawParams& params, bool loadColour, bool loadDepth) {
   VkRenderingAttachmentInfoKHR colorAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
   colorAttachment.imageView = target.colorView;
   colorAttachment.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-  colorAttachment.loadOp = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+  colorAttachment.loadOp = loadColour ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   colorAttachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   colorAttachment.clearValue.color = params.clearColor;
   VkRenderingAttachmentInfoKHR depthAttachment{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO_KHR};
   depthAttachment.imageView = target.depthView;
   depthAttachment.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR;
-  depthAttachment.loadOp = load ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
+  depthAttachment.loadOp = loadDepth ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   depthAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depthAttachment.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfoKHR rendering{VK_STRUCTURE_TYPE_RENDERING_INFO_KHR};
@@ -396,6 +416,9 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
       jointChunks(params.characterCount, params.jointCount, context_->info().maxStorageBufferRange);
   const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
   const CachedPoseInputs cached = boundCachedPoses(params, noMasks_);
+  // Over the planes without their depths, the near joints test against the visibility buffer.
+  const bool overSplat = splat && groundCopied_ && !depthPlane_;
+  const gpu::GraphicsProgram& program = overSplat ? jointsOverSplat_ : joints_;
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];
     gpu::Binding bindings[] = {
@@ -413,10 +436,13 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
         gpu::storageBinding(gpu_types::kRenderBindingGroups,
                             params.groups ? *params.groups : noMasks_),
         gpu::uniformBinding(gpu_types::kRenderBindingLodLevels, *lodLevels, 0,
-                            sizeof(gpu_types::CoverageParts))};
+                            sizeof(gpu_types::CoverageParts)),
+        gpu::storageBinding(gpu_types::kRenderBindingVisibility,
+                            overSplat ? visibility_ : noMasks_)};
     push.firstCharacter = chunk.firstCharacter;
     push.listBase = chunk.firstCharacter * params.jointCount;
-    joints_.bind(cmd, bindings, &push, sizeof(push));
+    program.bind(cmd, std::span(bindings, std::size(bindings) - (overSplat ? 0 : 1)), &push,
+                 sizeof(push));
     if (splat) {
       vkCmdDrawIndirect(cmd, draws_.get(), c * 16, 1, 16);
     } else {

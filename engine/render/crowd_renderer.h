@@ -41,6 +41,9 @@ struct DrawParams {
   // Static walls drawn as panels: segments (ax, az, bx, bz) as RGBA32F uniform texels.
   VkBufferView wallSegments = VK_NULL_HANDLE;
   uint32_t wallSegmentCount = 0;
+  // The caller draws more with depth between beginDraw and endDraw (the capes): the splatted
+  // picture's depths are then copied into the depth attachment.
+  bool moreDepthDraws = false;
 };
 
 // Camera, light and viewport of a frame as the shaders read them.
@@ -84,6 +87,7 @@ class CrowdRenderer {
 
  private:
   gpu::GraphicsProgram joints_;
+  gpu::GraphicsProgram jointsOverSplat_;  // near joints tested against the visibility buffer
   gpu::GraphicsProgram ground_;
   gpu::GraphicsProgram walls_;
   std::vector<gpu::Buffer> frameUniforms_;
@@ -113,11 +117,12 @@ class CrowdRenderer {
   void clearTargets(VkCommandBuffer cmd, const FrameTargets& target);
   // True when the ground of this view exists or was recorded now (the same view twice in a row).
   bool groundFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
-  // The visibility buffer (ground and splat) into framePlanes_, then into the target.
+  // The visibility buffer (ground and splat) into framePlanes_, then into the target: the colour,
+  // and the depth unless only near joints come after (depthPlane_).
   void resolvePlanes(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
-                      bool load);
+                      bool loadColour, bool loadDepth);
   gpu::ComputeProgram groundProgram_;      // ground.comp
   gpu::ComputeProgram planesProgram_;      // visibility_planes.comp
   gpu::Buffer groundVisibility_;           // ground.comp's words, the visibility buffer's start
@@ -125,6 +130,7 @@ class CrowdRenderer {
   std::vector<uint8_t> pendingGroundKey_;  // a ground recorded in a frame not yet whole
   std::vector<uint8_t> previousKey_;       // the previous frame's view
   bool groundCopied_ = false;              // this frame's splat started from the ground
+  bool depthPlane_ = false;  // with it: its depths copied in (walls or the caller's draws follow)
   gpu::Buffer framePlanes_;                // this frame's colour and depth planes
 };
 

@@ -72,9 +72,11 @@ std::vector<std::string> DrawStage::validate() const {
 void DrawStage::record(VkCommandBuffer cmd) const {
   gpu::throwIfInvalid("DrawStage", validate());
   // The capes splat into the joints' visibility buffer, which beginDraw resolves.
-  const gpu::Buffer* visibility = renderer->recordSplat(cmd, targets, params, frameSlot);
+  render::DrawParams drawn = params;
+  drawn.moreDepthDraws = capes != nullptr;  // their draw inside the render pass tests depth
+  const gpu::Buffer* visibility = renderer->recordSplat(cmd, targets, drawn, frameSlot);
   if (capes && visibility) capes->recordSplat(cmd, *visibility, frameSlot);
-  renderer->beginDraw(cmd, targets, params, frameSlot);
+  renderer->beginDraw(cmd, targets, drawn, frameSlot);
   if (capes) capes->recordDraw(cmd, frameSlot);
   renderer->endDraw(cmd, targets);
 }

@@ -2,7 +2,7 @@
 // splat starts from the ground's words (ground.comp, kept while the view stands still) and
 // visibility_planes.comp splits the result into the colour and depth copied in; on any other
 // target (the viewer's swapchain), one full-screen fragment pass shades the ground and resolves
-// the splat.
+// the splat. Near joints are drawn over either.
 #include <doctest/doctest.h>
 
 #include "anim/default_clips.h"
@@ -33,9 +33,11 @@ TEST_CASE("splat resolve: the splat over the ground's words equals the full-scre
     uint32_t width, height;
   };
   // 321 × 181: an odd pixel count, the planes pass's last pixel done alone and the depth plane
-  // starting one word past the colour plane's end.
-  for (const View view :
-       {View{"wide", 320, 180}, View{"street", 320, 180}, View{"street", 321, 181}}) {
+  // starting one word past the colour plane's end. The close-up's near joints, too wide to
+  // splat, are drawn over the planes without their depths, tested against the visibility
+  // buffer (joints_over_splat.frag), and over the full-screen pass with the depth test.
+  for (const View view : {View{"wide", 320, 180}, View{"street", 320, 180},
+                          View{"street", 321, 181}, View{"closeup", 640, 360}}) {
     CAPTURE(view.preset);
     CAPTURE(view.width);
     render::Camera camera = render::cameraPreset(view.preset, crowd::scenarioExtent(scenario));
