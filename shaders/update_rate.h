@@ -1,7 +1,9 @@
 // The update-rate LOD, shared by C++ and GLSL like shared_types.h (C++ includes it through
 // synth/update_rate.h, which checks the sizes): a chunk of
 // kUpdateChunkCharacters consecutive characters whose largest projected height is h pixels
-// moves every k-th step, k a power of two, the largest with (k − 1) · lagPerHeight · h ≤ maxLag:
+// moves every k-th step, k the largest whole number up to maxInterval with
+// (k − 1) · lagPerHeight · h ≤ maxLag (not only powers of two: a chunk that may wait 7 steps
+// moves a seventh of the time, not a quarter):
 // between two of its updates a character is drawn where it was at the first, and no point of
 // its joints moves more than lagPerHeight · h pixels in a step (lagPerHeight = dt · the pair's
 // fastest joint point speed / standing height, update_rate.h in engine/synth). Blocks of
@@ -33,7 +35,7 @@ THRONG_STRUCT(UpdateSchedulePush) {
   uint step;            // this step's number (wraps; only differences are used)
   float lagPerHeight;   // pixels a joint point moves per step per pixel of projected height
   float maxLag;         // pixels
-  uint maxInterval;     // a power of two ≤ kUpdateMaxInterval
+  uint maxInterval;     // 1 to kUpdateMaxInterval
   uint blockShift;      // chunks are staggered in blocks of 2^blockShift (updateBlockShift)
   uint pad1;
   uint pad2;
@@ -69,7 +71,7 @@ THRONG_STRUCT(ScheduledClassifyArgs) {
 THRONG_UPDATE_INLINE uint updateInterval(float maxHeight, float lagPerHeight, float maxLag,
                                   uint maxInterval) {
   uint k = 1u;
-  while (k < maxInterval && float(2u * k - 1u) * lagPerHeight * maxHeight <= maxLag) k = 2u * k;
+  while (k < maxInterval && float(k) * lagPerHeight * maxHeight <= maxLag) ++k;
   return k;
 }
 
@@ -77,7 +79,7 @@ THRONG_UPDATE_INLINE uint updateInterval(float maxHeight, float lagPerHeight, fl
 // slot, or once its interval has passed (after the interval grew).
 THRONG_UPDATE_INLINE bool updateDue(uint step, uint last, uint chunk, uint interval,
                                     uint blockShift) {
-  return step - last >= interval || ((step + (chunk >> blockShift)) & (interval - 1u)) == 0u;
+  return step - last >= interval || ((step + (chunk >> blockShift)) % interval) == 0u;
 }
 
 #undef THRONG_UPDATE_INLINE

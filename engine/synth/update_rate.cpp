@@ -185,9 +185,9 @@ std::vector<std::string> UpdateScheduleJob::validate() const {
     problems.push_back(concat("buffer 'chunkList' holds ", chunkList->size(), " bytes, ",
                               VkDeviceSize(chunkCount) * 8, " needed"));
   if (!params.enabled()) problems.push_back("the lag must be > 0 pixels (0: no schedule)");
-  if (!std::has_single_bit(params.maxInterval) || params.maxInterval > kUpdateMaxInterval)
-    problems.push_back(concat("maxInterval must be a power of two <= ", kUpdateMaxInterval,
-                              ", got ", params.maxInterval));
+  if (params.maxInterval < 1 || params.maxInterval > kUpdateMaxInterval)
+    problems.push_back(concat("maxInterval must be 1 to ", kUpdateMaxInterval, " steps, got ",
+                              params.maxInterval));
   for (float seconds : sinceSeconds)
     if (!(seconds >= 0.0f) || !std::isfinite(seconds))
       problems.push_back(concat("sinceSeconds must be seconds >= 0, got ", seconds));

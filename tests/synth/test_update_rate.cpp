@@ -55,8 +55,12 @@ TEST_CASE("update-rate LOD: the schedule job and the options say what is wrong")
   job.chunkCount = rate.chunkCount + 1;
   CHECK(anyContains(job.validate(), "buffer 'chunkState' holds 128 bytes, 136 needed"));
   job.chunkCount = rate.chunkCount;
+  job.params.maxInterval = 9;
+  CHECK(anyContains(job.validate(), "maxInterval must be 1 to 8 steps, got 9"));
+  job.params.maxInterval = 0;
+  CHECK(anyContains(job.validate(), "maxInterval must be 1 to 8 steps, got 0"));
   job.params.maxInterval = 3;
-  CHECK(anyContains(job.validate(), "maxInterval must be a power of two <= 8, got 3"));
+  CHECK(job.validate().empty());
   job.params.maxInterval = 8;
   job.sinceSeconds[0] = -1.0f;
   CHECK(anyContains(job.validate(), "sinceSeconds must be seconds >= 0, got -1"));
@@ -92,10 +96,12 @@ TEST_CASE("update-rate LOD: intervals follow the projected height, chunks are st
   using gpu_types::updateInterval;
   // A joint point moves 0.25 px per step per pixel of height; at most 1 px of lag.
   CHECK(updateInterval(0.5f, 0.25f, 1.0f, 8) == 8);  // 7 · 0.125 ≤ 1
-  CHECK(updateInterval(1.0f, 0.25f, 1.0f, 8) == 4);  // 3 · 0.25 ≤ 1 < 7 · 0.25
+  CHECK(updateInterval(1.0f, 0.25f, 1.0f, 8) == 5);  // 4 · 0.25 ≤ 1 < 5 · 0.25
+  CHECK(updateInterval(1.2f, 0.25f, 1.0f, 8) == 4);  // 3 · 0.3 ≤ 1 < 4 · 0.3
   CHECK(updateInterval(3.0f, 0.25f, 1.0f, 8) == 2);
   CHECK(updateInterval(5.0f, 0.25f, 1.0f, 8) == 1);  // a step alone lags 1.25 px
   CHECK(updateInterval(0.5f, 0.25f, 1.0f, 2) == 2);  // the cap
+  CHECK(updateInterval(0.5f, 0.25f, 1.0f, 3) == 3);
   CHECK(updateInterval(std::bit_cast<float>(synth::initialChunkState().x), 0.25f, 1.0f, 8) == 1);
   // With an interval of 4, each chunk moves every 4th step, a quarter of them at each step.
   synth::UpdateScheduleCpu schedule(64 * 64);
@@ -111,10 +117,21 @@ TEST_CASE("update-rate LOD: intervals follow the projected height, chunks are st
       ++moves[m.chunk];
       if (step >= 4) CHECK(m.elapsed == 4);
       if (step >= 4) CHECK(m.seconds == doctest::Approx(4 / 30.0f));
-      schedule.raiseHeight(m.chunk, 1.0f);
+      schedule.raiseHeight(m.chunk, 1.2f);
     }
   }
   CHECK(std::all_of(moves.begin(), moves.end(), [](uint32_t m) { return m >= 4 && m <= 5; }));
+  // An interval of 5, not a power of two: a fifth of the 32 blocks at each step.
+  synth::UpdateScheduleCpu fifths(64 * 64);
+  for (int step = 0; step < 16; ++step) {
+    const std::vector<synth::ChunkMove> moved = fifths.schedule(params, 1 / 30.0f);
+    if (step > 0) CHECK(moved.size() >= 12);
+    if (step > 0) CHECK(moved.size() <= 14);  // blocks of two chunks
+    for (const synth::ChunkMove& m : moved) {
+      if (step >= 5) CHECK(m.elapsed == 5);
+      fifths.raiseHeight(m.chunk, 1.0f);
+    }
+  }
   // An interval that grows waits for its slot or for the interval since the last move.
   CHECK(!updateDue(10, 9, 1, 2, 0));  // one step since, and 10 + 1 is odd: not its slot
   CHECK(!updateDue(10, 9, 1, 4, 0));  // one step since, not its slot
