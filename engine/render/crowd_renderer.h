@@ -130,7 +130,7 @@ class CrowdRenderer {
   std::vector<uint8_t> pendingGroundKey_;  // a ground recorded in a frame not yet whole
   std::vector<uint8_t> previousKey_;       // the previous frame's view
   bool groundCopied_ = false;              // this frame's splat started from the ground
-  bool depthPlane_ = false;  // with it: its depths copied in (walls or the caller's draws follow)
+  bool depthPlane_ = false;                // and its depths copied in (walls, capes follow)
   gpu::Buffer framePlanes_;                // this frame's colour and depth planes
 };
 
