@@ -391,8 +391,6 @@ void CrowdRenderer::beginRendering(VkCommandBuffer cmd, const FrameTargets& targ
 void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot) {
   const gpu::Buffer& uniforms = frameUniforms_[frameSlot];
   const bool splat = splats(params);
-  const gpu::Buffer* lodLevels =
-      params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
   if (!splat) {  // with the splat, the ground is in its resolve
     gpu::Binding groundBindings[] = {gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms)};
     ground_.bind(cmd, groundBindings, nullptr, 0);
@@ -406,7 +404,23 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
     walls_.bind(cmd, wallBindings, nullptr, 0);
     vkCmdDraw(cmd, 6 * params.wallSegmentCount, 1, 0, 0);
   }
+  drawNearJoints(cmd, params, uniforms);
+  passTimer_->mark(cmd, "near-joints");
+  if (splat && !groundCopied_) {  // otherwise the planes copied in hold the splat
+    gpu::Binding resolveBindings[] = {
+        gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
+        gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_)};
+    resolve_.bind(cmd, resolveBindings, nullptr, 0);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    passTimer_->mark(cmd, "resolve");
+  }
+}
 
+void CrowdRenderer::drawNearJoints(VkCommandBuffer cmd, const DrawParams& params,
+                                   const gpu::Buffer& uniforms) {
+  const bool splat = splats(params);
+  const gpu::Buffer* lodLevels =
+      params.masks && params.lodLevels ? params.lodLevels : &noLodLevels_;
   DrawPush push{};
   push.jointCount = params.jointCount;
   push.flags = (splat ? kDrawFromList : 0u) | drawFlags(params);
@@ -448,15 +462,6 @@ void CrowdRenderer::drawJoints(VkCommandBuffer cmd, const DrawParams& params, ui
     } else {
       vkCmdDraw(cmd, chunk.characterCount * params.jointCount, 1, 0, 0);
     }
-  }
-  passTimer_->mark(cmd, "near-joints");
-  if (splat && !groundCopied_) {  // otherwise the planes copied in hold the splat
-    gpu::Binding resolveBindings[] = {
-        gpu::uniformBinding(gpu_types::kRenderBindingFrame, uniforms),
-        gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_)};
-    resolve_.bind(cmd, resolveBindings, nullptr, 0);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
-    passTimer_->mark(cmd, "resolve");
   }
 }
 

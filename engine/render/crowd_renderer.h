@@ -113,6 +113,8 @@ class CrowdRenderer {
   void ensureVisibility(uint32_t width, uint32_t height);
   bool splats(const DrawParams& params) const;
   void drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
+  // The joints too wide to splat (all of them without the splat), by the graphics pipeline.
+  void drawNearJoints(VkCommandBuffer cmd, const DrawParams& params, const gpu::Buffer& uniforms);
   // The target's two ways into the render pass: cleared, or the resolved planes copied in.
   void clearTargets(VkCommandBuffer cmd, const FrameTargets& target);
   // True when the ground of this view exists or was recorded now (the same view twice in a row).
