@@ -68,6 +68,12 @@ bool bodyOnScreen(vec4 viewport, vec4 frustum, vec3 middle, float height) {
   return sphereInFrustum(viewport, frustum, middle, 0.8 * height);
 }
 
+// bodyOnScreen's sphere grown by `reach` of the height: whether the body can be on screen once
+// it has moved that far (the update-rate LOD's test, update_rate.h).
+bool bodyWithinReach(vec4 viewport, vec4 frustum, vec3 middle, float height, float reach) {
+  return sphereInFrustum(viewport, frustum, middle, (0.8 + reach) * height);
+}
+
 // The level for projected height h, starting from `level`: up while h reaches the next level's
 // entry height, down while h is under the level's leaving height (hysteresis between them).
 // heights: entry heights of levels 1 and 2, then their leaving heights (levelHeights). Written

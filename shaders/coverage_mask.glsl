@@ -21,26 +21,37 @@ u64vec2 nextMaskWords(CoverageMask previous, vec4 m, float h, bool visible, uint
   return u64vec2(packUint2x32(synthesized), packUint2x32(uvec2(levelState.x, levelState.y | onScreen)));
 }
 
+// The camera-space middle of the body of a character at `place` with motion m, and its height.
+vec3 bodyMiddle(mat4 view, vec4 place, vec4 m, out float height) {
+  height = parts.body.x * characterScale(m);
+  return cameraSpace(view, place.xyz + vec3(0.0, 0.5 * height, 0.0));
+}
+
 // Projected height and visibility of the body of a character at `place` with motion m.
 void bodyOnScreenHeight(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, out float h, out bool visible) {
-  float height = parts.body.x * characterScale(m);
-  vec3 middle = cameraSpace(view, place.xyz + vec3(0.0, 0.5 * height, 0.0));
+  float height;
+  vec3 middle = bodyMiddle(view, place, m, height);
   h = projectedHeight(viewport, middle, height);
   visible = bodyOnScreen(viewport, frustum, middle, height);
 }
 
-// The mask words after this frame without the part areas (the frame's coverage); h: the
-// character's projected height.
-u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words,
-                       out float h) {
+// The mask words after this frame without the part areas (the frame's coverage).
+u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words) {
+  float h;
   bool visible;
   bodyOnScreenHeight(view, viewport, frustum, place, m, h, visible);
   return nextMaskWords(unpackMask(words), m, h, visible, 0u);
 }
 
-u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words) {
-  float h;
-  return frameMaskWords(view, viewport, frustum, place, m, words, h);
+// The same, for the update-rate LOD's root motion: also the character's projected height h, and
+// whether its body is within `reach` of the view (bodyWithinReach), from the one middle.
+u64vec2 frameMaskWords(mat4 view, vec4 viewport, vec4 frustum, vec4 place, vec4 m, u64vec2 words,
+                       float reach, out float h, out bool withinReach) {
+  float height;
+  vec3 middle = bodyMiddle(view, place, m, height);
+  h = projectedHeight(viewport, middle, height);
+  withinReach = bodyWithinReach(viewport, frustum, middle, height, reach);
+  return nextMaskWords(unpackMask(words), m, h, bodyOnScreen(viewport, frustum, middle, height), 0u);
 }
 
 #endif

@@ -62,16 +62,6 @@ layout(std430, binding = kRootMotionBindingChunkList) readonly buffer ChunkList 
 #endif
 layout(push_constant) uniform Push { RootMotionPush push; };
 
-#ifdef THRONG_ROOT_MOTION_SCHEDULED
-// Whether the character's body sphere (bodyOnScreen's), grown by how far it may walk before its
-// chunk's next move, meets this step's view: it may be drawn before it moves again.
-bool mayBeOnScreen(vec4 place, vec4 m) {
-  float height = parts.body.x * characterScale(m);
-  vec3 middle = cameraSpace(camera.view, place.xyz + vec3(0.0, 0.5 * height, 0.0));
-  return sphereInFrustum(camera.viewport, camera.frustum, middle, (0.8 + push.reachPerHeight) * height);
-}
-#endif
-
 // A character's clips: the dispatch's (push constants), or its group's in the group table.
 struct Clips {
   uint slowFrames, fastFrames;
@@ -166,9 +156,13 @@ void main() {
   coverageGroup = group;
 #endif
 #ifdef THRONG_ROOT_MOTION_SCHEDULED
+  // A character that cannot reach the view before its chunk's next move may not be drawn
+  // before it moves again.
   float h;
-  maskWords[i] = frameMaskWords(camera.view, camera.viewport, camera.frustum, place, m, maskWords[i], h);
-  if (!mayBeOnScreen(place, m)) h = 0.0;
+  bool withinReach;
+  maskWords[i] = frameMaskWords(camera.view, camera.viewport, camera.frustum, place, m, maskWords[i],
+                                push.reachPerHeight, h, withinReach);
+  if (!withinReach) h = 0.0;
   // Heights are positive, so their bits order like the floats.
   float chunkHeight = subgroupMax(h);
   if (subgroupElect()) atomicMax(chunkState[entry.x].x, floatBitsToUint(chunkHeight));

@@ -22,6 +22,13 @@ static_assert(sizeof(DrawPush) == 24, "DrawPush must match the GLSL push block")
 static_assert(sizeof(FrameUniforms) == 160, "FrameUniforms must match the GLSL std140 block");
 
 namespace {
+
+// Whether the splatted picture's depths go into the depth attachment: walls and the caller's
+// draws test against it; near joints alone read the visibility buffer (joints_over_splat.frag).
+bool depthPlane(const DrawParams& params) {
+  return params.wallSegmentCount > 0 || params.moreDepthDraws;
+}
+
 uint32_t drawFlags(const DrawParams& params) {
   uint32_t flags = 0;
   if (params.masks) flags |= gpu_types::kDrawUseMasks;
@@ -220,16 +227,13 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
     fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
   THRONG_CHECK(!groundCopied_ || target.transferDst,
                "beginDraw: the splat started from the ground, for a target that takes copies");
-  // Near joints read the splat's depths from the visibility buffer; walls and the caller's draws
-  // need them in the depth attachment.
-  depthPlane_ = params.wallSegmentCount > 0 || params.moreDepthDraws;
   if (groundCopied_) {
     resolvePlanes(cmd, params, frameSlot);
     copyPlanesIn(cmd, target, params);
   } else {
     clearTargets(cmd, target);
   }
-  beginRendering(cmd, target, params, groundCopied_, groundCopied_ && depthPlane_);
+  beginRendering(cmd, target, params, groundCopied_, groundCopied_ && depthPlane(params));
   drawJoints(cmd, params, frameSlot);
 }
 
@@ -309,7 +313,7 @@ void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
   // pays for every workgroup it starts.
   const uint32_t quads = (params.width * params.height + 3u) / 4u;
   const uint32_t groups = std::min((quads + 63u) / 64u, gpu_types::kPlanesGroups);
-  const uint32_t planes = depthPlane_ ? gpu_types::kPlanesWithDepth : 0u;
+  const uint32_t planes = depthPlane(params) ? gpu_types::kPlanesWithDepth : 0u;
   gpu::dispatch(cmd, planesProgram_, bindings, &planes, sizeof(planes),
                 groups * planesProgram_.localSizeX());
   // The copies read the planes; without the depth plane the near joints read the visibility
@@ -334,7 +338,7 @@ void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                        VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-  if (!depthPlane_) {  // cleared when the render pass begins
+  if (!depthPlane(params)) {  // cleared when the render pass begins
     gpu::transitionImage(
         cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
         VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
@@ -431,7 +435,7 @@ void CrowdRenderer::drawNearJoints(VkCommandBuffer cmd, const DrawParams& params
   const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
   const CachedPoseInputs cached = boundCachedPoses(params, noMasks_);
   // Over the planes without their depths, the near joints test against the visibility buffer.
-  const bool overSplat = splat && groundCopied_ && !depthPlane_;
+  const bool overSplat = splat && groundCopied_ && !depthPlane(params);
   const gpu::GraphicsProgram& program = overSplat ? jointsOverSplat_ : joints_;
   for (size_t c = 0; c < chunks.size(); ++c) {
     const JointChunk& chunk = chunks[c];

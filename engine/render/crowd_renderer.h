@@ -120,7 +120,7 @@ class CrowdRenderer {
   // True when the ground of this view exists or was recorded now (the same view twice in a row).
   bool groundFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   // The visibility buffer (ground and splat) into framePlanes_, then into the target: the colour,
-  // and the depth unless only near joints come after (depthPlane_).
+  // and the depth unless only near joints come after.
   void resolvePlanes(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
@@ -132,7 +132,6 @@ class CrowdRenderer {
   std::vector<uint8_t> pendingGroundKey_;  // a ground recorded in a frame not yet whole
   std::vector<uint8_t> previousKey_;       // the previous frame's view
   bool groundCopied_ = false;              // this frame's splat started from the ground
-  bool depthPlane_ = false;                // and its depths copied in (walls, capes follow)
   gpu::Buffer framePlanes_;                // this frame's colour and depth planes
 };
 

@@ -160,6 +160,12 @@ float characterHeightPixels(const CoveragePush& push, const CoverageParts& parts
   return projectedHeight(push, bodyMiddle(push, placement, height), height);
 }
 
+bool bodyWithinReach(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
+                     glm::vec4 motion, float reach) {
+  const float height = parts.body.x * gpu_types::characterScale(motion);
+  return sphereInFrustum(push, bodyMiddle(push, placement, height), (0.8f + reach) * height);
+}
+
 namespace {
 
 // Mirrors levelForHeight and nextLevel in coverage_common.glsl.

@@ -90,6 +90,10 @@ float projectedHeight(const CoveragePush& push, glm::vec3 middle, float height);
 // A character's standing height on screen in pixels (bodyOnScreenHeight's h in coverage_mask.glsl).
 float characterHeightPixels(const CoveragePush& push, const CoverageParts& parts,
                             glm::vec4 placement, glm::vec4 motion);
+// Whether the body sphere, grown by `reach` of the character's height, meets the view
+// (bodyWithinReach in coverage_common.glsl).
+bool bodyWithinReach(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
+                     glm::vec4 motion, float reach);
 
 // The CPU twin of coverage.comp for one character: `joints` are its J matrices (nullptr: the
 // centres are estimated from the placement); `previous` is last frame's mask, which says which

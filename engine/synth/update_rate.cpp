@@ -140,16 +140,13 @@ void stepScheduledCpu(const anim::MotionPair& pair, crowd::Crowd& crowd,
     const uint32_t end = std::min(n, (move.chunk + 1) * kUpdateChunkCharacters);
     for (uint32_t i = move.chunk * kUpdateChunkCharacters; i < end; ++i) {
       glm::vec4& p = crowd.placement[i];
-      const glm::vec4& m = crowd.motion[i];
-      anim::stepCharacter(pair, p, crowd.motion[i], move.seconds, anim::Steering::KeepHeading);
+      glm::vec4& m = crowd.motion[i];
+      anim::stepCharacter(pair, p, m, move.seconds, anim::Steering::KeepHeading);
       masks[i] = coverageCharacter(push, parts, p, m, nullptr, masks[i], nullptr);
-      // Mirrors mayBeOnScreen in root_motion.glsl.
-      const float height = parts.body.x * gpu_types::characterScale(m);
-      const glm::vec3 middle =
-          cameraSpace(push, glm::vec3(p) + glm::vec3(0.0f, 0.5f * height, 0.0f));
-      const bool mayBeOnScreen = sphereInFrustum(push, middle, (0.8f + reachPerHeight) * height);
+      // A character that cannot reach the view before its chunk's next move counts as 0 px.
+      const bool withinReach = bodyWithinReach(push, parts, p, m, reachPerHeight);
       schedule.raiseHeight(move.chunk,
-                           mayBeOnScreen ? characterHeightPixels(push, parts, p, m) : 0.0f);
+                           withinReach ? characterHeightPixels(push, parts, p, m) : 0.0f);
     }
   }
 }
