@@ -19,17 +19,20 @@ layout(std430, binding = kCacheFillBindingRadius) readonly buffer Radius { float
 layout(std140, binding = kCacheFillBindingConstantOffsets) uniform ConstantOffsets { vec4 constantOffsets[128]; };
 layout(std430, binding = kCacheFillBindingSlotBucket) readonly buffer SlotBucket { int slotBucket[]; };
 layout(std430, binding = kCacheFillBindingFreshSlots) readonly buffer FreshSlots { uint freshSlots[]; };  // [0] count
-layout(std430, binding = kCacheFillBindingCacheData) buffer CacheData { JointMatrix joints[]; };
+layout(std430, binding = kCacheFillBindingCacheData) buffer CacheData { JointPoint joints[]; };
 layout(std140, binding = kCacheFillBindingParts) uniform Parts { CoverageParts parts; };
 layout(std430, binding = kCacheFillBindingFarBodyPoses) writeonly buffer FarBodyPoses { FarBodyPose farBodyPoses[]; };
-void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
-  joints[index].row0 = row0;
-  joints[index].row1 = row1;
-  joints[index].row2 = row2;
-}
+void storeJoint(uint index, vec4 point) { joints[index].positionRadius = point; }
 layout(push_constant) uniform Push { CachePush push; };
 
 #include "pose_skeleton.glsl"
+
+// A part's centre joint's point and its parent's (the root's own twice), from the pose this
+// invocation wrote at joints[base …].
+vec4 partJoint(uint base, CoveragePart part) { return joints[base + part.joint].positionRadius; }
+vec4 partParent(uint base, CoveragePart part) {
+  return joints[base + (part.parent < 0 ? part.joint : uint(part.parent))].positionRadius;
+}
 
 void main() {
   uint id = gl_GlobalInvocationID.x;
@@ -41,12 +44,9 @@ void main() {
   composePose(base, clipSample(phase, push.slowFrames), clipSample(phase, push.fastFrames), w,
               vec4(0.0, 0.0, 0.0, 1.0), vec3(0.0), 1.0, uvec2(0xFFFFFFFFu));
   if (push.farBodies == 0u) return;
-  // This invocation's own stores, read back: the three joints the far body is placed from.
-  JointMatrix torso = joints[base + parts.parts[kPartTorso].joint];
-  JointMatrix left = joints[base + parts.parts[kPartLeftLeg].joint];
-  JointMatrix right = joints[base + parts.parts[kPartRightLeg].joint];
+  // This invocation's own stores, read back: the joints the far body is placed from.
+  CoveragePart torso = parts.parts[kPartTorso], left = parts.parts[kPartLeftLeg], right = parts.parts[kPartRightLeg];
   farBodyPoses[base / uint(kJointCount)] =
-      FarBodyPose(vec4(torso.row0.yw, torso.row1.yw), vec4(left.row0.yw, left.row1.yw),
-                  vec4(right.row0.yw, right.row1.yw), vec4(torso.row2.yw, left.row2.yw),
-                  vec4(right.row2.yw, 0.0, 0.0));
+      FarBodyPose(partJoint(base, torso), partParent(base, torso), partJoint(base, left), partParent(base, left),
+                  partJoint(base, right), partParent(base, right));
 }

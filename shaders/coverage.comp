@@ -18,7 +18,7 @@ layout(std140, binding = kCoverageBindingParts) uniform Parts { CoverageParts pa
 // vector one component per lane in a loop (docs/design.md, "Decisions for CPU devices").
 layout(binding = kCoverageBindingPlacement) uniform samplerBuffer placementTexels;
 layout(binding = kCoverageBindingMotion) uniform samplerBuffer motionTexels;
-layout(std430, binding = kCoverageBindingJoints) readonly buffer Joints { JointMatrix joints[]; };  // the chunk's characters
+layout(std430, binding = kCoverageBindingJoints) readonly buffer Joints { JointPoint joints[]; };  // the chunk's characters
 layout(std430, binding = kCoverageBindingMasks) buffer Masks { u64vec2 maskWords[]; };  // CoverageMask, global index, in/out
 layout(std430, binding = kCoverageBindingAreas) writeonly buffer Areas { float areas[]; };        // global index × 5
 layout(push_constant) uniform Push { CoveragePush push; };
@@ -34,10 +34,11 @@ uint measureParts(uint i, uint local, vec4 place, float scale, CoverageMask prev
   [[unroll]] for (uint k = 0u; k < kCoveragePartCount; ++k) {
     CoveragePart part = parts.parts[k];
     // A centre joint written by last frame's pose pass (active in last frame's mask) is read
-    // from its matrix; any other is estimated from the root.
+    // from its point and its parent's; any other is estimated from the root.
     uint word = part.joint < 32u ? previous.lo : previous.hi;
     vec3 centre = readJoints && ((word >> (part.joint & 31u)) & 1u) != 0u
-                      ? jointCentre(joints[local * push.jointCount + part.joint], part.bonePoint)
+                      ? jointCentre(part, joints[local * push.jointCount + (part.parent < 0 ? part.joint : uint(part.parent))].positionRadius,
+                                    joints[local * push.jointCount + part.joint].positionRadius)
                       : estimatedCentre(part, place.xyz, c, s, scale);
     float area = sphereCoverage(push.view, push.viewport, push.frustum, centre, part.centre.w * scale);
     areas[i * kCoveragePartCount + k] = area;

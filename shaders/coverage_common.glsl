@@ -33,10 +33,9 @@ vec3 estimatedCentre(CoveragePart part, vec3 origin, float c, float s, float sca
   return origin + vec3(m.x * c + m.z * s, m.y, -m.x * s + m.z * c);
 }
 
-// The joint position A·(0, bonePoint, 0, 1) of a joint draw matrix.
-vec3 jointCentre(JointMatrix a, float bonePoint) {
-  return vec3(a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w, a.row2.y * bonePoint + a.row2.w);
-}
+// A part's centre A·(0, bonePoint, 0, 1) of its joint's draw matrix, from the joint's point and its
+// parent's (the root's own twice).
+vec3 jointCentre(CoveragePart part, vec4 parent, vec4 joint) { return bonePoint(parent, joint, part.parent < 0, part.bonePoint); }
 
 // World → camera space looking down +z.
 vec3 cameraSpace(mat4 view, vec3 world) {

@@ -63,8 +63,8 @@ THRONG_STRUCT(CoveragePart) {
   vec4 centre;            // xyz: mean character-space position of the centre joint; w: radius (m)
   uint joint;             // the centre joint
   float bonePoint;        // the centre is A·(0, bonePoint, 0, 1): 1 = bone end, 0.5 for the root
+  int parent;             // the centre joint's parent (its bone starts there), -1 for the root
   uint pad0;
-  uint pad1;
 };
 
 // One level: what is synthesized and what is drawn, and its projected-height band.
@@ -95,17 +95,17 @@ THRONG_STRUCT(CoverageParts) {
 };
 
 // What the far body (joint_far_body.glsl) reads of a cached pose, written by cache_fill.comp
-// beside the pose: of the torso's and the legs' centre joints (CoverageParts.parts), the y and
-// w components of each matrix row, (row0.y, row0.w, row1.y, row1.w) and then row2's. Read from
-// this small table rather than from three joint matrices of the cache, 1200 bytes apart at 25
-// joints: the far-body pass reads it for every cached character on screen, and on a CPU those
-// scattered rows miss the cache.
+// beside the pose: the character-space points (JointPoint) of the torso's and the legs' centre
+// joints (CoverageParts.parts) and of their parents. Read from this small table rather than from
+// the cache's points, hundreds of bytes apart: the far-body pass reads it for every cached
+// character on screen, and on a CPU those scattered points miss the cache.
 THRONG_STRUCT(FarBodyPose) {
-  vec4 torso;             // the torso's (row0.y, row0.w, row1.y, row1.w)
+  vec4 torso;
+  vec4 torsoParent;       // the root's own point again where the centre joint is the root
   vec4 leftLeg;
+  vec4 leftLegParent;
   vec4 rightLeg;
-  vec4 torsoLeftRow2;     // the torso's (row2.y, row2.w), then the left leg's
-  vec4 rightRow2;         // the right leg's (row2.y, row2.w), 0, 0
+  vec4 rightLegParent;
 };
 
 // Per character output (std430), also read back as the previous frame's mask.

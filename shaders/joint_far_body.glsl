@@ -3,8 +3,8 @@
 // of its far level's joints: one sprite, not a dozen, for a figure whose limbs are a pixel wide.
 // Placed from three joints the far level always synthesizes, the torso's and the legs' centre
 // joints; their mean heights (CoverageParts.parts) give the character's scale. A cached
-// character's three are read from its pose's FarBodyPose (cache_fill.comp), the same numbers as
-// in its cached matrices, and placed by the same arithmetic as placeCachedJoint. Needs
+// character's three are read from its pose's FarBodyPose (cache_fill.comp), the same points as
+// in its cache entry, and placed by the same arithmetic (placeCachedPoint). Needs
 // joint_lod.glsl and joint_fetch.glsl first. CPU twin: render::farBodyMatrix
 // (engine/render/joint_far_body_cpu.cpp).
 #ifndef THRONG_JOINT_FAR_BODY_GLSL
@@ -14,18 +14,19 @@ layout(constant_id = 2) const float kFarBodyPixels = kSplatFarBodyPixels;
 
 layout(std430, binding = kRenderBindingFarBodyPoses) readonly buffer FarBodyPoses { FarBodyPose farBodyPoses[]; };
 
-vec3 partPoint(JointMatrix a, float bonePoint) {
-  return vec3(a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w, a.row2.y * bonePoint + a.row2.w);
+// A part's centre, A·(0, bonePoint, 0, 1) of its joint's draw matrix, from the joint's point and
+// its parent's (the root's own twice).
+vec3 partPoint(CoveragePart part, vec4 parent, vec4 joint) {
+  return bonePoint(parent, joint, part.parent < 0, part.bonePoint);
 }
 
-// partPoint of placeCachedJoint(p, place, scale) from the (y, w) components of p's rows, each
-// term as placeCachedJoint computes it, so that both ways give the same bits.
-vec3 cachedPartPoint(vec2 row0, vec2 row1, vec2 row2, CharacterPose pose, float bonePoint) {
-  float c = cos(pose.place.w), s = sin(pose.place.w);
-  vec2 a0 = pose.scale * (c * row0 + s * row2) + vec2(0.0, pose.place.x);
-  vec2 a1 = pose.scale * row1 + vec2(0.0, pose.place.y);
-  vec2 a2 = pose.scale * (c * row2 - s * row0) + vec2(0.0, pose.place.z);
-  return vec3(a0.x * bonePoint + a0.y, a1.x * bonePoint + a1.y, a2.x * bonePoint + a2.y);
+vec3 cachedPartPoint(CoveragePart part, vec4 parent, vec4 joint, CharacterPose pose) {
+  return partPoint(part, placeCachedPoint(parent, pose.place, pose.scale), placeCachedPoint(joint, pose.place, pose.scale));
+}
+
+vec3 jointsPartPoint(CoveragePart part, uint base) {
+  return partPoint(part, joints[base + (part.parent < 0 ? part.joint : uint(part.parent))].positionRadius,
+                   joints[base + part.joint].positionRadius);
 }
 
 // The body ellipsoid as a joint draw matrix; a zero matrix (never visible) where the joints
@@ -37,13 +38,12 @@ JointMatrix farBodyMatrix(CharacterPose pose, uint base) {
   vec3 spine, knees;
   if (pose.source != kPoseInJoints) {
     FarBodyPose f = farBodyPoses[pose.source / push.jointCount];
-    spine = cachedPartPoint(f.torso.xy, f.torso.zw, f.torsoLeftRow2.xy, pose, torso.bonePoint);
-    knees = 0.5 * (cachedPartPoint(f.leftLeg.xy, f.leftLeg.zw, f.torsoLeftRow2.zw, pose, left.bonePoint) +
-                   cachedPartPoint(f.rightLeg.xy, f.rightLeg.zw, f.rightRow2.xy, pose, right.bonePoint));
+    spine = cachedPartPoint(torso, f.torsoParent, f.torso, pose);
+    knees = 0.5 * (cachedPartPoint(left, f.leftLegParent, f.leftLeg, pose) +
+                   cachedPartPoint(right, f.rightLegParent, f.rightLeg, pose));
   } else {
-    spine = partPoint(joints[base + torso.joint], torso.bonePoint);
-    knees = 0.5 * (partPoint(joints[base + left.joint], left.bonePoint) +
-                   partPoint(joints[base + right.joint], right.bonePoint));
+    spine = jointsPartPoint(torso, base);
+    knees = 0.5 * (jointsPartPoint(left, base) + jointsPartPoint(right, base));
   }
   float meanSpan = torso.centre.y - 0.5 * (left.centre.y + right.centre.y);
   float scale = meanSpan > 0.0 ? (spine.y - knees.y) / meanSpan : 0.0;

@@ -15,7 +15,7 @@
 #include "joint_sprite.glsl"
 
 layout(local_size_x = kSplatBodyGroupSize) in;
-layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
+layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointPoint joints[]; };
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
 layout(std430, binding = kRenderBindingDraws) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk

@@ -8,7 +8,7 @@
 #include "render_bindings.h"
 #include "joint_sprite.glsl"
 
-layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointMatrix joints[]; };
+layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointPoint joints[]; };
 layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
 layout(std430, binding = kRenderBindingNearList) readonly buffer NearList { uint nearList[]; };
 layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character

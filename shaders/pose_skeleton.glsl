@@ -1,7 +1,7 @@
-// The pose of one character computed joint by joint (slerp per joint, hierarchy, draw matrices
-// A = M·O·F), shared by the pose pass and the motion-cache fill. The including shader declares
-// the buffers this reads and writes: the motion texels (motion_texels.glsl), jointRadius,
-// constantOffsets and the output `joints`. CPU twin: anim::poseCharacterFrames.
+// The pose of one character computed joint by joint (slerp per joint, hierarchy, joint points),
+// shared by the pose pass and the motion-cache fill. The including shader declares the buffers
+// this reads and writes: the motion texels (motion_texels.glsl), jointRadius, constantOffsets
+// and storeJoint for the output. CPU twin: anim::poseCharacterFrames.
 #ifndef THRONG_POSE_SKELETON_GLSL
 #define THRONG_POSE_SKELETON_GLSL
 
@@ -87,10 +87,9 @@ bool offsetAnimated(int j) {
 }
 
 // Bit j set: joint j's bone is the same in both clips and never changes (synth::fixedBones): its
-// offset, length and the rotation aligning +y with it are specialization constants
-// (fixedBoneOffset/Length/Align, generated), so the compiler folds them into the arithmetic:
-// no square root, division or alignYTo per joint, and the zero components of an axis-aligned
-// bone (most BVH skeletons have many) drop out of the rotations altogether.
+// offset and length are specialization constants (fixedBoneOffset/Length, generated), so the
+// compiler folds them into the arithmetic: no square root per joint, and the zero components of
+// an axis-aligned bone (most BVH skeletons have many) drop out of the rotation altogether.
 layout(constant_id = kPoseConstantFixedBones) const uint kFixedBonesLow = 0u;
 layout(constant_id = kPoseConstantFixedBones + 1u) const uint kFixedBonesHigh = 0u;
 bool boneFixed(int j) {
@@ -179,20 +178,12 @@ vec3 animatedOffset(int slowRow, int slowNext, float ts, int fastRow, int fastNe
 vec3 globalPosition[64];
 vec4 globalRotation[64];
 
-void writeRows(uint index, vec4 q, vec3 scale, vec3 t) {
-  float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
-  float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
-  float wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-  vec4 row0 = vec4((1.0 - 2.0 * (yy + zz)) * scale.x, 2.0 * (xy - wz) * scale.y, 2.0 * (xz + wy) * scale.z, t.x);
-  vec4 row1 = vec4(2.0 * (xy + wz) * scale.x, (1.0 - 2.0 * (xx + zz)) * scale.y, 2.0 * (yz - wx) * scale.z, t.y);
-  vec4 row2 = vec4(2.0 * (xz - wy) * scale.x, 2.0 * (yz + wx) * scale.y, (1.0 - 2.0 * (xx + yy)) * scale.z, t.z);
-  storeJoint(index, row0, row1, row2);
-}
-
-// Writes the kJointCount draw matrices of one character at joints[base …]: each clip sampled
-// between its two rows (slerped rotations, lerped offsets; anim::clipSample), the two clips
-// blended by w, placed by M = T(origin)·R(yaw)·S(scale). With yaw = identity, origin = 0,
-// scale = 1 this is the character-space pose the motion cache stores.
+// Writes the kJointCount joint points of one character at joints[base …] through the includer's
+// storeJoint(index, point): each clip sampled between its two rows (slerped rotations, lerped
+// offsets; anim::clipSample), the two clips blended by w, placed by M = T(origin)·R(yaw)·S(scale).
+// With yaw = identity, origin = 0, scale = 1 this is the character-space pose the motion cache
+// stores. A point is the joint's position and its bone's drawn radius (JointPoint): the bone's
+// draw matrix, which needs the bone's alignment, is left to its readers (boneMatrix).
 // Joints whose bit is clear in `activeJoints` (the coverage LOD mask) are neither blended nor written;
 // their children are never activeJoints (the mask keeps parents before children).
 void composePose(uint base, ClipSample slow, ClipSample fast, float w, vec4 yaw, vec3 origin, float scale,
@@ -219,34 +210,17 @@ void composePose(uint base, ClipSample slow, ClipSample fast, float w, vec4 yaw,
                                  : constantOffsets[2 * j].xyz * (1.0 - w) + constantOffsets[2 * j + 1].xyz * w;
     int p = parentOf(j);
     float radius = jointRadius[j];
-    vec3 start;
-    vec4 orientation;
-    float len;
     if (p < 0) {
-      // The root is drawn as a sphere around it: a vertical "bone" of length 2r.
       globalRotation[j] = quatMul(yaw, q);
       globalPosition[j] = origin + vec3(0.0, scale * o.y, 0.0);
-      start = globalPosition[j] + quatRotate(globalRotation[j], vec3(0.0, -scale * radius, 0.0));
-      orientation = globalRotation[j];
-      len = 2.0 * radius;
     } else {
       vec4 parentRotation = globalRotation[p];
-      vec3 parentPosition = globalPosition[p];
-      globalPosition[j] = parentPosition + quatRotate(parentRotation, scale * o);
+      globalPosition[j] = globalPosition[p] + quatRotate(parentRotation, scale * o);
       globalRotation[j] = quatMul(parentRotation, q);
-      vec4 align;
-      if (boneFixed(j)) {
-        len = fixedBoneLength(j);
-        align = fixedBoneAlign(j);
-      } else {
-        len = length(o);
-        align = alignYTo(len > 1e-6 ? o / len : vec3(0.0, 1.0, 0.0));
-      }
-      start = parentPosition;
-      orientation = quatMul(parentRotation, align);
+      float len = boneFixed(j) ? fixedBoneLength(j) : length(o);
       if (len <= 1e-6) radius = 0.0;  // zero-length bones are not drawn
     }
-    writeRows(base + uint(j), orientation, scale * vec3(radius, len, radius), start);
+    storeJoint(base + uint(j), vec4(globalPosition[j], scale * radius));
   }
 }
 

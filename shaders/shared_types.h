@@ -5,11 +5,15 @@
 #define THRONG_SHARED_TYPES_H
 
 #ifdef __cplusplus
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace throng::gpu_types {
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
+using glm::dot;
+using std::sqrt;
 using uint = uint32_t;
 using mat4 = glm::mat4;
 #define THRONG_STRUCT(name) struct name
@@ -46,12 +50,51 @@ THRONG_INLINE vec4 withTargetSpeedWeight(vec4 m, float wTarget) {
   return m;
 }
 
-// One joint's draw matrix A = M·O·F as three rows of a 3x4 affine matrix (row r = (R[r], t[r])).
+// One joint's draw matrix A = M·O·F as three rows of a 3x4 affine matrix (row r = (R[r], t[r])):
+// the unit mesh (a sphere of radius 1 around (0, 0.5, 0), squashed to y in [0, 1]) placed as the
+// joint's bone. What the readers of the pose draw and test; the pose itself is stored as points.
 THRONG_STRUCT(JointMatrix) {
   vec4 row0;
   vec4 row1;
   vec4 row2;
 };
+
+// One joint of a synthesized pose as the pose pass writes it (and the motion cache stores it):
+// xyz the joint's position, w the radius its bone is drawn with (0: not drawn). The bone runs
+// from the parent's position to the joint's; the root's is a sphere of that radius around it.
+// Sixteen bytes where a draw matrix takes 48: on lavapipe every store is a loop over the lanes,
+// and the pose pass is bound by its stores. Readers rebuild the matrix (boneMatrix).
+THRONG_STRUCT(JointPoint) {
+  vec4 positionRadius;
+};
+
+// The point t of the way along joint j's bone: A·(0, t, 0, 1) of its draw matrix. `parent` is the
+// parent's point (ignored for the root, whose bone is vertical, 2·radius long, centred on it).
+THRONG_INLINE vec3 bonePoint(vec4 parent, vec4 joint, bool root, float t) {
+  if (root) return vec3(joint.x, joint.y + (2.0f * t - 1.0f) * joint.w, joint.z);
+  return vec3(parent.x, parent.y, parent.z) + t * (vec3(joint.x, joint.y, joint.z) - vec3(parent.x, parent.y, parent.z));
+}
+
+// Joint j's draw matrix from its point and its parent's. The bone's ellipsoid is round about the
+// bone (its two cross axes are both the radius long), so any two axes perpendicular to the bone
+// draw it alike; these are the branchless orthonormal basis of Duff et al. (2017).
+THRONG_INLINE JointMatrix boneMatrix(vec4 parent, vec4 joint, bool root) {
+  float radius = joint.w;
+  vec3 start = bonePoint(parent, joint, root, 0.0f);
+  vec3 axis = bonePoint(parent, joint, root, 1.0f) - start;
+  float boneLength = sqrt(dot(axis, axis));
+  vec3 n = boneLength > 1e-12f ? axis * (1.0f / boneLength) : vec3(0.0f, 1.0f, 0.0f);
+  float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+  float a = -1.0f / (sign + n.z);
+  float b = n.x * n.y * a;
+  vec3 side = radius * vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  vec3 other = radius * vec3(b, sign + n.y * n.y * a, -n.y);
+  JointMatrix m;
+  m.row0 = vec4(side.x, axis.x, other.x, start.x);
+  m.row1 = vec4(side.y, axis.y, other.y, start.y);
+  m.row2 = vec4(side.z, axis.z, other.z, start.z);
+  return m;
+}
 
 // Push constants of the root-motion pass (the paper's eq. 10, docs/design.md).
 THRONG_STRUCT(RootMotionPush) {
@@ -187,7 +230,11 @@ THRONG_STRUCT(FrameUniforms) {
   vec4 rayDown;           // camera down · tan(fovY/2) (Vulkan NDC y points down)
   vec4 rayForward;        // camera forward
   vec4 viewport;          // width, height, focal length in pixels, 0
+  // Byte j: joint j's parent (kNoParent for the root), so a joint's bone is found from its point
+  // and its parent's (JointPoint).
+  uvec4 jointParents[4];
 };
+const uint kNoParent = 255u;
 
 // Push constants of one joint draw (a chunk of characters).
 THRONG_STRUCT(DrawPush) {

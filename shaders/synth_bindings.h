@@ -20,8 +20,8 @@ const uint kTexelsBindingSlowUniform = 12u;  // uniform
 const uint kTexelsBindingFastUniform = 13u;  // uniform
 // Its specialization constants: the texels per uniform block, whether they are read from there.
 // Past the pose constants below, so one specialization array serves every pass.
-const uint kTexelsConstantUniformTexels = 582u;
-const uint kTexelsConstantInUniform = 583u;
+const uint kTexelsConstantUniformTexels = 326u;
+const uint kTexelsConstantInUniform = 327u;
 
 // root_motion.comp: each character's phase, speed weight and root (the paper's eq. 10).
 const uint kRootMotionBindingPlacement = 2u;  // vec4 per character as two 64-bit words
@@ -67,13 +67,12 @@ const uint kPoseConstantParents = 1u;          // + j: the parent of joint j (-1
 const uint kPoseConstantAnimatedOffsets = 65u;  // bit mask: offsets that change over frames
 const uint kPoseConstantUseMasks = 67u;         // skip joints outside the LOD mask
 const uint kPoseConstantFixedBones = 68u;       // bit mask (synth::fixedBones)
-// + 8j + c: joint j's fixed bone, c = offset xyz, length, alignment quaternion xyzw (float bits;
-// generated pose_bones.glsl).
+// + 4j + c: joint j's fixed bone, c = offset xyz, length (float bits; generated pose_bones.glsl).
 const uint kPoseConstantBones = 70u;
-const uint kPoseBoneConstants = 8u;
-const uint kPoseConstantCount = 584u;  // every id above and the texels' below this
+const uint kPoseBoneConstants = 4u;
+const uint kPoseConstantCount = 328u;  // every id above and the texels' below this
 
-// synth_pose_cached.comp: cached characters' draw matrices, M · P from the cache.
+// synth_pose_cached.comp: cached characters' joint points, M · p from the cache.
 const uint kPoseCachedBindingPlacement = 3u;
 const uint kPoseCachedBindingMotion = 4u;
 const uint kPoseCachedBindingJoints = 5u;

@@ -5,8 +5,9 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 // Pose pass, one invocation per character: per joint, each motion texture slerped between the
 // two rows on either side of the phase (continuous sampling, no judder), then slow and fast
-// slerped by w (shortest arc); hierarchy composition down the parent array, and the joint draw
-// matrices A = M·O·F (the paper's eq. 11, docs/design.md). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
+// slerped by w (shortest arc); hierarchy composition down the parent array, and each joint's
+// point (the draw matrix A = M·O·F of the paper's eq. 11 follows from it and its parent's,
+// shared_types.h boneMatrix; docs/design.md). CPU twin: anim::poseCharacter. Characters whose speed bucket is in
 // the motion cache skip all of that in synth_pose_cached.comp.
 #include "shared_types.h"
 #include "synth_bindings.h"
@@ -21,20 +22,9 @@ layout(std140, binding = kPoseBindingConstantOffsets) uniform ConstantOffsets { 
 // Read as 64-bit words too (two per vec4, see motion_texels.glsl).
 layout(std430, binding = kPoseBindingPlacement) readonly buffer Placement { u64vec2 placement[]; };
 layout(std430, binding = kPoseBindingMotion) readonly buffer Motion { u64vec2 motion[]; };
-// Written as 64-bit words (words64.glsl): six 64-bit components per joint instead of twelve
-// floats, in two stores rather than three. lavapipe runs each store as a loop over the lanes, so
-// a store of four words costs one loop where two stores of two cost two. Joints are 48 bytes
-// apart, so every other one starts 16 bytes past a 32-byte boundary: the scalar layout allows a
-// four-word vector there, std430 would not. The bytes are JointMatrix's, which every reader takes.
-struct JointWords {
-  u64vec4 rows01;  // row0, row1
-  u64vec2 row2;
-};
-layout(scalar, binding = kPoseBindingJoints) writeonly buffer Joints { JointWords jointWords[]; };
-void storeJoint(uint index, vec4 row0, vec4 row1, vec4 row2) {
-  jointWords[index].rows01 = u64vec4(toWords(row0), toWords(row1));
-  jointWords[index].row2 = toWords(row2);
-}
+// One JointPoint per joint: a single 16-byte store, the least a joint can take (shared_types.h).
+layout(std430, binding = kPoseBindingJoints) writeonly buffer Joints { JointPoint joints[]; };
+void storeJoint(uint index, vec4 point) { joints[index].positionRadius = point; }
 // With the motion cache on, only the characters whose bucket is not resident are posed here,
 // listed by cache_classify.comp.
 layout(std430, binding = kPoseBindingCharacterList) readonly buffer CharacterList { uint characterList[]; };

@@ -99,7 +99,7 @@ void runScalingExperiment(const gpu::Context& context, const synth::SynthProgram
     scenario.characters = n;
     scenario.seed = 3;
     crowd::Crowd crowd = crowd::makeScenario(scenario);
-    std::vector<synth::JointMatrix> cpuJoints(size_t(n) * pair.jointCount());
+    std::vector<synth::JointPoint> cpuJoints(size_t(n) * pair.jointCount());
     std::vector<double> cpuMs, fullMs, lodMs, cachedMs;
     for (int f = 0; f < std::max(3, o.frames / 4); ++f) {
       auto start = std::chrono::steady_clock::now();

@@ -136,7 +136,7 @@ Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& p
 Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads,
                       const BenchOptions& o) {
   crowd::Crowd crowd = benchCrowd(n);
-  std::vector<synth::JointMatrix> joints(size_t(n) * pair.jointCount());
+  std::vector<synth::JointPoint> joints(size_t(n) * pair.jointCount());
   std::vector<double> ms;
   int frames =
       n >= 100000 ? std::max(5, o.frames / 2) : o.frames;  // the slow baseline gets fewer frames
@@ -433,7 +433,7 @@ void runExperiments(const BenchSession& s) {
   experiment.counts = s.o.counts;
   // The experiments go to a million characters where memory allows: one joint buffer on
   // the device at a time (1.2 GB at 1M × 25 joints; lavapipe's heap is 2 GiB).
-  const uint64_t millionBytes = 1000000ull * s.pair.jointCount() * sizeof(synth::JointMatrix);
+  const uint64_t millionBytes = 1000000ull * s.pair.jointCount() * sizeof(synth::JointPoint);
   if (!s.o.quick && s.context.info().deviceLocalBytes >= millionBytes + millionBytes / 4 &&
       std::find(s.o.counts.begin(), s.o.counts.end(), 1000000u) == s.o.counts.end())
     experiment.counts.push_back(1000000);

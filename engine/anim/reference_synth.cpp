@@ -59,18 +59,6 @@ void blendJoint(const MotionPair& pair, const PhaseSampling& p, int j, glm::vec4
   o = mixVec(oSlow, oFast, p.w);
 }
 
-void writeRows(glm::vec4 q, glm::vec3 scale, glm::vec3 t, glm::vec4* rows) {
-  float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
-  float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
-  float wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-  rows[0] = glm::vec4((1.0f - 2.0f * (yy + zz)) * scale.x, 2.0f * (xy - wz) * scale.y,
-                      2.0f * (xz + wy) * scale.z, t.x);
-  rows[1] = glm::vec4(2.0f * (xy + wz) * scale.x, (1.0f - 2.0f * (xx + zz)) * scale.y,
-                      2.0f * (yz - wx) * scale.z, t.y);
-  rows[2] = glm::vec4(2.0f * (xz - wy) * scale.x, 2.0f * (yz + wx) * scale.y,
-                      (1.0f - 2.0f * (xx + yy)) * scale.z, t.z);
-}
-
 }  // namespace
 
 ClipSample clipSample(float phase, int frames) {
@@ -140,7 +128,7 @@ void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<
 void poseCharacterAt(const MotionPair& pair, float phase, float w, float heading, glm::vec3 origin,
                      float scale, std::span<glm::vec4> out) {
   const int joints = pair.jointCount();
-  THRONG_CHECK(static_cast<int>(out.size()) >= 3 * joints, "joint matrix output too small");
+  THRONG_CHECK(static_cast<int>(out.size()) >= joints, "joint point output too small");
   thread_local std::vector<PoseJoint> world;
   world.resize(joints);
   const glm::vec4 yaw = yawQuat(heading);
@@ -152,27 +140,15 @@ void poseCharacterAt(const MotionPair& pair, float phase, float w, float heading
     blendJoint(pair, sampling, j, q, o);
     int p = pair.parents[j];
     float radius = pair.jointRadius[j];
-    glm::vec3 start;
-    glm::vec4 orientation;
-    float length;
     if (p < 0) {
-      // The root is drawn as a sphere around it: a vertical "bone" of length 2r.
       world[j].rotation = quatMul(yaw, q);
       world[j].position = origin + glm::vec3(0.0f, scale * o.y, 0.0f);
-      start =
-          world[j].position + quatRotate(world[j].rotation, glm::vec3(0.0f, -scale * radius, 0.0f));
-      orientation = world[j].rotation;
-      length = 2.0f * radius;
     } else {
       world[j].position = world[p].position + quatRotate(world[p].rotation, scale * o);
       world[j].rotation = quatMul(world[p].rotation, q);
-      length = glm::length(o);
-      glm::vec3 dir = length > 1e-6f ? o / length : glm::vec3(0.0f, 1.0f, 0.0f);
-      start = world[p].position;
-      orientation = quatMul(world[p].rotation, alignYTo(dir));
-      if (length <= 1e-6f) radius = 0.0f;  // zero-length bones are not drawn
+      if (glm::length(o) <= 1e-6f) radius = 0.0f;  // zero-length bones are not drawn
     }
-    writeRows(orientation, scale * glm::vec3(radius, length, radius), start, &out[3 * j]);
+    out[j] = glm::vec4(world[j].position, scale * radius);
   }
 }
 
@@ -180,12 +156,6 @@ void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm
                    std::span<glm::vec4> out) {
   poseCharacterAt(pair, gpu_types::cyclePhase(motion), gpu_types::speedWeight(motion), placement.w,
                   glm::vec3(placement), gpu_types::characterScale(motion), out);
-}
-
-glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p) {
-  return glm::vec3(glm::dot(glm::vec3(rows[0]), p) + rows[0].w,
-                   glm::dot(glm::vec3(rows[1]), p) + rows[1].w,
-                   glm::dot(glm::vec3(rows[2]), p) + rows[2].w);
 }
 
 }  // namespace throng::anim

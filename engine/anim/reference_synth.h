@@ -27,8 +27,9 @@ void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& moti
 void stepCharacter(const MotionPair& pair, glm::vec4& placement, glm::vec4& motion, float dt,
                    Steering steering, const SpeedRetarget& retarget, uint32_t character);
 
-// Joint draw matrices A_j = M·O·F for one character (3 rows of a 3x4 matrix per joint,
-// matching gpu_types::JointMatrix). `out` holds jointCount × 3 vec4.
+// Joint points for one character (per joint its position and its bone's drawn radius, matching
+// gpu_types::JointPoint; the draw matrices A_j = M·O·F follow, gpu_types::boneMatrix). `out`
+// holds jointCount vec4.
 void poseCharacter(const MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
                    std::span<glm::vec4> out);
 
@@ -55,8 +56,5 @@ struct PoseJoint {
   glm::vec4 rotation;
 };
 void poseCharacterSpace(const MotionPair& pair, float phase, float w, std::span<PoseJoint> out);
-
-// World position of a point given in a joint draw matrix's unit space.
-glm::vec3 transformPoint(std::span<const glm::vec4, 3> rows, glm::vec3 p);
 
 }  // namespace throng::anim

@@ -10,6 +10,7 @@
 #include "gpu/commands.h"
 #include "render/joint_splat.h"
 #include "shaders/render_bindings.h"
+#include "shaders/synth_bindings.h"
 #include "synth/coverage.h"
 #include "synth/gpu_types.h"
 
@@ -19,7 +20,7 @@ using gpu_types::DrawPush;
 using gpu_types::FrameUniforms;
 using gpu_types::kDrawFromList;
 static_assert(sizeof(DrawPush) == 24, "DrawPush must match the GLSL push block");
-static_assert(sizeof(FrameUniforms) == 160, "FrameUniforms must match the GLSL std140 block");
+static_assert(sizeof(FrameUniforms) == 224, "FrameUniforms must match the GLSL std140 block");
 
 namespace {
 
@@ -75,6 +76,13 @@ FrameUniforms makeFrameUniforms(const DrawParams& params) {
   u.rayForward = glm::vec4(forward, 0.0f);
   u.viewport = glm::vec4(float(params.width), float(params.height),
                          camera.focalLengthPixels(float(params.height)), 0.0f);
+  if (params.characterCount > 0 && params.jointParents.size() != params.jointCount)
+    fail("draw: ", params.jointParents.size(), " joint parents for ", params.jointCount, " joints");
+  for (uint32_t j = 0; j < gpu_types::kPoseMaxJoints; ++j) {
+    const int32_t parent = j < params.jointParents.size() ? params.jointParents[j] : -1;
+    const uint32_t byte = parent < 0 ? gpu_types::kNoParent : uint32_t(parent);
+    u.jointParents[j / 16u][(j / 4u) % 4u] |= byte << (8u * (j % 4u));
+  }
   return u;
 }
 
@@ -432,7 +440,7 @@ void CrowdRenderer::drawNearJoints(VkCommandBuffer cmd, const DrawParams& params
   push.boneHi = uint32_t(params.drawnBones >> 32);
   const std::vector<JointChunk> chunks =
       jointChunks(params.characterCount, params.jointCount, context_->info().maxStorageBufferRange);
-  const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * 48u;
+  const VkDeviceSize perCharacter = VkDeviceSize(params.jointCount) * sizeof(gpu_types::JointPoint);
   const CachedPoseInputs cached = boundCachedPoses(params, noMasks_);
   // Over the planes without their depths, the near joints test against the visibility buffer.
   const bool overSplat = splat && groundCopied_ && !depthPlane(params);

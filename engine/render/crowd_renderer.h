@@ -3,6 +3,7 @@
 // ellipsoid (a ray-cast quad), plus the ground. Records into any colour/depth image pair (offscreen
 // target or swapchain image), so the viewer and the frame dumper share it.
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "gpu/buffer.h"
@@ -21,7 +22,10 @@ struct DrawParams {
   uint32_t width = 0, height = 0;
   uint32_t characterCount = 0;
   uint32_t jointCount = 0;
-  const gpu::Buffer* joints = nullptr;  // JointMatrix per character per joint
+  const gpu::Buffer* joints = nullptr;  // JointPoint per character per joint
+  // Each joint's parent (-1: the root), jointCount of them: a joint's bone runs from its parent's
+  // point to its own. The skeleton outlives the draw.
+  std::span<const int32_t> jointParents;
   float groundExtent = 100.0f;
   // Joints whose screen sprite is at most this wide go through the compute splat; 0 draws
   // every joint with the graphics pipeline.

@@ -9,21 +9,23 @@
 namespace throng::render {
 namespace {
 
-glm::vec3 partPoint(const synth::JointMatrix& a, float bonePoint) {
-  return {a.row0.y * bonePoint + a.row0.w, a.row1.y * bonePoint + a.row1.w,
-          a.row2.y * bonePoint + a.row2.w};
+// Mirrors partPoint in joint_far_body.glsl.
+glm::vec3 partPoint(std::span<const synth::JointPoint> character,
+                    const gpu_types::CoveragePart& part) {
+  const glm::vec4 point = character[part.joint].positionRadius;
+  const glm::vec4 parent = part.parent < 0 ? point : character[size_t(part.parent)].positionRadius;
+  return gpu_types::bonePoint(parent, point, part.parent < 0, part.bonePoint);
 }
 
 }  // namespace
 
-synth::JointMatrix farBodyMatrix(std::span<const synth::JointMatrix> character,
+synth::JointMatrix farBodyMatrix(std::span<const synth::JointPoint> character,
                                  const synth::CoverageParts& parts, float width) {
   const gpu_types::CoveragePart& torso = parts.parts[gpu_types::kPartTorso];
   const gpu_types::CoveragePart& left = parts.parts[gpu_types::kPartLeftLeg];
   const gpu_types::CoveragePart& right = parts.parts[gpu_types::kPartRightLeg];
-  const glm::vec3 spine = partPoint(character[torso.joint], torso.bonePoint);
-  const glm::vec3 knees = 0.5f * (partPoint(character[left.joint], left.bonePoint) +
-                                  partPoint(character[right.joint], right.bonePoint));
+  const glm::vec3 spine = partPoint(character, torso);
+  const glm::vec3 knees = 0.5f * (partPoint(character, left) + partPoint(character, right));
   const float meanSpan = torso.centre.y - 0.5f * (left.centre.y + right.centre.y);
   const float scale = meanSpan > 0.0f ? (spine.y - knees.y) / meanSpan : 0.0f;
   if (!(scale > 0.0f)) return {};
@@ -34,12 +36,14 @@ synth::JointMatrix farBodyMatrix(std::span<const synth::JointMatrix> character,
           glm::vec4(0.0f, 0.0f, radius, bottom.z)};
 }
 
-SplatInputsCpu splatInputsCpu(std::span<const synth::JointMatrix> joints, uint32_t jointCount,
-                              uint64_t drawnBones, std::span<const synth::CoverageMask> masks,
+SplatInputsCpu splatInputsCpu(std::span<const synth::JointPoint> joints,
+                              std::span<const int32_t> parents, uint64_t drawnBones,
+                              std::span<const synth::CoverageMask> masks,
                               const synth::CoverageParts* levels,
                               const gpu_types::FrameUniforms& frame, float maxPixels,
                               float farBodyPixels) {
-  SplatInputsCpu out{drawnJointMatrices(joints, jointCount, drawnBones, masks, levels), {}};
+  const size_t jointCount = parents.size();
+  SplatInputsCpu out{drawnJointMatrices(joints, parents, drawnBones, masks, levels), {}};
   if (masks.empty() || !levels || farBodyPixels <= 0.0f) return out;
   for (size_t c = 0; c < masks.size(); ++c) {
     const synth::CoverageMask& mask = masks[c];

@@ -12,9 +12,9 @@
 
 namespace throng::render {
 
-// The body ellipsoid of one character's joints as a joint draw matrix (farBodyMatrix in the
-// shader); a zero matrix where the joints give no scale.
-synth::JointMatrix farBodyMatrix(std::span<const synth::JointMatrix> character,
+// The body ellipsoid of one character's joint points as a joint draw matrix (farBodyMatrix in
+// the shader); a zero matrix where the joints give no scale.
+synth::JointMatrix farBodyMatrix(std::span<const synth::JointPoint> character,
                                  const synth::CoverageParts& parts,
                                  float width = gpu_types::kFarBodyWidth);
 
@@ -23,16 +23,17 @@ struct FarBodyCpu {
   synth::JointMatrix body;
 };
 
-// What joint_splat.comp and joint_splat_walk.comp splat: `joints` in drawnJointMatrices's
-// layout, with nothing for the characters drawn as their far body (masks and levels given, far
-// level, the body under farBodyPixels tall and at most maxPixels wide), which are in `bodies`.
-// farBodyPixels 0: no far bodies.
+// What joint_splat.comp and joint_splat_walk.comp splat: `joints` (points, as
+// drawnJointMatrices takes them) as drawnJointMatrices draws them, with nothing for the characters
+// drawn as their far body (masks and levels given, far level, the body under farBodyPixels tall and
+// at most maxPixels wide), which are in `bodies`. farBodyPixels 0: no far bodies.
 struct SplatInputsCpu {
   std::vector<synth::JointMatrix> joints;
   std::vector<FarBodyCpu> bodies;
 };
-SplatInputsCpu splatInputsCpu(std::span<const synth::JointMatrix> joints, uint32_t jointCount,
-                              uint64_t drawnBones, std::span<const synth::CoverageMask> masks,
+SplatInputsCpu splatInputsCpu(std::span<const synth::JointPoint> joints,
+                              std::span<const int32_t> parents, uint64_t drawnBones,
+                              std::span<const synth::CoverageMask> masks,
                               const synth::CoverageParts* levels,
                               const gpu_types::FrameUniforms& frame, float maxPixels,
                               float farBodyPixels = gpu_types::kSplatFarBodyPixels);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "synth/joint_points.h"
 
 namespace throng::render {
 namespace {
@@ -36,19 +37,25 @@ synth::JointMatrix longBone(glm::vec3 start, const synth::JointMatrix& a, float 
 
 }  // namespace
 
-std::vector<synth::JointMatrix> drawnJointMatrices(std::span<const synth::JointMatrix> joints,
-                                                   uint32_t jointCount, uint64_t drawnBones,
+std::vector<synth::JointMatrix> drawnJointMatrices(std::span<const synth::JointPoint> joints,
+                                                   std::span<const int32_t> parents,
+                                                   uint64_t drawnBones,
                                                    std::span<const synth::CoverageMask> masks,
                                                    const synth::CoverageParts* levels) {
+  const uint32_t jointCount = uint32_t(parents.size());
   if (jointCount == 0 || joints.size() % jointCount != 0)
-    fail("drawnJointMatrices: ", joints.size(), " matrices are not whole characters of ",
-         jointCount, " joints");
+    fail("drawnJointMatrices: ", joints.size(), " points are not whole characters of ", jointCount,
+         " joints");
   const size_t characters = joints.size() / jointCount;
   if (!masks.empty() && masks.size() != characters)
     fail("drawnJointMatrices: ", masks.size(), " masks for ", characters, " characters");
   std::vector<synth::JointMatrix> out(joints.size(), synth::JointMatrix{});
+  std::vector<synth::JointMatrix> own(jointCount);
   for (size_t c = 0; c < characters; ++c) {
-    const synth::JointMatrix* own = &joints[c * jointCount];
+    // Every joint's bone, as joint_fetch.glsl rebuilds it; a joint outside the mask was not
+    // written, and its matrix is never used.
+    for (uint32_t j = 0; j < jointCount; ++j)
+      own[j] = synth::jointMatrixAt(joints.subspan(c * jointCount, jointCount), parents, j);
     for (uint32_t j = 0; j < jointCount; ++j) {
       if (!bitOf(drawnBones, j)) continue;
       if (masks.empty()) {

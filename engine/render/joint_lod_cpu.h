@@ -9,10 +9,12 @@
 
 namespace throng::render {
 
-// `joints`: characters × jointCount matrices. `masks` empty: every joint with a drawn bone;
-// else one CoverageMask per character, and with `levels` the level's drawn joints and long bones.
-std::vector<synth::JointMatrix> drawnJointMatrices(std::span<const synth::JointMatrix> joints,
-                                                   uint32_t jointCount, uint64_t drawnBones,
+// `joints`: characters × jointCount points (jointCount = parents.size(), the skeleton's parents).
+// `masks` empty: every joint with a drawn bone; else one CoverageMask per character, and with
+// `levels` the level's drawn joints and long bones.
+std::vector<synth::JointMatrix> drawnJointMatrices(std::span<const synth::JointPoint> joints,
+                                                   std::span<const int32_t> parents,
+                                                   uint64_t drawnBones,
                                                    std::span<const synth::CoverageMask> masks = {},
                                                    const synth::CoverageParts* levels = nullptr);
 

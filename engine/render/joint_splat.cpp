@@ -30,9 +30,10 @@ std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount
                                     uint32_t maxStorageBufferRange) {
   std::vector<JointChunk> chunks;
   if (characterCount == 0 || jointCount == 0) return chunks;
-  // Bounded by one binding of matrices and by 65535 workgroups of 64 joints per dispatch.
+  // Bounded by one binding of joint points and by 65535 workgroups of 64 joints per dispatch.
   uint32_t perChunk =
-      std::min(maxStorageBufferRange / (jointCount * 48u), 65535u * 64u / jointCount);
+      std::min(maxStorageBufferRange / (jointCount * uint32_t(sizeof(gpu_types::JointPoint))),
+               65535u * 64u / jointCount);
   perChunk = std::max(1u, perChunk);
   for (uint32_t first = 0; first < characterCount; first += perChunk)
     chunks.push_back({first, std::min(perChunk, characterCount - first)});
@@ -105,8 +106,9 @@ std::vector<std::string> SplatJob::validate() const {
   if (walk == SplatWalk::PerJoint && jointCount > 65535u)
     problems.push_back(
         concat("jointCount ", jointCount, " is above 65535, a walk's rows per joint"));
-  if (joints && *joints && joints->size() < VkDeviceSize(characterCount) * jointCount * 48u)
-    problems.push_back("input 'joints' is smaller than characterCount × jointCount matrices");
+  if (joints && *joints &&
+      joints->size() < VkDeviceSize(characterCount) * jointCount * sizeof(gpu_types::JointPoint))
+    problems.push_back("input 'joints' is smaller than characterCount × jointCount joint points");
   if (maxStorageBufferRange == 0) problems.push_back("maxStorageBufferRange is zero");
   if (!masks || !*masks)
     problems.push_back("input 'masks' buffer is missing (bind a small one when flags are 0)");
@@ -170,7 +172,7 @@ std::vector<std::string> SplatJob::validate() const {
 void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program,
                            const JointChunk& chunk, size_t c, int argsWord) const {
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
-  const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * 48u;
+  const VkDeviceSize perCharacter = VkDeviceSize(jointCount) * sizeof(gpu_types::JointPoint);
   SplatPush push{jointCount,
                  chunk.firstCharacter,
                  chunk.characterCount * jointCount,

@@ -36,7 +36,7 @@ struct CachedPoseInputs {
   const gpu::Buffer* placement = nullptr;   // vec4 per character (crowd)
   const gpu::Buffer* motion = nullptr;      // vec4 per character (crowd): scale in w
   const gpu::Buffer* poseSource = nullptr;  // uint per character (cache classify pass)
-  const gpu::Buffer* cacheData = nullptr;   // JointMatrix per cache slot, segment and joint
+  const gpu::Buffer* cacheData = nullptr;   // JointPoint per cache slot, row and joint
   // The far bodies' table (synth::makeFarBodyPoses), filled with the cache when the LOD is on;
   // the renderer binds a placeholder without it (no far bodies are drawn then).
   const gpu::Buffer* farBodyPoses = nullptr;
@@ -79,7 +79,7 @@ SplatLists makeSplatLists(const gpu::Context& context,
                           uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity);
 
 struct SplatJob {
-  const gpu::Buffer* joints = nullptr;         // input: JointMatrix per character per joint
+  const gpu::Buffer* joints = nullptr;         // input: JointPoint per character per joint
   const gpu::Buffer* frameUniforms = nullptr;  // input: gpu_types::FrameUniforms
   const gpu::Buffer* visibility = nullptr;     // output: width × height uint64, reset first
   const gpu::Buffer* draws = nullptr;  // output: VkDrawIndirectCommand per chunk (too-wide joints)

@@ -15,6 +15,7 @@ render::DrawParams drawParams(const Scene& scene, const FrameSettings& settings)
   params.characterCount = scene.count();
   params.jointCount = scene.jointCount();
   params.joints = &synth.joints;
+  params.jointParents = scene.pair(0).parents;
   // Every group has the same joint count; the first pair's placement joints stand for all.
   params.drawnBones = anim::drawnBoneMask(anim::placementJoints(scene.pair(0)));
   params.groundExtent = settings.groundExtent;

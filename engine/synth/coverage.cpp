@@ -70,6 +70,9 @@ CoverageParts makeCoverageParts(const BodyParts& parts, const CoverageThresholds
   out.allHi = uint32_t(parts.allMask >> 32);
   out.body = glm::vec4(parts.height, thresholds.minChangeSeconds, parts.slowCycleSeconds,
                        parts.fastCycleSeconds);
+  if (parts.parents.size() != size_t(parts.jointCount))
+    fail("coverage: the body parts give ", parts.parents.size(), " parents for ", parts.jointCount,
+         " joints");
   for (int k = 0; k < kBodyPartCount; ++k) {
     const BodyPart& part = parts.parts[size_t(k)];
     if (part.centreJoint < 0 || part.centreJoint >= parts.jointCount)
@@ -78,8 +81,9 @@ CoverageParts makeCoverageParts(const BodyParts& parts, const CoverageThresholds
     CoveragePart& p = out.parts[k];
     p.centre = glm::vec4(part.meanCentre, part.radius);
     p.joint = uint32_t(part.centreJoint);
-    // The root's matrix is a vertical "bone" of length 2r centred on it (see synth_pose.comp).
-    p.bonePoint = part.centreJoint == 0 ? 0.5f : 1.0f;
+    p.parent = parts.parents[size_t(part.centreJoint)];
+    // The root's bone is vertical, 2r long and centred on it (gpu_types::bonePoint).
+    p.bonePoint = p.parent < 0 ? 0.5f : 1.0f;
   }
   setLevelTables(out, parts, thresholds);
   return out;
@@ -211,7 +215,7 @@ namespace {
 
 // The five part spheres' areas and on-screen bits; mirrors measureParts in coverage.comp.
 uint32_t measureParts(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
-                      float scale, const JointMatrix* joints, uint64_t previousMask, float* areas) {
+                      float scale, const JointPoint* joints, uint64_t previousMask, float* areas) {
   const bool readJoints = (push.flags & kCoverageReadJoints) != 0u && joints != nullptr;
   const float c = std::cos(placement.w), s = std::sin(placement.w);
   uint32_t onScreen = 0;
@@ -219,10 +223,11 @@ uint32_t measureParts(const CoveragePush& push, const CoverageParts& parts, glm:
     const CoveragePart& part = parts.parts[k];
     glm::vec3 centre;
     if (readJoints && ((previousMask >> part.joint) & 1u) != 0u) {
-      // The pose pass wrote this joint last frame: its position is A·(0, bonePoint, 0, 1).
-      const JointMatrix& a = joints[part.joint];
-      centre = glm::vec3(a.row0.y * part.bonePoint + a.row0.w, a.row1.y * part.bonePoint + a.row1.w,
-                         a.row2.y * part.bonePoint + a.row2.w);
+      // The pose pass wrote this joint (and its parent) last frame: the centre is
+      // A·(0, bonePoint, 0, 1) of its bone.
+      const glm::vec4 point = joints[part.joint].positionRadius;
+      const glm::vec4 parent = part.parent < 0 ? point : joints[part.parent].positionRadius;
+      centre = gpu_types::bonePoint(parent, point, part.parent < 0, part.bonePoint);
     } else {
       // Not synthesized: the centre joint's mean character-space position, placed like the root.
       const glm::vec3 m = glm::vec3(part.centre) * scale;
@@ -238,7 +243,7 @@ uint32_t measureParts(const CoveragePush& push, const CoverageParts& parts, glm:
 }  // namespace
 
 CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts,
-                               glm::vec4 placement, glm::vec4 motion, const JointMatrix* joints,
+                               glm::vec4 placement, glm::vec4 motion, const JointPoint* joints,
                                const CoverageMask& previous, float* areas) {
   const float scale = gpu_types::characterScale(motion);
   const float height = parts.body.x * scale;
@@ -261,12 +266,12 @@ CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& pa
 }
 
 void coverageCpu(const CoverageCamera& camera, const CoverageParts& parts, uint32_t jointCount,
-                 const crowd::Crowd& crowd, std::span<const JointMatrix> joints,
+                 const crowd::Crowd& crowd, std::span<const JointPoint> joints,
                  std::span<CoverageMask> masks, std::span<float> areas) {
   const size_t n = crowd.size();
   if (masks.size() != n) fail("coverageCpu: ", masks.size(), " masks for ", n, " characters");
   if (!joints.empty() && joints.size() != n * jointCount)
-    fail("coverageCpu: ", joints.size(), " joint matrices, expected ", n, " × ", jointCount);
+    fail("coverageCpu: ", joints.size(), " joint points, expected ", n, " × ", jointCount);
   if (!areas.empty() && areas.size() != n * kCoveragePartCount)
     fail("coverageCpu: ", areas.size(), " areas, expected 5 × ", n);
   uint32_t flags =
@@ -318,7 +323,7 @@ std::vector<std::string> CoverageJob::validate() const {
                               " bytes, characters up to ", end, " need ",
                               end * sizeof(CoverageMask)));
   if (joints && *joints) {
-    VkDeviceSize need = VkDeviceSize(count) * jointCount * sizeof(JointMatrix);
+    VkDeviceSize need = VkDeviceSize(count) * jointCount * sizeof(JointPoint);
     if (jointsOffset + need > joints->size())
       problems.push_back(concat("input 'joints' holds ", joints->size(), " bytes, the chunk needs ",
                                 need, " at offset ", jointsOffset));
@@ -343,7 +348,7 @@ void CoverageJob::record(VkCommandBuffer cmd, const gpu::ComputeProgram& program
       gpu::uniformTexelBinding(gpu_types::kCoverageBindingPlacement, crowd->placementTexels.get()),
       gpu::uniformTexelBinding(gpu_types::kCoverageBindingMotion, crowd->motionTexels.get()),
       readJoints ? gpu::storageBinding(gpu_types::kCoverageBindingJoints, *joints, jointsOffset,
-                                       VkDeviceSize(count) * jointCount * sizeof(JointMatrix))
+                                       VkDeviceSize(count) * jointCount * sizeof(JointPoint))
                  : gpu::storageBinding(gpu_types::kCoverageBindingJoints, crowd->placement),
       gpu::storageBinding(gpu_types::kCoverageBindingMasks, *masks),
       writeAreas ? gpu::storageBinding(gpu_types::kCoverageBindingAreas, *areas)

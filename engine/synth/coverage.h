@@ -33,7 +33,7 @@ static_assert(sizeof(CoverageLevel) == 32, "CoverageLevel must match the GLSL st
 static_assert(sizeof(CoverageParts) == 1248, "CoverageParts must match the GLSL std140 block");
 static_assert(sizeof(CoverageMask) == 16, "CoverageMask must match the GLSL std430 struct");
 using gpu_types::FarBodyPose;
-static_assert(sizeof(FarBodyPose) == 80, "FarBodyPose must match the GLSL std430 struct");
+static_assert(sizeof(FarBodyPose) == 96, "FarBodyPose must match the GLSL std430 struct");
 
 // Default thresholds: projected standing height in pixels (f·H/z) from which a character is
 // mid and near. Every level draws four limbs; mid keeps elbows and knees from 56 px, near
@@ -100,13 +100,13 @@ bool bodyWithinReach(const CoveragePush& push, const CoverageParts& parts, glm::
 // centre joints the pose pass wrote and holds the level state. The five part spheres are
 // measured only when push.flags has kCoverageWriteAreas (into `areas`, 5 floats, if not null).
 CoverageMask coverageCharacter(const CoveragePush& push, const CoverageParts& parts,
-                               glm::vec4 placement, glm::vec4 motion, const JointMatrix* joints,
+                               glm::vec4 placement, glm::vec4 motion, const JointPoint* joints,
                                const CoverageMask& previous, float* areas);
 
 // The whole crowd on the CPU; `masks` (one per character) is read as the previous masks and
 // overwritten; `joints` is empty or crowd.size() × jointCount; `areas` is empty or 5 per character.
 void coverageCpu(const CoverageCamera& camera, const CoverageParts& parts, uint32_t jointCount,
-                 const crowd::Crowd& crowd, std::span<const JointMatrix> joints,
+                 const crowd::Crowd& crowd, std::span<const JointPoint> joints,
                  std::span<CoverageMask> masks, std::span<float> areas);
 
 // True when every active joint's parent is active (the invariant the pose pass relies on).
@@ -129,7 +129,7 @@ struct CoverageJob {
   const crowd::CrowdBuffers* crowd =
       nullptr;                          // input: placement (position, heading), motion (scale)
   const gpu::Buffer* parts = nullptr;   // input: uniform CoverageParts (makeCoverageParts)
-  const gpu::Buffer* joints = nullptr;  // optional input: last pose pass' JointMatrix output
+  const gpu::Buffer* joints = nullptr;  // optional input: last pose pass' JointPoint output
   const gpu::Buffer* masks = nullptr;   // input/output: CoverageMask per character
   const gpu::Buffer* areas = nullptr;   // optional output: 5 floats per character
   CoverageCamera camera;

@@ -66,22 +66,22 @@ void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, CharacterRa
 }
 
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd,
-                  std::span<JointMatrix> out, unsigned threads) {
+                  std::span<JointPoint> out, unsigned threads) {
   poseCrowdCpu(pair, crowd, {0, crowd.size()}, out, threads);
 }
 
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, CharacterRange range,
-                  std::span<JointMatrix> out, unsigned threads) {
+                  std::span<JointPoint> out, unsigned threads) {
   const size_t joints = static_cast<size_t>(pair.jointCount());
   const size_t end = range.first + range.count;
   THRONG_CHECK(end <= crowd.size(), "range runs past the crowd's ", crowd.size(), " characters");
-  THRONG_CHECK(out.size() >= end * joints, "joint matrix output holds ", out.size(), ", needs ",
+  THRONG_CHECK(out.size() >= end * joints, "joint point output holds ", out.size(), ", needs ",
                end * joints);
   parallelFor(range.count, threads, [&](size_t begin, size_t stop) {
     for (size_t i = range.first + begin; i < range.first + stop; ++i) {
-      auto* rows = reinterpret_cast<glm::vec4*>(&out[i * joints]);
+      auto* points = reinterpret_cast<glm::vec4*>(&out[i * joints]);
       anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i],
-                          std::span<glm::vec4>(rows, 3 * joints));
+                          std::span<glm::vec4>(points, joints));
     }
   });
 }

@@ -20,11 +20,11 @@ void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, float dt, u
                   const anim::SpeedRetarget& retarget = {});
 void stepCrowdCpu(const anim::MotionPair& pair, crowd::Crowd& crowd, CharacterRange range, float dt,
                   unsigned threads = 1, const anim::SpeedRetarget& retarget = {});
-// `out` holds crowd.size() × jointCount joint matrices (character i's from i × jointCount).
+// `out` holds crowd.size() × jointCount joint points (character i's from i × jointCount).
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd,
-                  std::span<JointMatrix> out, unsigned threads = 1);
+                  std::span<JointPoint> out, unsigned threads = 1);
 void poseCrowdCpu(const anim::MotionPair& pair, const crowd::Crowd& crowd, CharacterRange range,
-                  std::span<JointMatrix> out, unsigned threads = 1);
+                  std::span<JointPoint> out, unsigned threads = 1);
 
 // Runs body(begin, end) over [0, count) split across `threads` threads.
 void parallelFor(size_t count, unsigned threads, const std::function<void(size_t, size_t)>& body);

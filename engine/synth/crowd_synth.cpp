@@ -97,7 +97,7 @@ void allocateCacheLists(const gpu::Context& context, CrowdSynth& synth, size_t c
 // Characters per pose chunk: each chunk binds at most maxBindingBytes of joints and 65535
 // workgroups of 64.
 uint32_t poseChunk(const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
-  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointPoint);
   return static_cast<uint32_t>(std::max<VkDeviceSize>(
       1, std::min<VkDeviceSize>(maxBindingBytes / perCharacter, 65535u * 64u)));
 }
@@ -114,7 +114,7 @@ std::vector<uint64_t> setBudgets(std::span<const anim::MotionPair* const> pairs,
   std::vector<uint64_t> need;
   for (const anim::MotionPair* pair : pairs)
     need.push_back(uint64_t(speedBucketCount(cache.bucketWidth)) * cacheRowCount(*pair) *
-                   pair->jointCount() * sizeof(JointMatrix));
+                   pair->jointCount() * sizeof(JointPoint));
   return clipSetBudgets(need, cache.budgetBytes);
 }
 
@@ -146,7 +146,7 @@ CrowdSynth makeCrowdSynth(const gpu::Context& context,
   CrowdSynth synth;
   synth.crowd = crowd::uploadCrowd(context, crowd);
   VkDeviceSize bytes =
-      VkDeviceSize(crowd.size()) * pairs.front()->jointCount() * sizeof(JointMatrix);
+      VkDeviceSize(crowd.size()) * pairs.front()->jointCount() * sizeof(JointPoint);
   synth.joints = gpu::Buffer(context, bytes, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   const std::vector<uint64_t> budgets = setBudgets(pairs, cache);
   for (size_t k = 0; k < pairs.size(); ++k) {
@@ -412,7 +412,7 @@ void recordCacheClassify(VkCommandBuffer cmd, std::span<const SynthPrograms* con
 
 void recordPose(VkCommandBuffer cmd, std::span<const SynthPrograms* const> programs,
                 const CrowdSynth& synth, uint32_t chunk, bool lod) {
-  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointPoint);
   const bool cached = synth.cached();
   uint32_t c = 0;
   for (size_t k = 0; k < synth.groups.size(); ++k) {
@@ -490,7 +490,7 @@ void recordMaterializeCachedPoses(VkCommandBuffer cmd,
                                   const CrowdSynth& synth, VkDeviceSize maxBindingBytes) {
   if (!synth.cached()) return;
   checkPrograms(programs, synth);
-  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointMatrix);
+  const VkDeviceSize perCharacter = VkDeviceSize(synth.jointCount()) * sizeof(JointPoint);
   const uint32_t chunk = poseChunk(synth, maxBindingBytes);
   for (size_t k = 0; k < synth.groups.size(); ++k) {
     const SynthGroup& g = synth.groups[k];

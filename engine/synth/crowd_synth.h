@@ -1,5 +1,5 @@
 #pragma once
-// The frame orchestrator for synthesis: owns the crowd's per-character state and joint-matrix
+// The frame orchestrator for synthesis: owns the crowd's per-character state and joint-point
 // output for every character and, per group of characters (clip set), the GPU copies of its
 // motion pair and its cache; records the passes in order, each over every group's range.
 #include <optional>
@@ -48,8 +48,8 @@ struct SynthGroup {
 // the renderer draws the whole crowd from one set of buffers (cached characters stay cached).
 struct CrowdSynth {
   crowd::CrowdBuffers crowd;  // every character's placement and motion
-  gpu::Buffer joints;         // crowd.count × jointCount JointMatrix
-  // With the cache on: per character, where its joint matrices come from (kPoseInJoints or
+  gpu::Buffer joints;         // crowd.count × jointCount JointPoint
+  // With the cache on: per character, where its joint points come from (kPoseInJoints or
   // its entry in cacheData; the renderer composes cached ones), and per pose chunk the list of
   // characters that the full pose pass synthesizes.
   gpu::Buffer poseSource;      // uint per character

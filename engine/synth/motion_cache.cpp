@@ -48,7 +48,7 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
   cache.jointCount = static_cast<uint32_t>(pair.jointCount());
   cache.bucketCount = speedBucketCount(options.bucketWidth);
   cache.rowCount = cacheRowCount(pair);
-  cache.entryBytes = uint64_t(cache.rowCount) * cache.jointCount * sizeof(JointMatrix);
+  cache.entryBytes = uint64_t(cache.rowCount) * cache.jointCount * sizeof(JointPoint);
   cache.capacity =
       options.enabled ? static_cast<uint32_t>(options.budgetBytes / cache.entryBytes) : 0u;
   gpu_types::CacheCounters counters{};
@@ -71,19 +71,19 @@ gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache*
   for (GpuMotionCache* cache : caches) {
     if (matrices > UINT32_MAX) break;
     cache->dataBase = static_cast<uint32_t>(matrices);
-    matrices += cache->dataBytes() / sizeof(JointMatrix);
+    matrices += cache->dataBytes() / sizeof(JointPoint);
   }
   if (matrices >= UINT32_MAX)
     fail("motion cache: ", matrices, " cached joint matrices are more than a 32-bit index reaches",
          " (lower the cache budget)");
   // A small buffer when every cache is disabled, so the passes always have their bindings.
   return gpu::Buffer(context,
-                     std::max<uint64_t>(16 * sizeof(JointMatrix), matrices * sizeof(JointMatrix)),
+                     std::max<uint64_t>(16 * sizeof(JointPoint), matrices * sizeof(JointPoint)),
                      gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
 }
 
 VkDeviceSize farBodyPosesBytes(const gpu::Buffer& cacheData, uint32_t jointCount) {
-  const VkDeviceSize poses = cacheData.size() / sizeof(JointMatrix) / std::max(jointCount, 1u);
+  const VkDeviceSize poses = cacheData.size() / sizeof(JointPoint) / std::max(jointCount, 1u);
   return (poses + 1) * sizeof(gpu_types::FarBodyPose);
 }
 

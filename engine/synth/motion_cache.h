@@ -43,8 +43,8 @@ using anim::speedBucketCount;
 // Rows per cache entry: row r is the pose at phase r / R, sampled like the pose pass samples
 // (continuously between motion-texture rows), and a cached character shows the row nearest its
 // phase. Why dense rows and not interpolation between rows at playback: the renderer composes a
-// cached character's joints straight from one entry (A = M · P, shaders/joint_fetch.glsl), and
-// interpolating two draw matrices is no rigid motion (lerped rotations shrink the bones), while
+// cached character's joints straight from one entry (M · p, shaders/joint_fetch.glsl), and
+// interpolating two poses' points is no rigid motion (lerped positions shorten the bones), while
 // slerping would need the quaternions and the hierarchy again, the work the cache exists to
 // skip. So R = ⌈kCacheRowsPerSecond × the longer cycle⌉ (at least the clips' own row counts):
 // the row shown is within 1/960 s of the character's phase at any speed, so the pose advanced
@@ -72,9 +72,9 @@ struct GpuMotionCache {
   gpu::Buffer slotBucket;  // int per slot, −1 when empty
   gpu::Buffer freshSlots;  // [0] count, then the slots inserted this frame (to synthesize)
   gpu::Buffer fillArgs;    // VkDispatchIndirectCommand of the fill pass
-  // The entries (capacity × rows × joints JointMatrix, the SSBO ring) live in a data buffer
+  // The entries (capacity × rows × joints JointPoint, the SSBO ring) live in a data buffer
   // that several caches may share (one per clip set of a crowd, so that one draw composes
-  // every cached character): this cache's entry 0 starts at matrix `dataBase` there.
+  // every cached character): this cache's entry 0 starts at point `dataBase` there.
   uint32_t dataBase = 0;
   uint64_t dataBytes() const { return uint64_t(capacity) * entryBytes; }
 };
@@ -83,10 +83,10 @@ struct GpuMotionCache {
 GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::MotionPair& pair,
                                   const MotionCacheOptions& options);
 // A data buffer for these caches, one after the other: sets each cache's dataBase. Throws
-// Error when the entries would not be addressable by a 32-bit matrix index.
+// Error when the entries would not be addressable by a 32-bit point index.
 gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache* const> caches);
 // The far bodies' table beside a data buffer (gpu_types::FarBodyPose, shaders/coverage_types.h):
-// one per pose of jointCount matrices, at the pose's first matrix index / jointCount.
+// one per pose of jointCount points, at the pose's first point index / jointCount.
 VkDeviceSize farBodyPosesBytes(const gpu::Buffer& cacheData, uint32_t jointCount);
 gpu::Buffer makeFarBodyPoses(const gpu::Context& context, const gpu::Buffer& cacheData,
                              uint32_t jointCount);

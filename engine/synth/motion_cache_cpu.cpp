@@ -5,6 +5,7 @@
 #include "anim/reference_synth.h"
 #include "core/error.h"
 #include "synth/cpu_synth.h"
+#include "synth/joint_points.h"
 
 namespace throng::synth {
 
@@ -13,7 +14,7 @@ MotionCacheCpu::MotionCacheCpu(const anim::MotionPair& pair, const MotionCacheOp
   validateCacheOptions(options);
   bucketCount_ = speedBucketCount(options.bucketWidth);
   rows_ = cacheRowCount(pair);
-  entryBytes_ = uint64_t(rows_) * pair.jointCount() * sizeof(JointMatrix);
+  entryBytes_ = uint64_t(rows_) * pair.jointCount() * sizeof(JointPoint);
   capacity_ = options.enabled ? static_cast<uint32_t>(options.budgetBytes / entryBytes_) : 0u;
   bucketSlot_.assign(bucketCount_, -1);
   slotBucket_.assign(capacity_, -1);
@@ -56,34 +57,29 @@ void MotionCacheCpu::update(const crowd::Crowd& crowd) {
   for (uint32_t slot : fresh) {
     if (slotBucket_[slot] < 0) continue;
     float w = bucketSpeed(static_cast<uint32_t>(slotBucket_[slot]), options_.bucketWidth);
-    std::vector<JointMatrix>& entry = entries_[slot];
-    entry.assign(size_t(rows_) * joints, JointMatrix{});
+    std::vector<JointPoint>& entry = entries_[slot];
+    entry.assign(size_t(rows_) * joints, JointPoint{});
     for (uint32_t r = 0; r < rows_; ++r) {
-      auto* rows = reinterpret_cast<glm::vec4*>(&entry[r * joints]);
+      auto* points = reinterpret_cast<glm::vec4*>(&entry[r * joints]);
       anim::poseCharacterAt(*pair_, cacheRowPhase(r, rows_), w, 0.0f, glm::vec3(0.0f), 1.0f,
-                            std::span<glm::vec4>(rows, 3 * joints));
+                            std::span<glm::vec4>(points, joints));
     }
   }
   stats_.bytesUsed = uint64_t(stats_.entries) * entryBytes_;
 }
 
 bool MotionCacheCpu::pose(const glm::vec4& placement, const glm::vec4& motion,
-                          std::span<JointMatrix> out) const {
+                          std::span<JointPoint> out) const {
   if (capacity_ == 0) return false;
   int32_t slot =
       bucketSlot_[speedBucket(gpu_types::speedWeight(motion), options_.bucketWidth, bucketCount_)];
   if (slot < 0) return false;
   const size_t joints = static_cast<size_t>(pair_->jointCount());
-  const JointMatrix* cached =
+  const JointPoint* cached =
       &entries_[slot][size_t(cacheRow(gpu_types::cyclePhase(motion), rows_)) * joints];
-  float c = std::cos(placement.w), s = std::sin(placement.w),
-        scale = gpu_types::characterScale(motion);
-  for (size_t j = 0; j < joints; ++j) {
-    const JointMatrix& p = cached[j];
-    out[j].row0 = scale * (c * p.row0 + s * p.row2) + glm::vec4(0.0f, 0.0f, 0.0f, placement.x);
-    out[j].row1 = scale * p.row1 + glm::vec4(0.0f, 0.0f, 0.0f, placement.y);
-    out[j].row2 = scale * (c * p.row2 - s * p.row0) + glm::vec4(0.0f, 0.0f, 0.0f, placement.z);
-  }
+  const float scale = gpu_types::characterScale(motion);
+  for (size_t j = 0; j < joints; ++j)
+    out[j].positionRadius = placeCachedPoint(cached[j].positionRadius, placement, scale);
   return true;
 }
 
@@ -92,16 +88,15 @@ MotionCacheStats MotionCacheCpu::stats() const {
 }
 
 void poseCrowdCpuCached(const anim::MotionPair& pair, const MotionCacheCpu& cache,
-                        const crowd::Crowd& crowd, std::span<JointMatrix> out, unsigned threads) {
+                        const crowd::Crowd& crowd, std::span<JointPoint> out, unsigned threads) {
   const size_t joints = static_cast<size_t>(pair.jointCount());
-  THRONG_CHECK(out.size() >= crowd.size() * joints, "joint matrix output too small");
+  THRONG_CHECK(out.size() >= crowd.size() * joints, "joint point output too small");
   parallelFor(crowd.size(), threads, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
-      std::span<JointMatrix> mine = out.subspan(i * joints, joints);
+      std::span<JointPoint> mine = out.subspan(i * joints, joints);
       if (cache.pose(crowd.placement[i], crowd.motion[i], mine)) continue;
-      anim::poseCharacter(
-          pair, crowd.placement[i], crowd.motion[i],
-          std::span<glm::vec4>(reinterpret_cast<glm::vec4*>(mine.data()), 3 * joints));
+      anim::poseCharacter(pair, crowd.placement[i], crowd.motion[i],
+                          std::span<glm::vec4>(reinterpret_cast<glm::vec4*>(mine.data()), joints));
     }
   });
 }

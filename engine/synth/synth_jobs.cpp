@@ -25,7 +25,7 @@ static_assert(gpu_types::kRootMotionConstantJointCount == gpu_types::kPoseConsta
 // Specialization constants of synth_pose.comp (shaders/synth_bindings.h names the ids): the
 // joint count, each joint's parent, the bit masks of joints whose offsets change over frames
 // and of fixed bones (synth::fixedBones), whether LOD masks are used, each fixed bone's offset
-// xyz, length and the rotation aligning +y with it (xyzw) as float bits, the texels per uniform
+// xyz and length as float bits, the texels per uniform
 // block and whether the texels are read from the uniform buffers. Unused ids hold -1.
 std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t uniformCapacity,
                                          bool useMasks = false) {
@@ -50,10 +50,7 @@ std::vector<uint32_t> poseSpecialization(const anim::MotionPair& pair, uint32_t 
   std::vector<bool> fixed = fixedBones(pair);
   for (size_t j = 0; j < fixed.size(); ++j) {
     glm::vec3 offset = pair.slow.offset(0, int(j));
-    float length = glm::length(offset);
-    glm::vec4 align = alignYTo(length > 1e-6f ? offset / length : glm::vec3(0.0f, 1.0f, 0.0f));
-    float bone[gpu_types::kPoseBoneConstants] = {offset.x, offset.y, offset.z, length,
-                                                 align.x,  align.y,  align.z,  align.w};
+    float bone[gpu_types::kPoseBoneConstants] = {offset.x, offset.y, offset.z, glm::length(offset)};
     for (uint32_t c = 0; c < gpu_types::kPoseBoneConstants; ++c)
       values[gpu_types::kPoseConstantBones + gpu_types::kPoseBoneConstants * j + c] =
           fixed[j] ? std::bit_cast<uint32_t>(bone[c]) : 0u;
@@ -122,7 +119,7 @@ std::vector<std::string> CacheJob::validate() const {
   if (cache && !cache->options.enabled) problems.push_back("the cache is disabled");
   if (!data || !*data) problems.push_back("output 'data' (the cache entries) is missing");
   if (cache && data && *data &&
-      (uint64_t(cache->dataBase) * sizeof(JointMatrix) + cache->dataBytes()) > data->size())
+      (uint64_t(cache->dataBase) * sizeof(JointPoint) + cache->dataBytes()) > data->size())
     problems.push_back(concat("output 'data' holds ", data->size(), " bytes, the cache needs ",
                               cache->dataBytes(), " from matrix ", cache->dataBase));
   if (crowd && (firstCharacter > crowd->count ||
@@ -331,7 +328,7 @@ std::vector<std::string> PoseJob::validate() const {
       problems.push_back("chunk runs past the end of the crowd");
     if (characterList && (!listCounts || !dispatchArgs))
       problems.push_back("a 'characterList' needs its 'listCounts' and 'dispatchArgs'");
-    VkDeviceSize need = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
+    VkDeviceSize need = VkDeviceSize(count) * motion->jointCount * sizeof(JointPoint);
     if (jointsOffset + need > joints->size())
       problems.push_back(concat("output 'joints' holds ", joints->size(),
                                 " bytes, the chunk needs ", need, " at offset ", jointsOffset));
@@ -360,7 +357,7 @@ void PoseJob::record(VkCommandBuffer cmd, const SynthPrograms& programs) const {
   push.countIndex = countIndex;
   push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
   const gpu::Buffer& maskBuffer = masks ? *masks : programs.noList;
-  VkDeviceSize bytes = VkDeviceSize(count) * motion->jointCount * sizeof(JointMatrix);
+  VkDeviceSize bytes = VkDeviceSize(count) * motion->jointCount * sizeof(JointPoint);
   const gpu::Buffer& list = listed ? *characterList : programs.noList;
   const gpu::Buffer& counts = listed ? *listCounts : programs.noList;
   gpu::Binding bindings[] = {
@@ -398,7 +395,7 @@ std::vector<std::string> MaterializeCachedJob::validate() const {
   if (crowd && firstCharacter + characterCount > crowd->count)
     problems.push_back("chunk runs past the end of the crowd");
   if (cache && joints && *joints &&
-      jointsOffset + VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix) >
+      jointsOffset + VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointPoint) >
           joints->size())
     problems.push_back(
         concat("output 'joints' holds ", joints->size(), " bytes, too few for the chunk"));
@@ -413,7 +410,7 @@ void MaterializeCachedJob::record(VkCommandBuffer cmd, const SynthPrograms& prog
   push.jointCount = cache->jointCount;
   push.firstCharacter = firstCharacter;
   push.flags = masks ? gpu_types::kPoseUseMasks : 0u;
-  VkDeviceSize bytes = VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointMatrix);
+  VkDeviceSize bytes = VkDeviceSize(characterCount) * cache->jointCount * sizeof(JointPoint);
   gpu::Binding bindings[] = {
       gpu::storageBinding(gpu_types::kPoseCachedBindingPlacement, crowd->placement),
       gpu::storageBinding(gpu_types::kPoseCachedBindingMotion, crowd->motion),

@@ -88,11 +88,11 @@ bool recordRootMotionPrep(VkCommandBuffer cmd, const SynthPrograms& programs,
                           const crowd::CrowdBuffers& crowd, uint32_t first, uint32_t count,
                           anim::Steering steering, const anim::SpeedRetarget& retarget);
 
-// Blend + hierarchy + A = J·M on the GPU; twin: anim::poseCharacter.
+// Blend + hierarchy + joint points on the GPU; twin: anim::poseCharacter.
 struct PoseJob {
   const GpuMotionPair* motion = nullptr;       // input
   const crowd::CrowdBuffers* crowd = nullptr;  // input
-  const gpu::Buffer* joints = nullptr;         // output: JointMatrix per character per joint
+  const gpu::Buffer* joints = nullptr;         // output: JointPoint per character per joint
   uint32_t firstCharacter = 0;                 // the chunk [first, first + count)
   uint32_t characterCount = 0;                 // 0: every character from firstCharacter
   VkDeviceSize jointsOffset = 0;               // where the chunk's output starts in `joints`
@@ -109,15 +109,15 @@ struct PoseJob {
   void record(VkCommandBuffer cmd, const SynthPrograms& programs) const;
 };
 
-// The joint matrices of the cached characters of a chunk written into `joints` (A = M · P from
-// their poseSource entry). The frame does not need it: the renderer composes the same matrices;
-// tests and exports that want every matrix in one buffer do. Twin: MotionCacheCpu::pose.
+// The joint points of the cached characters of a chunk written into `joints` (M · p from their
+// poseSource entry). The frame does not need it: the renderer places the same points itself;
+// tests and exports that want every joint in one buffer do. Twin: MotionCacheCpu::pose.
 struct MaterializeCachedJob {
   const crowd::CrowdBuffers* crowd = nullptr;  // input: placement and scale
   const GpuMotionCache* cache = nullptr;       // input: the cached poses' layout
   const gpu::Buffer* cacheData = nullptr;      // input: the cached poses (makeCacheData)
   const gpu::Buffer* poseSource = nullptr;     // input: per character, from the cache classify pass
-  const gpu::Buffer* joints = nullptr;         // output: JointMatrix per character per joint
+  const gpu::Buffer* joints = nullptr;         // output: JointPoint per character per joint
   uint32_t firstCharacter = 0, characterCount = 0;
   VkDeviceSize jointsOffset = 0;
   const gpu::Buffer* masks = nullptr;  // optional: only the joints the LOD mask keeps

@@ -16,15 +16,16 @@ namespace throng::synth {
 
 namespace {
 
-// Joint origins and bone ends (y = 0 and 1 in a joint's draw space) of a pose.
+// Bone starts and ends (y = 0 and 1 in a joint's draw space) of a pose.
 void jointPoints(const anim::MotionPair& pair, const glm::vec4& placement, const glm::vec4& motion,
-                 std::vector<glm::vec4>& rows, std::vector<glm::vec3>& points) {
-  anim::poseCharacter(pair, placement, motion, rows);
+                 std::vector<glm::vec4>& pose, std::vector<glm::vec3>& points) {
+  anim::poseCharacter(pair, placement, motion, pose);
   points.clear();
-  for (size_t j = 0; 3 * j < rows.size(); ++j) {
-    std::span<const glm::vec4, 3> joint(rows.data() + 3 * j, 3);
-    points.push_back(anim::transformPoint(joint, glm::vec3(0.0f)));
-    points.push_back(anim::transformPoint(joint, glm::vec3(0.0f, 1.0f, 0.0f)));
+  for (size_t j = 0; j < pose.size(); ++j) {
+    const int parent = pair.parents[j];
+    const glm::vec4 from = parent < 0 ? pose[j] : pose[size_t(parent)];
+    points.push_back(gpu_types::bonePoint(from, pose[j], parent < 0, 0.0f));
+    points.push_back(gpu_types::bonePoint(from, pose[j], parent < 0, 1.0f));
   }
 }
 
@@ -35,13 +36,13 @@ float fastestAtWeight(const anim::MotionPair& pair, float w) {
   const int steps = 4 * std::max(frames, 1);
   const float dt = duration / float(steps);
   glm::vec4 placement(0.0f), motion = gpu_types::makeMotion(0.0f, w, w, 1.0f);
-  std::vector<glm::vec4> rows(size_t(3 * pair.jointCount()));
+  std::vector<glm::vec4> pose(size_t(pair.jointCount()));
   std::vector<glm::vec3> before, after;
-  jointPoints(pair, placement, motion, rows, before);
+  jointPoints(pair, placement, motion, pose, before);
   float fastest = 0.0f;
   for (int s = 0; s < steps; ++s) {
     anim::stepCharacter(pair, placement, motion, dt, anim::Steering::KeepHeading);
-    jointPoints(pair, placement, motion, rows, after);
+    jointPoints(pair, placement, motion, pose, after);
     for (size_t p = 0; p < after.size(); ++p)
       fastest = std::max(fastest, glm::length(after[p] - before[p]) / dt);
     std::swap(before, after);

@@ -45,18 +45,13 @@ std::vector<glm::vec3> clipWorldPositions(const Clip& clip, int frame) {
   return position;
 }
 
-// World joint positions from the draw matrices the renderer gets (the GPU passes' twin): a bone's
-// unit-space end (0,1,0) is its joint; the root is drawn as a sphere around it.
+// World joint positions from the joint points the renderer gets (the GPU passes' twin).
 std::vector<glm::vec3> synthesizedPositions(const MotionPair& pair, const glm::vec4& placement,
                                             const glm::vec4& motion) {
-  std::vector<glm::vec4> rows(size_t(3 * pair.jointCount()));
-  poseCharacter(pair, placement, motion, rows);
+  std::vector<glm::vec4> points(size_t(pair.jointCount()));
+  poseCharacter(pair, placement, motion, points);
   std::vector<glm::vec3> position;
-  for (int j = 0; j < pair.jointCount(); ++j) {
-    std::span<const glm::vec4, 3> m(&rows[size_t(3 * j)], 3);
-    position.push_back(
-        transformPoint(m, glm::vec3(0.0f, pair.parents[size_t(j)] < 0 ? 0.5f : 1.0f, 0.0f)));
-  }
+  for (const glm::vec4& point : points) position.push_back(glm::vec3(point));
   return position;
 }
 

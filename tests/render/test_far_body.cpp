@@ -76,7 +76,7 @@ FarComparison compareFar(uint32_t characters, const std::string& preset, uint32_
   scenario.characters = characters;
   scenario.seed = 5;
   const crowd::Crowd crowd = crowd::makeScenario(scenario);
-  std::vector<synth::JointMatrix> joints(crowd.size() * n);
+  std::vector<synth::JointPoint> joints(crowd.size() * n);
   synth::poseCrowdCpu(pair, crowd, joints, 2);
   const render::Camera camera = render::cameraPreset(preset, crowd::scenarioExtent(scenario));
   std::vector<synth::CoverageMask> masks(crowd.size());
@@ -90,9 +90,9 @@ FarComparison compareFar(uint32_t characters, const std::string& preset, uint32_
   const gpu_types::FrameUniforms frame = render::makeFrameUniforms(params);
   const float maxPixels = 24.0f;
   const render::SplatInputsCpu perJoint =
-      render::splatInputsCpu(joints, n, bones, masks, &levels, frame, maxPixels, 0.0f);
+      render::splatInputsCpu(joints, pair.parents, bones, masks, &levels, frame, maxPixels, 0.0f);
   const render::SplatInputsCpu withBodies =
-      render::splatInputsCpu(joints, n, bones, masks, &levels, frame, maxPixels);
+      render::splatInputsCpu(joints, pair.parents, bones, masks, &levels, frame, maxPixels);
   FarComparison out;
   out.bodies = withBodies.bodies.size();
   out.shortest = 1e9f;

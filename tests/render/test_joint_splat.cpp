@@ -99,7 +99,7 @@ TEST_CASE("SplatJob: chunks cover the crowd exactly") {
   uint32_t next = 0;
   for (auto& c : chunks) {
     CHECK(c.firstCharacter == next);
-    CHECK(c.characterCount * 25u * 48u <= (128u << 20));
+    CHECK(c.characterCount * 25u * sizeof(gpu_types::JointPoint) <= (128u << 20));
     next += c.characterCount;
   }
   CHECK(next == 100000);
@@ -110,9 +110,10 @@ namespace {
 
 const gpu_types::CoverageParts kNoLevels{};
 
-// One splat to check: a crowd's joint matrices (characters × joints) seen by a camera.
+// One splat to check: a crowd's joint points (characters × joints) seen by a camera.
 struct SplatCase {
-  std::span<const synth::JointMatrix> matrices;
+  std::span<const synth::JointPoint> points;
+  std::span<const int32_t> parents;  // the skeleton's, joints of them
   uint32_t joints = 0;
   render::Camera camera;
   uint64_t bones = ~uint64_t(0);
@@ -124,7 +125,7 @@ struct SplatCase {
   float maxPixels = 12.0f;
   uint32_t width = 320, height = 180;
   uint32_t chunkCharacters = 0;  // 0: chunks as the device's binding range makes them
-  size_t characters() const { return matrices.size() / joints; }
+  size_t characters() const { return points.size() / joints; }
 };
 
 // What one GPU splat left.
@@ -165,7 +166,7 @@ class GpuSplatRun {
     g.visibility = gpu::readback<uint64_t>(ctx_, visibility_, size_t(c_.width) * c_.height);
     // Each chunk's list of joints left to the graphics pipeline, from its first joint.
     const auto drawCommands = gpu::readback<uint32_t>(ctx_, draws_, chunks_.size() * 4);
-    const auto nearEntries = gpu::readback<uint32_t>(ctx_, nearList_, c_.matrices.size());
+    const auto nearEntries = gpu::readback<uint32_t>(ctx_, nearList_, c_.points.size());
     for (size_t k = 0; k < chunks_.size(); ++k) {
       const uint32_t first = chunks_[k].firstCharacter * c_.joints;
       for (uint32_t n = 0; n < drawCommands[4 * k]; ++n)
@@ -185,6 +186,8 @@ class GpuSplatRun {
     params.camera = c.camera;
     params.width = c.width;
     params.height = c.height;
+    params.jointCount = c.joints;
+    params.jointParents = c.parents;
     return render::makeFrameUniforms(params);
   }
 
@@ -194,13 +197,13 @@ class GpuSplatRun {
   }
 
   void makeBuffers() {
-    joints_ = gpu::makeStorageBuffer<synth::JointMatrix>(ctx_, c_.matrices);
+    joints_ = gpu::makeStorageBuffer<synth::JointPoint>(ctx_, c_.points);
     uniforms_ = gpu::Buffer(ctx_, sizeof(frame_), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                             gpu::MemoryUse::HostVisible);
     std::memcpy(uniforms_.mapped(), &frame_, sizeof(frame_));
     visibility_ = deviceBuffer(VkDeviceSize(c_.width) * c_.height * 8);
     draws_ = deviceBuffer(chunks_.size() * 16, VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT);
-    nearList_ = deviceBuffer(VkDeviceSize(c_.matrices.size()) * 4);
+    nearList_ = deviceBuffer(VkDeviceSize(c_.points.size()) * 4);
     // Bound where the flags leave a binding unread: a buffer no pass writes, so that chunks'
     // passes do not seem to read what earlier ones wrote.
     unread_ = deviceBuffer(16);
@@ -402,7 +405,7 @@ void checkLists(const SplatCase& c, const GpuSplat& g,
 void checkSplatTwin(const SplatCase& c) {
   GpuSplatRun run(c);
   const render::SplatInputsCpu drawn = render::splatInputsCpu(
-      c.matrices, c.joints, c.bones, c.masks, c.levels, run.frame(), c.maxPixels, c.farBodyPixels);
+      c.points, c.parents, c.bones, c.masks, c.levels, run.frame(), c.maxPixels, c.farBodyPixels);
   if (c.levels) checkFarBodies(c, drawn, run.frame());
   const GpuSplat perCharacter = run.splat(render::SplatWalk::PerCharacter);
   const GpuSplat perJoint = run.splat(render::SplatWalk::PerJoint);
@@ -435,10 +438,11 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
   options.seed = 3;
   crowd::Crowd crowd = crowd::makeScenario(options);
   const uint32_t joints = static_cast<uint32_t>(pair.jointCount());
-  std::vector<synth::JointMatrix> matrices(crowd.size() * joints);
-  synth::poseCrowdCpu(pair, crowd, matrices, 2);
+  std::vector<synth::JointPoint> points(crowd.size() * joints);
+  synth::poseCrowdCpu(pair, crowd, points, 2);
   SplatCase base;
-  base.matrices = matrices;
+  base.points = points;
+  base.parents = pair.parents;
   base.joints = joints;
   base.camera = render::cameraPreset("street", crowd::scenarioExtent(options));
   SUBCASE("every joint") {

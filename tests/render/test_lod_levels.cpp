@@ -62,10 +62,9 @@ gpu_types::FrameUniforms frameOf(const render::Camera& camera) {
   return render::makeFrameUniforms(params);
 }
 
-// A joint's point: the end of its bone (the root's centre).
-glm::vec3 jointPoint(const synth::JointMatrix& a, uint32_t j) {
-  const float p = j == 0 ? 0.5f : 1.0f;
-  return {a.row0.y * p + a.row0.w, a.row1.y * p + a.row1.w, a.row2.y * p + a.row2.w};
+// A joint's position: the end of its bone (the root's centre).
+glm::vec3 jointPoint(const synth::JointPoint& a) {
+  return glm::vec3(a.positionRadius);
 }
 
 bool isDrawn(const synth::JointMatrix& a) {
@@ -74,12 +73,12 @@ bool isDrawn(const synth::JointMatrix& a) {
 
 // The figure's height on screen in pixels (its joints' vertical extent); 0 when any joint is
 // behind the camera or every joint is off screen.
-float screenHeight(const gpu_types::FrameUniforms& frame, const synth::JointMatrix* joints,
+float screenHeight(const gpu_types::FrameUniforms& frame, const synth::JointPoint* joints,
                    uint32_t count) {
   float lo = 1e30f, hi = -1e30f;
   bool onScreen = false;
   for (uint32_t j = 0; j < count; ++j) {
-    glm::vec4 clip = frame.viewProjection * glm::vec4(jointPoint(joints[j], j), 1.0f);
+    glm::vec4 clip = frame.viewProjection * glm::vec4(jointPoint(joints[j]), 1.0f);
     if (clip.w <= 0.1f) return 0.0f;
     glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(kW, kH);
     onScreen = onScreen || (pixel.x >= 0 && pixel.x < kW && pixel.y >= 0 && pixel.y < kH);
@@ -128,14 +127,16 @@ TEST_CASE("bones: a ground-level root and the segment up to the pelvis are place
     crowd.motion[i] = glm::vec4(float(i) / 12.0f, float(i % 2), float(i % 2), 1.0f);
   }
   const uint32_t n = bandai.jointCount;
-  std::vector<synth::JointMatrix> joints(crowd.size() * n);
+  std::vector<synth::JointPoint> joints(crowd.size() * n);
   synth::poseCrowdCpu(bandai.pair, crowd, joints, 1);
-  std::vector<synth::JointMatrix> drawn = render::drawnJointMatrices(joints, n, bandai.bones);
-  std::vector<synth::JointMatrix> unmasked = render::drawnJointMatrices(joints, n, ~uint64_t(0));
+  std::vector<synth::JointMatrix> drawn =
+      render::drawnJointMatrices(joints, bandai.pair.parents, bandai.bones);
+  std::vector<synth::JointMatrix> unmasked =
+      render::drawnJointMatrices(joints, bandai.pair.parents, ~uint64_t(0));
   auto lowestBelowPelvis = [&](const std::vector<synth::JointMatrix>& matrices) {
     float worst = -1e30f;  // how far the lowest non-leg ellipsoid reaches under pelvis − 0.4 m
     for (size_t c = 0; c < crowd.size(); ++c) {
-      const float pelvisY = jointPoint(joints[c * n + uint32_t(hips)], uint32_t(hips)).y;
+      const float pelvisY = jointPoint(joints[c * n + uint32_t(hips)]).y;
       for (uint32_t j = 0; j < n; ++j) {
         const synth::JointMatrix& a = matrices[c * n + j];
         if (((legs >> j) & 1u) || !isDrawn(a)) continue;
@@ -192,10 +193,10 @@ TEST_CASE(
       const render::Camera camera = render::cameraPreset(preset, crowd::scenarioExtent(options));
       std::vector<synth::CoverageMask> masks(crowd.size());
       synth::coverageCpu(lodCamera(camera), body.levels, n, crowd, {}, masks, {});
-      std::vector<synth::JointMatrix> joints(crowd.size() * n);
+      std::vector<synth::JointPoint> joints(crowd.size() * n);
       synth::poseCrowdCpu(body.pair, crowd, joints, 2);
       const std::vector<synth::JointMatrix> drawn =
-          render::drawnJointMatrices(joints, n, body.bones, masks, &body.levels);
+          render::drawnJointMatrices(joints, body.pair.parents, body.bones, masks, &body.levels);
       const gpu_types::FrameUniforms frame = frameOf(camera);
       size_t tall = 0, missing = 0, levels[3] = {0, 0, 0}, synthesized = 0, sprites = 0;
       for (size_t c = 0; c < crowd.size(); ++c) {
@@ -334,7 +335,7 @@ TEST_CASE("LOD: the far and mid levels' silhouettes cover the full level's pixel
       crowd.placement[i] = glm::vec4(0.0f, 0.0f, 0.0f, 0.8f * float(i % 8));
       crowd.motion[i] = glm::vec4(float(i) / 24.0f, float(i % 3) / 2.0f, 0.0f, 1.0f);
     }
-    std::vector<synth::JointMatrix> joints(crowd.size() * n);
+    std::vector<synth::JointPoint> joints(crowd.size() * n);
     synth::poseCrowdCpu(body.pair, crowd, joints, 2);
     size_t full = 0, covered = 0, baseCovered = 0;
     double worst = 1.0;
@@ -344,17 +345,18 @@ TEST_CASE("LOD: the far and mid levels' silhouettes cover the full level's pixel
                                        uint32_t(body.parts.baseMask >> 32), gpu_types::kLevelNear,
                                        0u};
     for (size_t c = 0; c < crowd.size(); ++c) {
-      std::span<const synth::JointMatrix> one(&joints[c * n], n);
-      auto fullLevel = render::drawnJointMatrices(
-          one, n, body.bones, levelMasks(body.levels, 1, gpu_types::kLevelNear), &body.levels);
-      auto lower = render::drawnJointMatrices(one, n, body.bones, levelMasks(body.levels, 1, level),
-                                              &body.levels);
+      std::span<const synth::JointPoint> one(&joints[c * n], n);
+      auto fullLevel = render::drawnJointMatrices(one, body.pair.parents, body.bones,
+                                                  levelMasks(body.levels, 1, gpu_types::kLevelNear),
+                                                  &body.levels);
+      auto lower = render::drawnJointMatrices(one, body.pair.parents, body.bones,
+                                              levelMasks(body.levels, 1, level), &body.levels);
       auto a = render::splatJointsCpu(fullLevel, frame, n, 1e9f, kW, kH).visibility;
       auto b = render::splatJointsCpu(lower, frame, n, 1e9f, kW, kH).visibility;
       auto base =
-          render::splatJointsCpu(
-              render::drawnJointMatrices(one, n, body.bones, std::span(&baseOnly, 1), &body.levels),
-              frame, n, 1e9f, kW, kH)
+          render::splatJointsCpu(render::drawnJointMatrices(one, body.pair.parents, body.bones,
+                                                            std::span(&baseOnly, 1), &body.levels),
+                                 frame, n, 1e9f, kW, kH)
               .visibility;
       size_t f = 0, both = 0;
       for (size_t p = 0; p < a.size(); ++p) {

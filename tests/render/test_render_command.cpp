@@ -15,6 +15,7 @@
 #include "core/image.h"
 #include "crowd/trajectories.h"
 #include "gpu_fixture.h"
+#include "synth/gpu_types.h"
 #include "test_support.h"
 
 using namespace throng;
@@ -141,11 +142,13 @@ TEST_CASE("render: options past the device's limits name the option and the limi
     cases.push_back({"-n 10 --cache --cache-budget " + budget, "--cache-budget " + budget + ": ",
                      "maxStorageBufferRange"});
   }
-  // 4M characters' joint matrices (25 joints of 48 bytes) outgrow one buffer or heap here.
+  // 4M characters' joint points (25 joints of 16 bytes) outgrow one buffer or heap here, or
+  // the list of their joints (4 bytes each) one storage binding.
   const uint64_t largestBuffer = info.maxBufferSize > 0
                                      ? std::min(info.maxBufferSize, info.deviceLocalBytes)
                                      : info.deviceLocalBytes;
-  if (uint64_t(4000000) * 25 * 48 > largestBuffer)
+  if (uint64_t(4000000) * 25 * sizeof(throng::gpu_types::JointPoint) > largestBuffer ||
+      uint64_t(4000000) * 25 * sizeof(uint32_t) > info.maxStorageBufferRange)
     cases.push_back({"-n 4000000", "-n 4000000: ", ""});
   for (const Case& c : cases) {
     test::CommandResult run =

@@ -67,7 +67,7 @@ struct GpuRun {
 // Runs coverage.comp over `crowd` in `chunks` dispatches (joints bound per chunk at an offset).
 GpuRun runGpu(const synth::CoverageCamera& camera, const synth::CoverageParts& partsBlock,
               uint32_t jointCount, const crowd::Crowd& crowd,
-              std::span<const synth::JointMatrix> joints, std::span<const CoverageMask> previous,
+              std::span<const synth::JointPoint> joints, std::span<const CoverageMask> previous,
               uint32_t chunks = 1) {
   gpu::Context& ctx = test::gpuContext();
   const uint32_t n = uint32_t(crowd.size());
@@ -93,7 +93,7 @@ GpuRun runGpu(const synth::CoverageCamera& camera, const synth::CoverageParts& p
                              jointCount,
                              first,
                              std::min(per, n - first),
-                             VkDeviceSize(first) * jointCount * sizeof(synth::JointMatrix)};
+                             VkDeviceSize(first) * jointCount * sizeof(synth::JointPoint)};
       job.record(cmd, program);
     }
   });
@@ -151,7 +151,8 @@ TEST_CASE("CoverageJob: buffers too small for the chunk are reported") {
   gpu::Buffer parts(ctx, sizeof(synth::CoverageParts), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                     gpu::MemoryUse::HostVisible);
   gpu::Buffer masks(ctx, 16 * 8, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
-  gpu::Buffer joints(ctx, 48 * 25 * 5, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer joints(ctx, sizeof(synth::JointPoint) * 25 * 5, gpu::kStorageUsage,
+                     gpu::MemoryUse::DeviceLocal);
   gpu::Buffer areas(ctx, 20 * 4, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
   synth::CoverageJob job{&buffers, &parts, &joints, &masks, &areas};
   job.jointCount = 25;
@@ -159,7 +160,7 @@ TEST_CASE("CoverageJob: buffers too small for the chunk are reported") {
   REQUIRE(problems.size() == 3);
   CHECK(problems[0].find("'masks' holds 128 bytes, characters up to 10 need 160") !=
         std::string::npos);
-  CHECK(problems[1].find("'joints' holds 6000 bytes, the chunk needs 12000") != std::string::npos);
+  CHECK(problems[1].find("'joints' holds 2000 bytes, the chunk needs 4000") != std::string::npos);
   CHECK(problems[2].find("'areas' holds 80 bytes") != std::string::npos);
   job.characterCount = 4;  // characters 0..3 fit everything
   CHECK(job.validate().empty());
@@ -171,7 +172,7 @@ TEST_CASE("coverage: GPU vs CPU twin on 1000 random characters (joint centres an
   const DefaultBody& body = defaultBody();
   const uint32_t jointCount = uint32_t(body.pair.jointCount());
   crowd::Crowd crowd = randomCrowd(1000, 42, -20.0f, 180.0f);
-  std::vector<synth::JointMatrix> joints(crowd.size() * jointCount);
+  std::vector<synth::JointPoint> joints(crowd.size() * jointCount);
   synth::poseCrowdCpu(body.pair, crowd, joints, 2);
   // Random previous masks: centres come from the joints where the centre joint was active.
   std::mt19937 rng(7);
@@ -187,9 +188,9 @@ TEST_CASE("coverage: GPU vs CPU twin on 1000 random characters (joint centres an
       lookCamera(glm::vec3(0.0f, 6.0f, -10.0f), glm::vec3(0.0f, 1.0f, 40.0f));
   synth::CoverageParts parts = synth::makeCoverageParts(body.parts, {});
   for (bool withJoints : {true, false}) {
-    std::span<const synth::JointMatrix> used = withJoints
-                                                   ? std::span<const synth::JointMatrix>(joints)
-                                                   : std::span<const synth::JointMatrix>();
+    std::span<const synth::JointPoint> used = withJoints
+                                                  ? std::span<const synth::JointPoint>(joints)
+                                                  : std::span<const synth::JointPoint>();
     std::vector<CoverageMask> cpuMasks = previous;
     std::vector<float> cpuAreas(crowd.size() * 5);
     synth::coverageCpu(camera, parts, jointCount, crowd, used, cpuMasks, cpuAreas);
@@ -231,14 +232,12 @@ TEST_CASE(
   crowd::Crowd crowd = randomCrowd(700, 9, 1.0f, 120.0f);
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-  std::vector<synth::JointMatrix> joints(crowd.size() * jointCount);
+  std::vector<synth::JointPoint> joints(crowd.size() * jointCount);
   for (size_t i = 0; i < crowd.size(); ++i)
     for (uint32_t j = 0; j < jointCount; ++j) {
       glm::vec3 p = glm::vec3(crowd.placement[i]) +
                     glm::vec3(0.4f * u(rng), 1.0f + 0.6f * u(rng), 0.4f * u(rng));
-      joints[i * jointCount + j] = {glm::vec4(u(rng), 0.1f * u(rng), u(rng), p.x),
-                                    glm::vec4(u(rng), 0.1f * u(rng), u(rng), p.y),
-                                    glm::vec4(u(rng), 0.1f * u(rng), u(rng), p.z)};
+      joints[i * jointCount + j] = {glm::vec4(p, 0.05f + 0.02f * u(rng))};
     }
   std::vector<CoverageMask> previous(crowd.size());
   for (CoverageMask& m : previous) m = {uint32_t(rng()), uint32_t(rng()), 0u, 0u};
@@ -272,7 +271,7 @@ TEST_CASE("coverage: the three levels at 5 m, 15 m and 40 m (default camera and 
     crowd.placement[i] = glm::vec4(0.0f, 0.0f, distances[i], 3.14159265f);  // facing the camera
     crowd.motion[i] = glm::vec4(0.3f, 0.5f, 0.5f, 1.0f);
   }
-  std::vector<synth::JointMatrix> joints(3 * jointCount);
+  std::vector<synth::JointPoint> joints(3 * jointCount);
   synth::poseCrowdCpu(body.pair, crowd, joints, 1);
   // Near: all 25; mid: all but the two fingers; far: also without the toes (drawn fewer still).
   const int expectedJoints[] = {25, 23, 21};
@@ -282,12 +281,12 @@ TEST_CASE("coverage: the three levels at 5 m, 15 m and 40 m (default camera and 
     std::vector<CoverageMask> masks(3, CoverageMask{~0u, ~0u, 0u, 0u});
     std::vector<float> areas(15);
     synth::coverageCpu(camera, parts, jointCount, crowd,
-                       withJoints ? std::span<const synth::JointMatrix>(joints)
-                                  : std::span<const synth::JointMatrix>(),
+                       withJoints ? std::span<const synth::JointPoint>(joints)
+                                  : std::span<const synth::JointPoint>(),
                        masks, areas);
     GpuRun gpuRun = runGpu(camera, parts, jointCount, crowd,
-                           withJoints ? std::span<const synth::JointMatrix>(joints)
-                                      : std::span<const synth::JointMatrix>(),
+                           withJoints ? std::span<const synth::JointPoint>(joints)
+                                      : std::span<const synth::JointPoint>(),
                            std::vector<CoverageMask>(3, CoverageMask{~0u, ~0u, 0u, 0u}));
     for (size_t i = 0; i < 3; ++i) {
       CAPTURE(distances[i]);
@@ -357,7 +356,7 @@ TEST_CASE("coverage: GPU time for 100k characters (timestamps)") {
   gpu::Buffer parts(ctx, sizeof(partsBlock), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                     gpu::MemoryUse::HostVisible);
   std::memcpy(parts.mapped(), &partsBlock, sizeof(partsBlock));
-  const VkDeviceSize jointBytes = VkDeviceSize(n) * jointCount * sizeof(synth::JointMatrix);
+  const VkDeviceSize jointBytes = VkDeviceSize(n) * jointCount * sizeof(synth::JointPoint);
   const bool jointsFit = jointBytes <= ctx.info().maxStorageBufferRange;
   gpu::Buffer joints(ctx, jointsFit ? jointBytes : 16, gpu::kStorageUsage,
                      gpu::MemoryUse::DeviceLocal);

@@ -101,9 +101,10 @@ TEST_CASE("crowd groups: three clip sets over one set of buffers equal the CPU t
   auto programs = groupPrograms(g);
   const std::vector<const synth::SynthPrograms*> used = pointers(programs);
   // A small binding limit: several pose chunks per group.
-  const VkDeviceSize chunkBytes = VkDeviceSize(96) * g.pairs[0].jointCount() * 48;
+  const VkDeviceSize chunkBytes =
+      VkDeviceSize(96) * g.pairs[0].jointCount() * sizeof(synth::JointPoint);
   const float dt = 1 / 30.0f;
-  std::vector<synth::JointMatrix> cpuJoints(size_t(n) * g.pairs[0].jointCount());
+  std::vector<synth::JointPoint> cpuJoints(size_t(n) * g.pairs[0].jointCount());
   for (int f = 0; f < 4; ++f) {
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       synth::recordSynthesis(cmd, used, gpuSynth, dt, chunkBytes);
@@ -113,11 +114,11 @@ TEST_CASE("crowd groups: three clip sets over one set of buffers equal the CPU t
   }
   for (size_t k = 0; k < g.pairs.size(); ++k)
     synth::poseCrowdCpu(g.pairs[k], cpu, {g.first[k], g.first[k + 1] - g.first[k]}, cpuJoints, 2);
-  auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, cpuJoints.size());
+  auto gpuJoints = gpu::readback<synth::JointPoint>(ctx, gpuSynth.joints, cpuJoints.size());
   crowd::Crowd gpuCrowd;
   crowd::downloadCrowd(ctx, gpuSynth.crowd, gpuCrowd);
-  const float joints =
-      test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12);
+  const float joints = test::maxAbsDifference(&gpuJoints[0].positionRadius.x,
+                                              &cpuJoints[0].positionRadius.x, cpuJoints.size() * 4);
   const float placement =
       test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpu.placement[0].x, size_t(n) * 4);
   MESSAGE("three groups, 4 frames: max |GPU - CPU| joints ", joints, ", placement ", placement);
@@ -125,11 +126,11 @@ TEST_CASE("crowd groups: three clip sets over one set of buffers equal the CPU t
   CHECK(placement <= 1e-4f);
   // The groups really animate differently: the walk group's pelvis height differs from the
   // run group's twin output evaluated with the wrong pair.
-  std::vector<synth::JointMatrix> wrongPair(cpuJoints.size());
+  std::vector<synth::JointPoint> wrongPair(cpuJoints.size());
   synth::poseCrowdCpu(g.pairs[0], cpu, {g.first[1], g.first[2] - g.first[1]}, wrongPair, 2);
   const size_t from = size_t(g.first[1]) * g.pairs[0].jointCount();
-  CHECK(test::maxAbsDifference(&wrongPair[from].row0.x, &cpuJoints[from].row0.x,
-                               (size_t(g.first[2] - g.first[1])) * g.pairs[0].jointCount() * 12) >
+  CHECK(test::maxAbsDifference(&wrongPair[from].positionRadius.x, &cpuJoints[from].positionRadius.x,
+                               (size_t(g.first[2] - g.first[1])) * g.pairs[0].jointCount() * 4) >
         0.01f);
   CHECK(ctx.validationMessageCount() == 0);
 }
@@ -195,7 +196,7 @@ TEST_CASE("crowd groups with the motion cache: cached characters stay cached, pe
   auto sources = gpu::readback<uint32_t>(ctx, gpuSynth.poseSource, n);
   for (size_t k = 0; k < g.pairs.size(); ++k) {
     const synth::GpuMotionCache& c = gpuSynth.groups[k].cache;
-    const uint64_t begin = c.dataBase, end = begin + c.dataBytes() / 48;
+    const uint64_t begin = c.dataBase, end = begin + c.dataBytes() / sizeof(synth::JointPoint);
     for (uint32_t i = g.first[k]; i < g.first[k + 1]; ++i) {
       REQUIRE(sources[i] != gpu_types::kPoseInJoints);
       REQUIRE(sources[i] >= begin);
@@ -208,16 +209,16 @@ TEST_CASE("crowd groups with the motion cache: cached characters stay cached, pe
   crowd::Crowd state;
   crowd::downloadCrowd(ctx, gpuSynth.crowd, state);
   const size_t joints = g.pairs[0].jointCount();
-  std::vector<synth::JointMatrix> atRows(size_t(n) * joints);
+  std::vector<synth::JointPoint> atRows(size_t(n) * joints);
   for (size_t k = 0; k < g.pairs.size(); ++k) {
     const uint32_t rows = gpuSynth.groups[k].cache.rowCount;
     crowd::Crowd rowed = state;
     for (glm::vec4& m : rowed.motion) m.x = synth::cacheRowPhase(synth::cacheRow(m.x, rows), rows);
     synth::poseCrowdCpu(g.pairs[k], rowed, {g.first[k], g.first[k + 1] - g.first[k]}, atRows, 2);
   }
-  auto materialized = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, atRows.size());
-  const float worst =
-      test::maxAbsDifference(&materialized[0].row0.x, &atRows[0].row0.x, atRows.size() * 12);
+  auto materialized = gpu::readback<synth::JointPoint>(ctx, gpuSynth.joints, atRows.size());
+  const float worst = test::maxAbsDifference(&materialized[0].positionRadius.x,
+                                             &atRows[0].positionRadius.x, atRows.size() * 4);
   const synth::MotionCacheStats stats = synth::readCacheStats(gpuSynth);
   MESSAGE("three cached groups: max |GPU - CPU at the cache rows| ", worst, "; misses ",
           stats.misses, ", hits ", stats.hits);
@@ -266,10 +267,10 @@ TEST_CASE("crowd groups over a small cache budget: each group's FIFO equals its 
   gpu::Context& ctx = test::gpuContext();
   const uint32_t n = 600;
   Groups g = threeGroups(n);
-  // 3 MB per set holds 4 to 7 of the 21 buckets: the slow speeds' six buckets do not all fit
+  // 1 MB per set holds 4 to 7 of the 21 buckets: the slow speeds' six buckets do not all fit
   // (misses that stay uncached), and as the characters move to fast targets at their cycle
   // ends, entries of slow buckets no longer in use are evicted.
-  synth::MotionCacheOptions cache{true, 0.05f, 3ull << 20};
+  synth::MotionCacheOptions cache{true, 0.05f, 1ull << 20};
   crowd::Crowd cpu = groupCrowd(n);
   Rng rng(7);
   for (glm::vec4& m : cpu.motion) {
@@ -300,7 +301,7 @@ TEST_CASE("crowd groups over a small cache budget: each group's FIFO equals its 
       CHECK(a.misses == b.misses);
       CHECK(a.evictions == b.evictions);
       CHECK(a.entries == b.entries);
-      std::vector<synth::JointMatrix> scratch(g.pairs[k].jointCount());
+      std::vector<synth::JointPoint> scratch(g.pairs[k].jointCount());
       for (uint32_t i = first; i < end; ++i)
         REQUIRE((sources[i] != gpu_types::kPoseInJoints) ==
                 twins[k].pose(part.placement[i - first], part.motion[i - first], scratch));

@@ -133,7 +133,7 @@ TEST_CASE(
   synth::SynthPrograms programs(ctx, pair);
   synth::CrowdSynth gpu = synth::makeCrowdSynth(ctx, pair, crowd, options);
   REQUIRE(gpu.front().cache.capacity == 2);
-  std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
+  std::vector<synth::JointPoint> cpuJoints(crowd.size() * pair.jointCount());
   for (const Step& step : script) {
     crowd = crowdAt(step.speeds, 64);
     gpu::uploadBytes(
@@ -159,18 +159,18 @@ TEST_CASE(
     // Cached output: GPU equals the CPU twin, and both equal plain synthesis at that speed and
     // the phase of the cache row shown (characters whose bucket stayed uncached: at their own).
     synth::poseCrowdCpuCached(pair, cpu, crowd, cpuJoints, 2);
-    std::vector<synth::JointMatrix> direct(cpuJoints.size());
+    std::vector<synth::JointPoint> direct(cpuJoints.size());
     crowd::Crowd shown = atCacheRows(crowd, cpu.rows());
-    std::vector<synth::JointMatrix> probeJoints(pair.jointCount());
+    std::vector<synth::JointPoint> probeJoints(pair.jointCount());
     for (size_t i = 0; i < crowd.size(); ++i)
       if (!cpu.pose(crowd.placement[i], crowd.motion[i], probeJoints))
         shown.motion[i] = crowd.motion[i];
     synth::poseCrowdCpu(pair, shown, direct, 2);
-    auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpu.joints, cpuJoints.size());
-    CHECK(test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x,
-                                 cpuJoints.size() * 12) <= 1e-4f);
-    CHECK(test::maxAbsDifference(&direct[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12) <=
-          1e-4f);
+    auto gpuJoints = gpu::readback<synth::JointPoint>(ctx, gpu.joints, cpuJoints.size());
+    CHECK(test::maxAbsDifference(&gpuJoints[0].positionRadius.x, &cpuJoints[0].positionRadius.x,
+                                 cpuJoints.size() * 4) <= 1e-4f);
+    CHECK(test::maxAbsDifference(&direct[0].positionRadius.x, &cpuJoints[0].positionRadius.x,
+                                 cpuJoints.size() * 4) <= 1e-4f);
   }
   CHECK(ctx.validationMessageCount() == 0);
 }
@@ -204,16 +204,16 @@ TEST_CASE(
     synth::recordMaterializeCachedPoses(cmd, programs, cached, 1u << 27);
   });
   size_t n = crowd.size() * pair.jointCount();
-  auto a = gpu::readback<synth::JointMatrix>(ctx, cached.joints, n);
-  auto b = gpu::readback<synth::JointMatrix>(ctx, plain.joints, n);
+  auto a = gpu::readback<synth::JointPoint>(ctx, cached.joints, n);
+  auto b = gpu::readback<synth::JointPoint>(ctx, plain.joints, n);
   // The cache shows the row nearest each phase: equal to the CPU twin synthesizing at that
   // row's phase, and within half a row's motion (1/960 s) of the continuous pose.
   crowd::Crowd state;
   crowd::downloadCrowd(ctx, cached.crowd, state);
-  std::vector<synth::JointMatrix> atRows(n);
+  std::vector<synth::JointPoint> atRows(n);
   synth::poseCrowdCpu(pair, atCacheRows(state, cached.front().cache.rowCount), atRows, 2);
-  float worst = test::maxAbsDifference(&a[0].row0.x, &atRows[0].row0.x, n * 12);
-  float offRow = test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12);
+  float worst = test::maxAbsDifference(&a[0].positionRadius.x, &atRows[0].positionRadius.x, n * 4);
+  float offRow = test::maxAbsDifference(&a[0].positionRadius.x, &b[0].positionRadius.x, n * 4);
   synth::MotionCacheStats stats = synth::readCacheStats(cached);
   MESSAGE("cache vs synthesis at the cache rows over 5 frames: max diff ", worst,
           "; vs the continuous phase ", offRow, "; hits ", stats.hits, " misses ", stats.misses,

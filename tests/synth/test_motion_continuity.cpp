@@ -125,12 +125,10 @@ TEST_CASE(
 namespace {
 // Mean over joints of how far each joint's drawn position moves in one frame, the character
 // held at the origin (root motion left out) so only the pose counts.
-float poseMotion(const std::vector<synth::JointMatrix>& a,
-                 const std::vector<synth::JointMatrix>& b) {
+float poseMotion(const std::vector<synth::JointPoint>& a, const std::vector<synth::JointPoint>& b) {
   float sum = 0.0f;
   for (size_t j = 0; j < a.size(); ++j) {
-    glm::vec3 pa(a[j].row0.w, a[j].row1.w, a[j].row2.w), pb(b[j].row0.w, b[j].row1.w, b[j].row2.w);
-    sum += glm::length(pa - pb);
+    sum += glm::length(glm::vec3(a[j].positionRadius) - glm::vec3(b[j].positionRadius));
   }
   return sum / float(a.size());
 }
@@ -150,7 +148,7 @@ Playback playBack(const anim::MotionPair& pair, float w, float fps) {
   crowd.motion[0] = glm::vec4(0.0f, w, w, 1.0f);
   const glm::vec4 origin(0.0f);
   const size_t joints = size_t(pair.jointCount());
-  std::vector<synth::JointMatrix> cachedBefore(joints), cachedNow(joints), plainBefore(joints),
+  std::vector<synth::JointPoint> cachedBefore(joints), cachedNow(joints), plainBefore(joints),
       plainNow(joints);
   std::vector<float> cachedSteps, plainSteps;
   for (int f = 0; f <= int(5.0f * fps); ++f) {
@@ -212,7 +210,7 @@ TEST_CASE(
     synth::SynthPrograms programs(ctx, pair);
     synth::CrowdSynth gpu = synth::makeCrowdSynth(ctx, pair, cpu);
     const size_t n = cpu.size() * size_t(pair.jointCount());
-    std::vector<synth::JointMatrix> cpuJoints(n);
+    std::vector<synth::JointPoint> cpuJoints(n);
     std::vector<std::vector<float>> gpuSteps(3);
     crowd::Crowd before = cpu;
     float worstJoints = 0.0f, worstPlacement = 0.0f;
@@ -224,9 +222,10 @@ TEST_CASE(
       synth::poseCrowdCpu(pair, cpu, cpuJoints, 1);
       crowd::Crowd now;
       crowd::downloadCrowd(ctx, gpu.crowd, now);
-      auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpu.joints, n);
-      worstJoints = std::max(
-          worstJoints, test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, n * 12));
+      auto gpuJoints = gpu::readback<synth::JointPoint>(ctx, gpu.joints, n);
+      worstJoints =
+          std::max(worstJoints, test::maxAbsDifference(&gpuJoints[0].positionRadius.x,
+                                                       &cpuJoints[0].positionRadius.x, n * 4));
       worstPlacement = std::max(
           worstPlacement, test::maxAbsDifference(&now.placement[0].x, &cpu.placement[0].x, 12));
       for (size_t i = 0; i < 3; ++i) {

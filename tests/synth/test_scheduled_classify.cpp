@@ -97,7 +97,8 @@ TEST_CASE("scheduled classify: GPU equals the twin step by step, and no pose sou
   synth::SynthPrograms programs(ctx, pair);
   const synth::SynthPrograms* used[] = {&programs};
   const uint32_t poseChunk = 1000;  // five pose chunks
-  const VkDeviceSize bindingBytes = VkDeviceSize(poseChunk) * pair.jointCount() * 48;
+  const VkDeviceSize bindingBytes =
+      VkDeviceSize(poseChunk) * pair.jointCount() * sizeof(synth::JointPoint);
   synth::ClassifySchedulePush push{};
   push.characterCount = uint32_t(crowd.size());
   push.rowCount = cache.rowCount;

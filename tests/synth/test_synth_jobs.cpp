@@ -35,9 +35,9 @@ Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd
   synth::SynthPrograms programs(ctx, pair);
   GpuCrowdRun run{synth::uploadMotionPair(ctx, pair), crowd::uploadCrowd(ctx, cpuCrowd), {}};
   const size_t jointCount = cpuCrowd.size() * pair.jointCount();
-  run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointMatrix), gpu::kStorageUsage,
+  run.joints = gpu::Buffer(ctx, jointCount * sizeof(synth::JointPoint), gpu::kStorageUsage,
                            gpu::MemoryUse::DeviceLocal);
-  std::vector<synth::JointMatrix> cpuJoints(jointCount);
+  std::vector<synth::JointPoint> cpuJoints(jointCount);
   Comparison worst;
   for (int f = 0; f < frames; ++f) {
     synth::RootMotionJob root{&run.motion, &pair, &run.crowd, 0, 0, dt, cpuCrowd.steering};
@@ -49,12 +49,12 @@ Comparison compareGpuWithCpu(const anim::MotionPair& pair, crowd::Crowd cpuCrowd
     });
     synth::stepCrowdCpu(pair, cpuCrowd, dt, 2);
     synth::poseCrowdCpu(pair, cpuCrowd, cpuJoints, 2);
-    auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, run.joints, jointCount);
+    auto gpuJoints = gpu::readback<synth::JointPoint>(ctx, run.joints, jointCount);
     crowd::Crowd gpuCrowd;
     crowd::downloadCrowd(ctx, run.crowd, gpuCrowd);
-    worst.joints = std::max(
-        worst.joints,
-        test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, jointCount * 12));
+    worst.joints = std::max(worst.joints,
+                            test::maxAbsDifference(&gpuJoints[0].positionRadius.x,
+                                                   &cpuJoints[0].positionRadius.x, jointCount * 4));
     worst.placement = std::max(
         worst.placement, test::maxAbsDifference(&gpuCrowd.placement[0].x, &cpuCrowd.placement[0].x,
                                                 cpuCrowd.size() * 4));
@@ -85,11 +85,12 @@ TEST_CASE("PoseJob: an output buffer too small for the chunk is reported") {
   crowd::Crowd crowd;
   crowd.resize(10);
   crowd::CrowdBuffers buffers = crowd::uploadCrowd(ctx, crowd);
-  gpu::Buffer small(ctx, 48 * 8 * 5, gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  gpu::Buffer small(ctx, sizeof(synth::JointPoint) * 8 * 5, gpu::kStorageUsage,
+                    gpu::MemoryUse::DeviceLocal);
   synth::PoseJob job{&motion, &buffers, &small};
   auto problems = job.validate();
   REQUIRE(problems.size() == 1);
-  CHECK(problems[0].find("holds 1920 bytes") != std::string::npos);
+  CHECK(problems[0].find("holds 640 bytes") != std::string::npos);
   job.characterCount = 5;
   CHECK(job.validate().empty());
   job.firstCharacter = 8;
@@ -219,19 +220,18 @@ TEST_CASE("recordSynthesis (the frame orchestrator) matches the CPU twin on the 
   synth::SynthPrograms programs(ctx, pair);
   synth::CrowdSynth gpuSynth = synth::makeCrowdSynth(ctx, pair, crowd);
   // A small binding limit forces several pose chunks.
-  const VkDeviceSize chunkBytes =
-      VkDeviceSize(128) * pair.jointCount() * sizeof(synth::JointMatrix);
+  const VkDeviceSize chunkBytes = VkDeviceSize(128) * pair.jointCount() * sizeof(synth::JointPoint);
   for (int f = 0; f < 3; ++f) {
     gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       synth::recordSynthesis(cmd, programs, gpuSynth, 1 / 30.0f, chunkBytes);
     });
     synth::stepCrowdCpu(pair, crowd, 1 / 30.0f, 2);
   }
-  std::vector<synth::JointMatrix> cpuJoints(crowd.size() * pair.jointCount());
+  std::vector<synth::JointPoint> cpuJoints(crowd.size() * pair.jointCount());
   synth::poseCrowdCpu(pair, crowd, cpuJoints, 2);
-  auto gpuJoints = gpu::readback<synth::JointMatrix>(ctx, gpuSynth.joints, cpuJoints.size());
-  float worst =
-      test::maxAbsDifference(&gpuJoints[0].row0.x, &cpuJoints[0].row0.x, cpuJoints.size() * 12);
+  auto gpuJoints = gpu::readback<synth::JointPoint>(ctx, gpuSynth.joints, cpuJoints.size());
+  float worst = test::maxAbsDifference(&gpuJoints[0].positionRadius.x,
+                                       &cpuJoints[0].positionRadius.x, cpuJoints.size() * 4);
   MESSAGE("orchestrated synthesis: max |GPU - CPU| ", worst);
   CHECK(worst <= 1e-4f);
   CHECK(ctx.validationMessageCount() == 0);
@@ -297,23 +297,23 @@ TEST_CASE(
     synth::recordSynthesis(cmd, programs, lod, 1 / 30.0f, 1u << 27, {}, &camera);
   });
   const size_t joints = pair.jointCount(), n = crowd.size() * joints;
-  auto a = gpu::readback<synth::JointMatrix>(ctx, plain.joints, n);
-  auto b = gpu::readback<synth::JointMatrix>(ctx, allJoints.joints, n);
-  auto c = gpu::readback<synth::JointMatrix>(ctx, lod.joints, n);
+  auto a = gpu::readback<synth::JointPoint>(ctx, plain.joints, n);
+  auto b = gpu::readback<synth::JointPoint>(ctx, allJoints.joints, n);
+  auto c = gpu::readback<synth::JointPoint>(ctx, lod.joints, n);
   auto masks = gpu::readback<synth::CoverageMask>(ctx, lod.masks, crowd.size());
-  CHECK(test::maxAbsDifference(&a[0].row0.x, &b[0].row0.x, n * 12) == 0.0f);
+  CHECK(test::maxAbsDifference(&a[0].positionRadius.x, &b[0].positionRadius.x, n * 4) == 0.0f);
   size_t skipped = 0, levels[3] = {0, 0, 0};
   for (size_t i = 0; i < crowd.size(); ++i) {
     uint64_t mask = synth::maskBits(masks[i]);
     REQUIRE(synth::parentsBeforeChildren(mask, pair.parents));
     levels[std::min(masks[i].level, 2u)]++;
     for (size_t j = 0; j < joints; ++j) {
-      const float* got = &c[i * joints + j].row0.x;
+      const float* got = &c[i * joints + j].positionRadius.x;
       if (mask >> j & 1) {
-        REQUIRE(test::maxAbsDifference(got, &a[i * joints + j].row0.x, 12) == 0.0f);
+        REQUIRE(test::maxAbsDifference(got, &a[i * joints + j].positionRadius.x, 4) == 0.0f);
       } else {
         ++skipped;
-        REQUIRE(test::maxAbsDifference(got, std::vector<float>(12, 0.0f).data(), 12) ==
+        REQUIRE(test::maxAbsDifference(got, std::vector<float>(4, 0.0f).data(), 4) ==
                 0.0f);  // never written
       }
     }
@@ -360,8 +360,8 @@ TEST_CASE("coverage LOD done by the root motion pass equals the coverage pass, m
   }
   // The joints this frame's masks asked for (the others hold whatever was there before).
   const size_t joints = pair.jointCount(), n = crowd.size() * joints;
-  auto a = gpu::readback<synth::JointMatrix>(ctx, separate.joints, n);
-  auto b = gpu::readback<synth::JointMatrix>(ctx, fused.joints, n);
+  auto a = gpu::readback<synth::JointPoint>(ctx, separate.joints, n);
+  auto b = gpu::readback<synth::JointPoint>(ctx, fused.joints, n);
   size_t compared = 0, different = 0;
   for (size_t i = 0; i < crowd.size(); ++i)
     for (size_t j = 0; j < joints; ++j)

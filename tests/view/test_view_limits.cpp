@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "gpu_fixture.h"
+#include "synth/gpu_types.h"
 #include "test_support.h"
 #include "view_run.h"
 
@@ -28,8 +29,8 @@ uint64_t largestBuffer(const gpu::DeviceInfo& info) {
 
 TEST_CASE("view: a respawn past the device's limits is refused by name and the crowd stays") {
   const gpu::DeviceInfo& info = test::gpuContext().info();
-  // 4M characters' joint matrices (25 joints of 48 bytes) in one buffer.
-  if (uint64_t(4000000) * 25 * 48 <= largestBuffer(info)) {
+  // 4M characters' joint points (25 joints of 16 bytes) in one buffer.
+  if (uint64_t(4000000) * 25 * sizeof(throng::gpu_types::JointPoint) <= largestBuffer(info)) {
     MESSAGE("4M characters fit ", info.name, ": nothing to refuse");
     return;
   }
@@ -79,7 +80,7 @@ TEST_CASE(
 TEST_CASE("view: the starting crowd and a script resize past the limits name -n and the line") {
   const gpu::DeviceInfo& info = test::gpuContext().info();
   fs::path out = test::freshDirectory("view_limits");
-  if (uint64_t(4000000) * 25 * 48 > largestBuffer(info)) {
+  if (uint64_t(4000000) * 25 * sizeof(throng::gpu_types::JointPoint) > largestBuffer(info)) {
     test::ViewRun run = test::runView("-n 4000000 --size 320x180 --frames 2");
     INFO(run.result.output);
     CHECK(run.result.exitCode == 1);
