@@ -300,11 +300,6 @@ void Context::choosePhysicalDevice(const ContextOptions& options) {
   VkPhysicalDeviceFeatures2 supported{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &supported12};
   vkGetPhysicalDeviceFeatures2(physical_, &supported);
   info_.int64Atomics = supported.features.shaderInt64 && supported12.shaderBufferInt64Atomics;
-  // The pose pass stores a joint's six 64-bit words as a four-word and a two-word vector; joints
-  // are 48 bytes apart, so the four-word vector is not always 32-byte aligned, which only the
-  // scalar block layout allows (shaders/synth_pose.comp).
-  if (!supported12.scalarBlockLayout)
-    fail(info_.name, ": the pose pass needs the scalarBlockLayout feature (Vulkan 1.2)");
 
   uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical_, &familyCount, nullptr);
@@ -339,7 +334,6 @@ void Context::createDevice(const ContextOptions& options) {
                                               &dynamicRendering};
   features12.hostQueryReset = VK_TRUE;
   features12.shaderBufferInt64Atomics = info_.int64Atomics ? VK_TRUE : VK_FALSE;
-  features12.scalarBlockLayout = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &features12};
   features.features.multiDrawIndirect = VK_TRUE;
   features.features.drawIndirectFirstInstance = VK_TRUE;
