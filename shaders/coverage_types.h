@@ -19,7 +19,7 @@ const uint kPartRightLeg = 4u;
 const uint kCoveragePartCount = 5u;
 
 // CoveragePush.flags
-const uint kCoverageReadJoints = 1u;  // sphere centres from the joint matrices (else estimated)
+const uint kCoverageReadJoints = 1u;  // sphere centres from the joint points (else estimated)
 const uint kCoverageWriteAreas = 2u;  // measure the five part spheres: areas and state bits
 
 // Levels written per character (also the Fig. 8 tint), chosen from its projected height.

@@ -17,7 +17,7 @@ layout(std430, binding = kRenderBindingCacheData) readonly buffer CacheData { Jo
 // What fetchJoint reads once per character rather than once per joint: where its pose comes
 // from and, for a cached pose, its root transform and scale.
 struct CharacterPose {
-  uint source;  // kPoseInJoints, or the character's first matrix in cacheData
+  uint source;  // kPoseInJoints, or the character's first point in cacheData
   vec4 place;
   float scale;
 };

@@ -194,8 +194,8 @@ THRONG_STRUCT(CachePush) {
   float bucketWidth;
   uint firstCharacter;    // lookup: the group's first character; classify: the chunk's
   uint chunk;             // classify: the chunk's uncached count is at listCounts[chunk]
-  uint dataBase;          // fill, classify: the cache's first matrix in the (shared) data buffer
-  uint jointCount;        // classify: cached pose entries are jointCount matrices apart
+  uint dataBase;          // fill, classify: the cache's first point in the (shared) data buffer
+  uint jointCount;        // classify: cached pose entries are jointCount points apart
   uint slowFrames;        // fill: rows of the slow and fast motion textures
   uint fastFrames;
   uint farBodies;         // fill: also each pose's FarBodyPose (the LOD on: far bodies drawn)
@@ -215,10 +215,10 @@ THRONG_STRUCT(ClassifyGroupsPush) {
   uvec4 firstChunk;       // per group: its first chunk's number
 };
 
-// poseSource[character]: where the character's joint matrices come from this frame. A cached
-// character's is the index of its first matrix in the cache data (the renderer composes
-// A = M · P itself, so synthesis writes nothing per joint for it); the others' is
-// kPoseInJoints: their matrices were synthesized into the joints buffer.
+// poseSource[character]: where the character's joint points come from this frame. A cached
+// character's is the index of its first point in the cache data (the renderer places them,
+// M · p, itself, so synthesis writes nothing per joint for it); the others' is
+// kPoseInJoints: their points were synthesized into the joints buffer.
 const uint kPoseInJoints = 0xFFFFFFFFu;
 
 // Per-frame camera and light for the joint and ground draws (a uniform buffer).

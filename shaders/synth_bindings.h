@@ -49,7 +49,7 @@ const uint kUpdateScheduleBindingChunkState = 0u;
 const uint kUpdateScheduleBindingChunkList = 1u;
 const uint kUpdateScheduleBindingArgs = 2u;  // VkDispatchIndirectCommand: x counts the list
 
-// synth_pose.comp: blend, hierarchy and draw matrices per character.
+// synth_pose.comp: blend, hierarchy and joint points per character.
 const uint kPoseBindingRadius = 2u;
 const uint kPoseBindingPlacement = 3u;
 const uint kPoseBindingMotion = 4u;

@@ -53,7 +53,7 @@ THRONG_STRUCT(ClassifySchedulePush) {
   uint characterCount;  // the crowd's (one clip set, from character 0)
   uint rowCount;        // poses per cache entry
   float bucketWidth;
-  uint dataBase;        // the cache's first matrix in the data buffer
+  uint dataBase;        // the cache's first point in the data buffer
   uint jointCount;
   uint poseChunk;       // characters per pose chunk: a miss is listed in its chunk's list
   uint pad0;

@@ -232,7 +232,7 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   THRONG_CHECK(frameSlot < kFramesInFlight, "frame slot ", frameSlot, " out of range");
   passTimer_->mark(cmd, "before-pass");
   if (params.characterCount > 0 && (!params.joints || params.jointCount == 0))
-    fail("CrowdRenderer: joint matrices are missing for ", params.characterCount, " characters");
+    fail("CrowdRenderer: joint points are missing for ", params.characterCount, " characters");
   THRONG_CHECK(!groundCopied_ || target.transferDst,
                "beginDraw: the splat started from the ground, for a target that takes copies");
   if (groundCopied_) {

@@ -20,7 +20,7 @@ class PassTimer;
 
 constexpr uint64_t kEmptyPixel = ~uint64_t(0);
 
-// Characters are processed in chunks whose joint matrices fit one storage-buffer binding;
+// Characters are processed in chunks whose joint points fit one storage-buffer binding;
 // the splat and the draw use the same chunks (chunk c's indirect draw is at draws[c]).
 struct JointChunk {
   uint32_t firstCharacter = 0;
@@ -29,8 +29,8 @@ struct JointChunk {
 std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount,
                                     uint32_t maxStorageBufferRange);
 
-// What the renderer needs to compose cached characters' joints itself (A = M · P from the
-// motion cache, see shaders/joint_fetch.glsl). Without a motion cache every joint is read from
+// What the renderer needs to place cached characters' joints itself (M · p from the motion
+// cache, see shaders/joint_fetch.glsl). Without a motion cache every joint is read from
 // the joints buffer; the bindings still exist, so the renderer binds placeholders.
 struct CachedPoseInputs {
   const gpu::Buffer* placement = nullptr;   // vec4 per character (crowd)

@@ -95,7 +95,7 @@ float characterHeightPixels(const CoveragePush& push, const CoverageParts& parts
 bool bodyWithinReach(const CoveragePush& push, const CoverageParts& parts, glm::vec4 placement,
                      glm::vec4 motion, float reach);
 
-// The CPU twin of coverage.comp for one character: `joints` are its J matrices (nullptr: the
+// The CPU twin of coverage.comp for one character: `joints` are its J points (nullptr: the
 // centres are estimated from the placement); `previous` is last frame's mask, which says which
 // centre joints the pose pass wrote and holds the level state. The five part spheres are
 // measured only when push.flags has kCoverageWriteAreas (into `areas`, 5 floats, if not null).
@@ -121,9 +121,9 @@ inline uint64_t maskBits(const CoverageMask& m) {
 //
 // Sphere centres: without `joints`, each centre is the joint's mean character-space position
 // placed by the character's root (placement, heading, scale) — no dependency on the pose pass,
-// so coverage can run right after root motion in the same frame. With `joints` (the matrices
-// of the last pose pass), a centre joint that was active in the mask read from `masks` (last
-// frame's) is taken from its matrix, A·(0, bonePoint, 0, 1); the others are estimated, because
+// so coverage can run right after root motion in the same frame. With `joints` (the points of
+// the last pose pass), a centre joint that was active in the mask read from `masks` (last
+// frame's) is taken from its bone, A·(0, bonePoint, 0, 1); the others are estimated, because
 // the pose pass did not write them. Zero-filled masks (a new crowd) mean "all estimated".
 struct CoverageJob {
   const crowd::CrowdBuffers* crowd =

@@ -67,18 +67,18 @@ GpuMotionCache makeGpuMotionCache(const gpu::Context& context, const anim::Motio
 }
 
 gpu::Buffer makeCacheData(const gpu::Context& context, std::span<GpuMotionCache* const> caches) {
-  uint64_t matrices = 0;
+  uint64_t points = 0;
   for (GpuMotionCache* cache : caches) {
-    if (matrices > UINT32_MAX) break;
-    cache->dataBase = static_cast<uint32_t>(matrices);
-    matrices += cache->dataBytes() / sizeof(JointPoint);
+    if (points > UINT32_MAX) break;
+    cache->dataBase = static_cast<uint32_t>(points);
+    points += cache->dataBytes() / sizeof(JointPoint);
   }
-  if (matrices >= UINT32_MAX)
-    fail("motion cache: ", matrices, " cached joint matrices are more than a 32-bit index reaches",
+  if (points >= UINT32_MAX)
+    fail("motion cache: ", points, " cached joint points are more than a 32-bit index reaches",
          " (lower the cache budget)");
   // A small buffer when every cache is disabled, so the passes always have their bindings.
   return gpu::Buffer(context,
-                     std::max<uint64_t>(16 * sizeof(JointPoint), matrices * sizeof(JointPoint)),
+                     std::max<uint64_t>(16 * sizeof(JointPoint), points * sizeof(JointPoint)),
                      gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
 }
 

@@ -121,7 +121,7 @@ std::vector<std::string> CacheJob::validate() const {
   if (cache && data && *data &&
       (uint64_t(cache->dataBase) * sizeof(JointPoint) + cache->dataBytes()) > data->size())
     problems.push_back(concat("output 'data' holds ", data->size(), " bytes, the cache needs ",
-                              cache->dataBytes(), " from matrix ", cache->dataBase));
+                              cache->dataBytes(), " from point ", cache->dataBase));
   if (crowd && (firstCharacter > crowd->count ||
                 (characterCount && characterCount > crowd->count - firstCharacter)))
     problems.push_back("the group runs past the end of the crowd");
