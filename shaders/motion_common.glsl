@@ -66,13 +66,6 @@ vec3 quatRotate(vec4 q, vec3 v) {
 
 vec4 yawQuat(float angle) { return vec4(0.0, sin(0.5 * angle), 0.0, cos(0.5 * angle)); }
 
-// Rotation taking +y onto the unit vector d (shortest arc); |(d.z, 0, -d.x, 1 + d.y)|² is
-// 2(1 + d.y) for a unit d, so no general normalize is needed.
-vec4 alignYTo(vec3 d) {
-  if (d.y < -0.9999) return vec4(1.0, 0.0, 0.0, 0.0);
-  return vec4(d.z, 0.0, -d.x, 1.0 + d.y) * inversesqrt(2.0 + 2.0 * d.y);
-}
-
 // A speed weight in [lo, hi] drawn for a character at a speed-change epoch (PCG hash); mirrors
 // anim::retargetSpeed.
 float retargetSpeed(uint character, uint epoch, uint seed, float lo, float hi) {

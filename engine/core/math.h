@@ -101,12 +101,6 @@ inline glm::vec3 quatRotate(glm::vec4 q, glm::vec3 v) {
   return v + q.w * t + glm::cross(u, t);
 }
 
-// Rotation taking +y onto the unit vector d; |(d.z, 0, -d.x, 1 + d.y)|² = 2(1 + d.y).
-inline glm::vec4 alignYTo(glm::vec3 d) {
-  if (d.y < -0.9999f) return glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);
-  return glm::vec4(d.z, 0.0f, -d.x, 1.0f + d.y) * (1.0f / std::sqrt(2.0f + 2.0f * d.y));
-}
-
 // Rotation about +y by `angle` radians; heading 0 faces +z.
 inline glm::vec4 yawQuat(float angle) {
   return glm::vec4(0.0f, std::sin(0.5f * angle), 0.0f, std::cos(0.5f * angle));

@@ -138,7 +138,7 @@ TEST_CASE(
             pair.slow.offset(0, 3) * 1.5f + glm::vec3(0.02f, 0.0f, 0.0f));  // blended by w
   setOffset(pair.slow, 5, glm::vec3(0.0f));  // a zero-length bone, fixed and not drawn
   setOffset(pair.fast, 5, glm::vec3(0.0f));
-  setOffset(pair.slow, 6, glm::vec3(0.0f, -0.3f, 0.0f));  // straight down: alignYTo's special case
+  setOffset(pair.slow, 6, glm::vec3(0.0f, -0.3f, 0.0f));  // straight down
   setOffset(pair.fast, 6, glm::vec3(0.0f, -0.3f, 0.0f));
   std::vector<bool> fixed = synth::fixedBones(pair);
   CHECK_FALSE(fixed[0]);  // the root is never a bone
