@@ -27,12 +27,10 @@ layout(push_constant) uniform Push { CachePush push; };
 
 #include "pose_skeleton.glsl"
 
-// A part's centre joint's point and its parent's (the root's own twice), from the pose this
+// A part's centre joint's point and its bone's start (partBoneStart), from the pose this
 // invocation wrote at joints[base …].
 vec4 partJoint(uint base, CoveragePart part) { return joints[base + part.joint].positionRadius; }
-vec4 partParent(uint base, CoveragePart part) {
-  return joints[base + (part.parent < 0 ? part.joint : uint(part.parent))].positionRadius;
-}
+vec4 partParent(uint base, CoveragePart part) { return joints[base + partBoneStart(part)].positionRadius; }
 
 void main() {
   uint id = gl_GlobalInvocationID.x;

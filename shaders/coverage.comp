@@ -37,7 +37,7 @@ uint measureParts(uint i, uint local, vec4 place, float scale, CoverageMask prev
     // from its point and its parent's; any other is estimated from the root.
     uint word = part.joint < 32u ? previous.lo : previous.hi;
     vec3 centre = readJoints && ((word >> (part.joint & 31u)) & 1u) != 0u
-                      ? jointCentre(part, joints[local * push.jointCount + (part.parent < 0 ? part.joint : uint(part.parent))].positionRadius,
+                      ? jointCentre(part, joints[local * push.jointCount + partBoneStart(part)].positionRadius,
                                     joints[local * push.jointCount + part.joint].positionRadius)
                       : estimatedCentre(part, place.xyz, c, s, scale);
     float area = sphereCoverage(push.view, push.viewport, push.frustum, centre, part.centre.w * scale);

@@ -67,6 +67,13 @@ THRONG_STRUCT(CoveragePart) {
   uint pad0;
 };
 
+// The joint whose point a part's bone starts from (bonePoint's `parent`): the centre joint's
+// parent, or for the root its own point (its bone is centred on it).
+#ifdef __cplusplus
+inline
+#endif
+uint partBoneStart(CoveragePart part) { return part.parent < 0 ? part.joint : uint(part.parent); }
+
 // One level: what is synthesized and what is drawn, and its projected-height band.
 THRONG_STRUCT(CoverageLevel) {
   uint synthLo;           // joints the pose pass synthesizes (closed under ancestors)

@@ -25,8 +25,7 @@ vec3 cachedPartPoint(CoveragePart part, vec4 parent, vec4 joint, CharacterPose p
 }
 
 vec3 jointsPartPoint(CoveragePart part, uint base) {
-  return partPoint(part, joints[base + (part.parent < 0 ? part.joint : uint(part.parent))].positionRadius,
-                   joints[base + part.joint].positionRadius);
+  return partPoint(part, joints[base + partBoneStart(part)].positionRadius, joints[base + part.joint].positionRadius);
 }
 
 // The body ellipsoid as a joint draw matrix; a zero matrix (never visible) where the joints

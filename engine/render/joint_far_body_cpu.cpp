@@ -13,7 +13,7 @@ namespace {
 glm::vec3 partPoint(std::span<const synth::JointPoint> character,
                     const gpu_types::CoveragePart& part) {
   const glm::vec4 point = character[part.joint].positionRadius;
-  const glm::vec4 parent = part.parent < 0 ? point : character[size_t(part.parent)].positionRadius;
+  const glm::vec4 parent = character[gpu_types::partBoneStart(part)].positionRadius;
   return gpu_types::bonePoint(parent, point, part.parent < 0, part.bonePoint);
 }
 

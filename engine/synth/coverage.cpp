@@ -226,7 +226,7 @@ uint32_t measureParts(const CoveragePush& push, const CoverageParts& parts, glm:
       // The pose pass wrote this joint (and its parent) last frame: the centre is
       // A·(0, bonePoint, 0, 1) of its bone.
       const glm::vec4 point = joints[part.joint].positionRadius;
-      const glm::vec4 parent = part.parent < 0 ? point : joints[part.parent].positionRadius;
+      const glm::vec4 parent = joints[gpu_types::partBoneStart(part)].positionRadius;
       centre = gpu_types::bonePoint(parent, point, part.parent < 0, part.bonePoint);
     } else {
       // Not synthesized: the centre joint's mean character-space position, placed like the root.
