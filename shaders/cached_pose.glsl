@@ -3,8 +3,19 @@
 // materialize pass and the renderer; CPU twin: synth::placeCachedPoint.
 #ifndef THRONG_CACHED_POSE_GLSL
 #define THRONG_CACHED_POSE_GLSL
-vec4 placeCachedPoint(vec4 p, vec4 place, float scale) {
-  float c = cos(place.w), s = sin(place.w);
-  return vec4(scale * vec3(c * p.x + s * p.z, p.y, c * p.z - s * p.x) + place.xyz, scale * p.w);
+// M of one character, its heading's cosine and sine taken once for all its joints.
+struct CachedPlacement {
+  vec3 origin;
+  vec2 heading;  // cos, sin
+  float scale;
+};
+
+CachedPlacement cachedPlacement(vec4 place, float scale) {
+  return CachedPlacement(place.xyz, vec2(cos(place.w), sin(place.w)), scale);
+}
+
+vec4 placeCachedPoint(vec4 p, CachedPlacement m) {
+  float c = m.heading.x, s = m.heading.y;
+  return vec4(m.scale * vec3(c * p.x + s * p.z, p.y, c * p.z - s * p.x) + m.origin, m.scale * p.w);
 }
 #endif

@@ -21,7 +21,7 @@ vec3 partPoint(CoveragePart part, vec4 parent, vec4 joint) {
 }
 
 vec3 cachedPartPoint(CoveragePart part, vec4 parent, vec4 joint, CharacterPose pose) {
-  return partPoint(part, placeCachedPoint(parent, pose.place, pose.scale), placeCachedPoint(joint, pose.place, pose.scale));
+  return partPoint(part, placeCachedPoint(parent, pose.placed), placeCachedPoint(joint, pose.placed));
 }
 
 vec3 jointsPartPoint(CoveragePart part, uint base) {

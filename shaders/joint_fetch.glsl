@@ -15,21 +15,18 @@ layout(std430, binding = kRenderBindingPoseSource) readonly buffer PoseSource { 
 layout(std430, binding = kRenderBindingCacheData) readonly buffer CacheData { JointPoint cacheData[]; };
 
 // What fetchJoint reads once per character rather than once per joint: where its pose comes
-// from and, for a cached pose, its root transform and scale.
+// from and, for a cached pose, its root transform.
 struct CharacterPose {
   uint source;  // kPoseInJoints, or the character's first point in cacheData
-  vec4 place;
-  float scale;
+  CachedPlacement placed;
 };
 
 CharacterPose characterPose(uint character, uint flags) {
-  CharacterPose pose = CharacterPose(kPoseInJoints, vec4(0.0), 1.0);
+  CharacterPose pose = CharacterPose(kPoseInJoints, CachedPlacement(vec3(0.0), vec2(1.0, 0.0), 1.0));
   if ((flags & kDrawCachedPoses) == 0u) return pose;
   pose.source = poseSource[character];
-  if (pose.source != kPoseInJoints) {
-    pose.place = placement[character];
-    pose.scale = characterScale(motion[character]);
-  }
+  if (pose.source != kPoseInJoints)
+    pose.placed = cachedPlacement(placement[character], characterScale(motion[character]));
   return pose;
 }
 
@@ -41,7 +38,7 @@ int jointParent(uint j) {
 
 // chunkJoint indexes the chunk's joints binding.
 vec4 fetchPosePoint(CharacterPose pose, uint chunkJoint, uint joint) {
-  if (pose.source != kPoseInJoints) return placeCachedPoint(cacheData[pose.source + joint].positionRadius, pose.place, pose.scale);
+  if (pose.source != kPoseInJoints) return placeCachedPoint(cacheData[pose.source + joint].positionRadius, pose.placed);
   return joints[chunkJoint].positionRadius;
 }
 

@@ -25,13 +25,12 @@ void main() {
   uint i = push.firstCharacter + local;
   uint source = poseSource[i];
   if (source == kPoseInJoints) return;
-  vec4 place = placement[i];
-  float scale = characterScale(motion[i]);
+  CachedPlacement placed = cachedPlacement(placement[i], characterScale(motion[i]));
   uint base = local * uint(kJointCount);
   uvec2 activeJoints = (push.flags & kPoseUseMasks) != 0u ? masks[i].xy : uvec2(0xFFFFFFFFu);
   [[unroll]] for (int j = 0; j < kJointCount; ++j) {
     bool jointNeeded = ((j < 32 ? activeJoints.x >> uint(j) : activeJoints.y >> uint(j - 32)) & 1u) != 0u;
     if (jointNeeded)
-      joints[base + uint(j)].positionRadius = placeCachedPoint(cacheData[source + uint(j)].positionRadius, place, scale);
+      joints[base + uint(j)].positionRadius = placeCachedPoint(cacheData[source + uint(j)].positionRadius, placed);
   }
 }
