@@ -1,8 +1,12 @@
 #include "core/frame_output.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "core/clock.h"
 #include "core/error.h"
@@ -15,6 +19,17 @@ int workerCount(const FrameOutputOptions& options) {
   if (options.video) return 1;
   if (options.workers > 0) return std::min(options.workers, 8);
   return std::clamp(int(std::thread::hardware_concurrency() / 2), 1, 8);
+}
+
+// The calling thread's nice value, raised to the lowest priority first when `lower` (Linux
+// schedules threads one by one, so this leaves the frame loop's threads as they are). A refusal
+// leaves the priority as it was: encoding then competes, as it would anywhere else.
+int workerPriority(bool lower) {
+  const auto thread = id_t(gettid());
+  if (lower) setpriority(PRIO_PROCESS, thread, 19);
+  errno = 0;
+  const int nice = getpriority(PRIO_PROCESS, thread);
+  return errno == 0 ? nice : 0;
 }
 }  // namespace
 
@@ -104,6 +119,11 @@ FrameOutputStats FrameOutput::stats() const {
 }
 
 void FrameOutput::run() {
+  const int nice = workerPriority(options_.lowPriority);
+  {
+    std::lock_guard lock(mutex_);
+    stats_.workerNice = nice;
+  }
   PngEncoder png;  // this worker's: its buffers serve every frame it encodes
   for (;;) {
     Job job;

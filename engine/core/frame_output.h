@@ -28,6 +28,11 @@ struct FrameOutputOptions {
   double fps = 30.0;
   int queueDepth = 3;
   int workers = 0;  // PNG encoders (1 with a video); 0: half the hardware threads, 1 to 8
+  // Workers at the lowest scheduling priority (nice 19): on a CPU device the frame loop's threads
+  // are the device, and an encoder sharing their cores would stretch every pass it preempts.
+  // Encoding then takes the cores' idle time; the bounded queue makes the loop wait when it
+  // falls behind.
+  bool lowPriority = true;
 };
 
 struct FrameOutputStats {
@@ -35,6 +40,7 @@ struct FrameOutputStats {
   double encodeMs = 0.0;  // the workers' time, all frames (summed over workers)
   int workers = 1;
   double waitedMs = 0.0;  // the frame loop's time waiting for a free queue slot
+  int workerNice = 0;     // the scheduling priority the workers ran at (Linux nice value)
 };
 
 class FrameOutput {

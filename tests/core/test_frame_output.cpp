@@ -2,8 +2,10 @@
 // loop, checked with ffprobe.
 #include <doctest/doctest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <span>
@@ -179,6 +181,25 @@ TEST_CASE("frame output: several PNG workers write every frame once, in its own 
   video.pngFolder.reset();
   video.video = dir / "clip.mp4";
   if (haveFfmpeg()) CHECK(FrameOutput(video).stats().workers == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("frame output: workers encode at the lowest priority unless told otherwise") {
+  fs::path dir = freshFolder("frame_output_priority");
+  errno = 0;
+  const int callerNice = getpriority(PRIO_PROCESS, id_t(gettid()));
+  REQUIRE(errno == 0);
+  for (const bool low : {true, false}) {
+    CAPTURE(low);
+    FrameOutputOptions options = pngOptions(dir, 8, 8, 1, 1);
+    options.lowPriority = low;
+    FrameOutput output(options);
+    for (int t = 0; t < 3; ++t) output.push(gradientFrame(8, 8, t), t);
+    output.finish();
+    // Lowering the priority needs no privilege; a worker otherwise inherits the caller's.
+    CHECK(output.stats().workerNice == (low ? 19 : callerNice));
+  }
+  CHECK(getpriority(PRIO_PROCESS, id_t(gettid())) == callerNice);  // the caller's is untouched
   fs::remove_all(dir);
 }
 
