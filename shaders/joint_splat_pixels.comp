@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
-// The far joints, step 2: one invocation per reserved pixel entry (joint_splat.comp) ray-casts
+// The far joints, step 3 of a walk per joint (joint_splat_walk.comp; a walk per character
+// ray-casts its pixels itself): one invocation per reserved pixel entry ray-casts
 // its sprite's ellipsoid through the pixel the entry names, so neighbouring lanes do equal work
 // whatever the sprites' sizes. A fixed number of workgroups strides over the entries, so the pass
 // needs no indirect arguments. CPU twin: render::splatJointsCpu.

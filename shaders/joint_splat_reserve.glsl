@@ -88,12 +88,47 @@ ivec2 silhouetteRow(Silhouette c, int row, ivec2 lo, ivec2 hi) {
   return first <= last ? lo.x + ivec2(int(first), int(last)) : ivec2(1, 0);
 }
 
-// Joint `joint` (chunk-local) as sprite s: an entry reserved for each pixel of its box whose
-// centre its silhouette holds (about two thirds of the box: a slanted bone leaves most of it
-// empty), for the pixel pass; listed for the graphics pipeline's draw instead when it is too wide,
-// or when the work lists are full. Not splatted here in that case: lavapipe would run that loop's
-// body, ray-cast and all, for every joint with its lanes masked off.
+// Where a walked joint's pixels are ray-cast (specialization constant 3 of
+// joint_splat_walk.comp, render::SplatWalk). false: in the pixel pass, from the entries the walk
+// reserves (a GPU's: every lane of the pixel pass does equal work). true: by the walk itself,
+// row by row of the joint's silhouette (lavapipe's: lanes wait for the largest sprite of their
+// eight, which costs less than storing each entry and its sprite and loading them back in the
+// pixel pass one lane at a time).
+layout(constant_id = 3) const bool kInlinePixels = false;
+
+// A joint too wide to splat (or past full work lists), listed for the graphics pipeline.
+void listNearJoint(uint joint) {
+  uint slot = atomicAdd(draws[4 * push.chunk], 1u);
+  nearList[push.listBase + slot] = joint;
+}
+
+// Joint `joint` (chunk-local) as sprite s, its pixels ray-cast here: the pixels of its box whose
+// centres its silhouette holds (about two thirds of the box: a slanted bone leaves most of it
+// empty). Listed for the graphics pipeline instead when it is too wide.
+void splatSpriteInline(uint joint, JointSprite s, vec3 tint) {
+  if (s.sizePx > push.maxPixels) {
+    listNearJoint(joint);
+    return;
+  }
+  ivec2 lo, hi;
+  if (!spriteBox(s, lo, hi)) return;
+  Silhouette c = silhouette(s, lo);
+  for (int y = lo.y; y <= hi.y; ++y) {
+    ivec2 span = silhouetteRow(c, y, lo, hi);
+    for (int x = span.x; x <= span.y; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+  }
+}
+
+// Joint `joint` (chunk-local) as sprite s: with kInlinePixels its pixels are ray-cast here;
+// otherwise an entry is reserved for each pixel of its silhouette, for the pixel pass, and it is
+// listed for the graphics pipeline's draw instead when it is too wide, or when the work lists are
+// full. Not splatted here in that case: lavapipe would run that loop's body, ray-cast and all,
+// for every joint with its lanes masked off.
 void splatSprite(uint joint, JointSprite s, vec3 tint) {
+  if (kInlinePixels) {
+    splatSpriteInline(joint, s, tint);
+    return;
+  }
   ivec2 lo = ivec2(0), hi = ivec2(-1);  // too wide: an empty box, so its lanes skip the rows
   bool wide = s.sizePx > push.maxPixels;
   if (!wide && !spriteBox(s, lo, hi)) return;
@@ -106,10 +141,7 @@ void splatSprite(uint joint, JointSprite s, vec3 tint) {
   uint sprite;
   bool fits;
   uint first = reserveEntries(pixelCount > 0u ? 1u : 0u, pixelCount, sprite, fits);
-  if (wide || !fits) {
-    uint slot = atomicAdd(draws[4 * push.chunk], 1u);
-    nearList[push.listBase + slot] = joint;
-  }
+  if (wide || !fits) listNearJoint(joint);
   uint entry = first;
   for (int y = lo.y; y <= hi.y; ++y) {
     ivec2 span = silhouetteRow(c, y, lo, hi);

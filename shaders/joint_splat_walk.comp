@@ -5,15 +5,17 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
 // The far joints, step 2: the characters joint_splat.comp listed have their joints walked. Each
-// drawn joint's ellipsoid gets its screen box and reserves a sprite and one pixel entry per pixel
-// of its silhouette for joint_splat_pixels.comp, which ray-casts them one pixel per invocation.
-// Joints wider than push.maxPixels, and joints whose reservation does not fit, are listed for an
-// indirect draw by the graphics pipeline instead. Dispatched indirectly with as many workgroups
-// as the list needs, one invocation per listed character, in one row or in a row per joint
-// (render::SplatWalk): in one row an invocation walks its character's joints (lanes are
-// characters at the same joint, so a level's undrawn joints cost its lanes nothing, and the
-// character's mask, tint and pose source are read once: lavapipe's way), in row y it takes joint
-// y alone (a GPU's: many short threads).
+// drawn joint's ellipsoid gets its screen box and the pixels of its silhouette. Dispatched
+// indirectly with as many workgroups as the list needs, one invocation per listed character, in
+// one row or in a row per joint (render::SplatWalk, specialization constant 3):
+// - in one row (lavapipe's way) an invocation walks its character's joints and ray-casts each
+//   joint's pixels itself (lanes are characters at the same joint, so a level's undrawn joints
+//   cost its lanes nothing, and the character's mask, tint and pose source are read once);
+// - in row y (a GPU's way: many short threads) it takes joint y alone and reserves a sprite and
+//   one pixel entry per pixel for joint_splat_pixels.comp, which ray-casts them one pixel per
+//   invocation.
+// Joints wider than push.maxPixels, and (per joint) joints whose reservation does not fit, are
+// listed for an indirect draw by the graphics pipeline instead.
 // CPU twin: render::splatJointsCpu over render::splattedJointMatrices.
 #include "shared_types.h"
 #include "render_bindings.h"

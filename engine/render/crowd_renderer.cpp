@@ -115,7 +115,7 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   walls_ = gpu::GraphicsProgram(context, wallDesc);
 
   if (splatSupported_) {
-    splat_ = makeSplatPrograms(context);
+    splat_ = makeSplatPrograms(context, splatWalk_);
     splatLists_ = makeSplatLists(context);
     groundProgram_ = gpu::ComputeProgram(context, "ground.comp");
     planesProgram_ = gpu::ComputeProgram(context, "visibility_planes.comp");

@@ -40,14 +40,18 @@ std::vector<JointChunk> jointChunks(uint32_t characterCount, uint32_t jointCount
   return chunks;
 }
 
-SplatPrograms makeSplatPrograms(const gpu::Context& context, uint32_t spriteCapacity,
-                                uint32_t pixelCapacity, float farBodyPixels) {
+SplatPrograms makeSplatPrograms(const gpu::Context& context, SplatWalk walk,
+                                uint32_t spriteCapacity, uint32_t pixelCapacity,
+                                float farBodyPixels) {
   const uint32_t capacities[] = {spriteCapacity, pixelCapacity};
   const uint32_t splat[] = {spriteCapacity, pixelCapacity, std::bit_cast<uint32_t>(farBodyPixels)};
+  const uint32_t inlinePixels = walk == SplatWalk::PerCharacter ? VK_TRUE : VK_FALSE;
+  const uint32_t walked[] = {spriteCapacity, pixelCapacity, std::bit_cast<uint32_t>(farBodyPixels),
+                             inlinePixels};
   return {gpu::ComputeProgram(context, "joint_splat_list.comp"),
           gpu::ComputeProgram(context, "joint_splat.comp", splat),
-          gpu::ComputeProgram(context, "joint_splat_walk.comp", splat),
-          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities)};
+          gpu::ComputeProgram(context, "joint_splat_walk.comp", walked),
+          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities), walk};
 }
 
 SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
@@ -225,6 +229,9 @@ void SplatJob::recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& progr
 
 void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const {
   gpu::throwIfInvalid("SplatJob", validate());
+  THRONG_CHECK(programs.walkKind == walk, "SplatJob walks ",
+               walk == SplatWalk::PerJoint ? "per joint" : "per character",
+               " with programs made for the other walk");
   const VkDeviceSize pixels = VkDeviceSize(width) * height;
   // The previous frame's resolve may still read the buffer, and the initial words were just
   // written by a compute pass: order the reset after both.
@@ -265,6 +272,15 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   for (size_t c = 0; c < chunks.size(); ++c)
     recordChunk(cmd, programs.walk, chunks[c], c, gpu_types::kSplatWalkArgs);
   if (timer) timer->mark(cmd, "splat-joints");
+  if (walk == SplatWalk::PerJoint) recordPixels(cmd, programs);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
+  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+}
+
+void SplatJob::recordPixels(VkCommandBuffer cmd, const SplatPrograms& programs) const {
+  const VkDeviceSize pixels = VkDeviceSize(width) * height;
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   gpu::Binding pixelBindings[] = {
@@ -278,10 +294,6 @@ void SplatJob::record(VkCommandBuffer cmd, const SplatPrograms& programs) const 
   gpu::dispatch(cmd, programs.pixels, pixelBindings, nullptr, 0,
                 gpu_types::kSplatPixelGroups * programs.pixels.localSizeX());
   if (timer) timer->mark(cmd, "splat-pixels");
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT);
-  gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 }
 
 }  // namespace throng::render

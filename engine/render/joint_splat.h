@@ -2,8 +2,9 @@
 // The compute path for small joints (a job: named inputs and outputs, validate(), record()).
 // A first pass per character (joint_splat.comp) splats far characters a few pixels tall as one
 // ellipsoid each (joint_far_body.glsl) and lists the others, whose joints the second pass
-// (joint_splat_walk.comp) walks; each joint's ellipsoid is ray-cast over its few screen pixels
-// (one invocation per pixel, see joint_splat_pixels.comp). The nearest hit per pixel is kept in
+// (joint_splat_walk.comp) walks; each joint's ellipsoid is ray-cast over its few screen pixels,
+// by the walk itself or one invocation per pixel (joint_splat_pixels.comp), as SplatWalk says.
+// The nearest hit per pixel is kept in
 // a visibility buffer of (depth << 32 | colour), which the renderer puts into the frame with
 // depth. On lavapipe this is an order of magnitude cheaper than sending tens of
 // thousands of tiny sprites through the single-threaded vertex pipeline.
@@ -43,32 +44,37 @@ struct CachedPoseInputs {
   bool enabled() const { return placement && motion && poseSource && cacheData; }
 };
 
+// How joint_splat_walk.comp's invocations share the listed characters' joints, and where their
+// pixels are ray-cast. Per character: each invocation walks its character's joints in turn and
+// ray-casts each joint's pixels itself (lavapipe runs 8 lanes side by side, so lanes are
+// characters at the same joint, a character's mask, tint and pose are read once, and no pixel
+// entry is stored and loaded back one lane at a time). Per joint: a row of workgroups per joint,
+// each invocation one joint, whose pixels it reserves as entries for joint_splat_pixels.comp (a
+// GPU runs thousands of threads: a thread looping over 25 joints and their pixels would hold its
+// warp up, and the pixel pass gives every lane equal work). The same picture either way.
+enum class SplatWalk { PerCharacter, PerJoint };
+// Per character on a CPU device, per joint on a GPU; THRONG_SPLAT_WALK=character|joint chooses
+// (for measuring one against the other).
+SplatWalk splatWalkFor(const gpu::DeviceInfo& device);
+
 // joint_splat.comp (far bodies), joint_splat_walk.comp (a sprite per joint) and
 // joint_splat_pixels.comp (an invocation per pixel), specialized with the work lists' capacities
-// and the far body's height (0: every character by its joints).
+// and the far body's height (0: every character by its joints); the walk also by how it walks
+// (specialization constant 3: its pixels ray-cast inline when per character).
 struct SplatPrograms {
   gpu::ComputeProgram onScreen;  // joint_splat_list.comp: the characters on screen
   gpu::ComputeProgram joints;    // joint_splat.comp: their far bodies and the walk list
   gpu::ComputeProgram walk;      // joint_splat_walk.comp: the listed characters' joints
-  gpu::ComputeProgram pixels;
+  gpu::ComputeProgram pixels;    // joint_splat_pixels.comp: the entries of a walk per joint
+  SplatWalk walkKind = SplatWalk::PerCharacter;  // what `walk` was specialized for
 };
-SplatPrograms makeSplatPrograms(const gpu::Context& context,
+SplatPrograms makeSplatPrograms(const gpu::Context& context, SplatWalk walk,
                                 uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity,
                                 uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity,
                                 float farBodyPixels = gpu_types::kSplatFarBodyPixels);
 
 // Bytes of the list-counts buffer for `chunks` chunks (render_bindings.h, kSplatListArgsWords).
 VkDeviceSize listCountsBytes(size_t chunks);
-
-// How joint_splat_walk.comp's invocations share the listed characters' joints. Per character:
-// each walks its character's joints in turn (lavapipe runs 8 lanes side by side, so lanes are
-// characters at the same joint and a character's mask, tint and pose are read once). Per joint:
-// a row of workgroups per joint, each invocation one joint (a GPU runs thousands of threads, and
-// a thread looping over 25 joints and their rows holds its warp up).
-enum class SplatWalk { PerCharacter, PerJoint };
-// Per character on a CPU device, per joint on a GPU; THRONG_SPLAT_WALK=character|joint chooses
-// (for measuring one against the other).
-SplatWalk splatWalkFor(const gpu::DeviceInfo& device);
 
 // The work lists for those capacities (device-local).
 struct SplatLists {
@@ -112,7 +118,8 @@ struct SplatJob {
   const gpu::Buffer* listCounts = nullptr;
   uint32_t spriteCapacity = gpu_types::kSplatSpriteCapacity;
   uint32_t pixelCapacity = gpu_types::kSplatPixelCapacity;
-  SplatWalk walk = SplatWalk::PerCharacter;  // the same picture either way
+  // The same picture either way; the programs must have been made for it (makeSplatPrograms).
+  SplatWalk walk = SplatWalk::PerCharacter;
   // Optional input: width × height uint64 the visibility buffer starts from (the ground's words,
   // so the splat's atomicMin keeps the nearer of the ground and each hit); null: kEmptyPixel.
   const gpu::Buffer* initialVisibility = nullptr;
@@ -129,6 +136,8 @@ struct SplatJob {
   // at argsWord (kSplatOnScreenArgs, kSplatWalkArgs).
   void recordChunk(VkCommandBuffer cmd, const gpu::ComputeProgram& program, const JointChunk& chunk,
                    size_t c, int argsWord) const;
+  // The pixel pass over the entries a walk per joint reserved.
+  void recordPixels(VkCommandBuffer cmd, const SplatPrograms& programs) const;
 };
 
 }  // namespace throng::render

@@ -147,8 +147,11 @@ class GpuSplatRun {
                                             : ctx_.info().maxStorageBufferRange),
         chunks_(render::jointChunks(uint32_t(c.characters()), c.joints, bindingRange_)),
         frame_(frameFor(c)),
-        programs_(
-            render::makeSplatPrograms(ctx_, c.spriteCapacity, c.pixelCapacity, c.farBodyPixels)),
+        perCharacter_(render::makeSplatPrograms(ctx_, render::SplatWalk::PerCharacter,
+                                                c.spriteCapacity, c.pixelCapacity,
+                                                c.farBodyPixels)),
+        perJoint_(render::makeSplatPrograms(ctx_, render::SplatWalk::PerJoint, c.spriteCapacity,
+                                            c.pixelCapacity, c.farBodyPixels)),
         lists_(render::makeSplatLists(ctx_, c.spriteCapacity, c.pixelCapacity)) {
     makeBuffers();
     makeJob();
@@ -157,11 +160,21 @@ class GpuSplatRun {
   GpuSplatRun& operator=(const GpuSplatRun&) = delete;
 
   const gpu_types::FrameUniforms& frame() const { return frame_; }
+
+  // Records the job walked one way with the programs made for the other (refused).
+  void recordWithOtherPrograms(render::SplatWalk walk) {
+    job_.walk = walk;
+    const render::SplatPrograms& other =
+        walk == render::SplatWalk::PerJoint ? perCharacter_ : perJoint_;
+    gpu::submitAndWait(ctx_, [&](VkCommandBuffer cmd) { job_.record(cmd, other); });
+  }
   const std::vector<render::JointChunk>& chunks() const { return chunks_; }
 
   GpuSplat splat(render::SplatWalk walk) {
     job_.walk = walk;
-    gpu::submitAndWait(ctx_, [&](VkCommandBuffer cmd) { job_.record(cmd, programs_); });
+    const render::SplatPrograms& programs =
+        walk == render::SplatWalk::PerJoint ? perJoint_ : perCharacter_;
+    gpu::submitAndWait(ctx_, [&](VkCommandBuffer cmd) { job_.record(cmd, programs); });
     GpuSplat g;
     g.visibility = gpu::readback<uint64_t>(ctx_, visibility_, size_t(c_.width) * c_.height);
     // Each chunk's list of joints left to the graphics pipeline, from its first joint.
@@ -256,7 +269,7 @@ class GpuSplatRun {
   uint32_t bindingRange_;
   std::vector<render::JointChunk> chunks_;
   gpu_types::FrameUniforms frame_;
-  render::SplatPrograms programs_;
+  render::SplatPrograms perCharacter_, perJoint_;
   render::SplatLists lists_;
   gpu::Buffer joints_, uniforms_, visibility_, draws_, nearList_, unread_, levels_, masks_;
   gpu::Buffer onScreenList_, walkList_, listCounts_;
@@ -315,14 +328,18 @@ VisibilityDiff compareVisibility(const std::vector<uint64_t>& gpu,
   return d;
 }
 
-// The GPU's visibility buffer and near joints against the twin's. Joints the work lists cannot
-// hold are listed for the graphics pipeline like the too-wide ones: the twin splats every joint
-// but those. Returns whether the work lists were full.
+// The GPU's visibility buffer and near joints against the twin's. Walked per joint, joints the
+// work lists cannot hold are listed for the graphics pipeline like the too-wide ones: the twin
+// splats every joint but those. Walked per character, the walk ray-casts every joint's pixels
+// itself and reserves nothing. Returns whether the work lists were full.
 bool checkVisibility(const SplatCase& c, const GpuSplat& g, const render::SplatInputsCpu& drawn,
-                     const gpu_types::FrameUniforms& frame) {
+                     const gpu_types::FrameUniforms& frame, render::SplatWalk walk) {
   MESSAGE("work lists: ", g.counters[0], " sprites (capacity ", c.spriteCapacity, "), ",
           g.counters[1], " sprite pixels (capacity ", c.pixelCapacity, ")");
-  CHECK(g.counters[0] > 0);
+  if (walk == render::SplatWalk::PerJoint)
+    CHECK(g.counters[0] > 0);
+  else
+    CHECK(g.counters == std::vector<uint32_t>{0u, 0u});
   render::SplatCpuResult cpu =
       render::splatJointsCpu(drawn.joints, frame, c.joints, c.maxPixels, c.width, c.height);
   const std::vector<uint32_t> wide = cpu.nearJoints;
@@ -413,12 +430,13 @@ void checkSplatTwin(const SplatCase& c) {
   for (render::SplatWalk walk : {render::SplatWalk::PerCharacter, render::SplatWalk::PerJoint}) {
     CAPTURE(walk == render::SplatWalk::PerJoint);
     const GpuSplat& g = walk == render::SplatWalk::PerJoint ? perJoint : perCharacter;
-    full = checkVisibility(c, g, drawn, run.frame());
+    const bool listsFull = checkVisibility(c, g, drawn, run.frame(), walk);
+    if (walk == render::SplatWalk::PerJoint) full = listsFull;
     checkLists(c, g, run.chunks(), drawn, walk);
   }
-  // Either walk reserves the same sprites and entries, only in another order; with room for
-  // every joint each pixel keeps the same nearest hit, bit for bit.
-  CHECK(perJoint.counters == perCharacter.counters);
+  // Either walk ray-casts the same pixels of the same sprites, only in another order (and per
+  // joint through the work lists); with room for every joint each pixel keeps the same nearest
+  // hit, bit for bit.
   if (!full) CHECK(perJoint.visibility == perCharacter.visibility);
   CHECK(test::gpuContext().validationMessageCount() == 0);
 }
@@ -447,6 +465,13 @@ TEST_CASE("SplatJob: GPU visibility buffer matches the CPU twin") {
   base.camera = render::cameraPreset("street", crowd::scenarioExtent(options));
   SUBCASE("every joint") {
     checkSplatTwin(base);
+  }
+  SUBCASE("a walk recorded with programs made for the other walk is refused") {
+    GpuSplatRun run(base);
+    for (render::SplatWalk walk : {render::SplatWalk::PerCharacter, render::SplatWalk::PerJoint})
+      CHECK_THROWS_WITH_AS(run.recordWithOtherPrograms(walk),
+                           doctest::Contains("with programs made for the other walk"),
+                           throng::Error);
   }
   SUBCASE("work lists too small: the joints past them are left to the graphics pipeline") {
     // 300 sprites fit and 8,000 pixel entries (of ≈ 4,700 and ≈ 18,000): both limits are crossed,
