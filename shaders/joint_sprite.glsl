@@ -118,9 +118,10 @@ vec3 levelTint(uint level) {
 vec3 shadeJoint(vec3 tint, vec3 n, vec3 dir, vec3 light) {
   float diffuse = max(dot(n, light), 0.0);
   float sky = 0.5 + 0.5 * n.y;
-  float rim = pow(1.0 - max(dot(n, -dir), 0.0), 3.0);
+  float edge = 1.0 - max(dot(n, -dir), 0.0);
+  float rim = edge * edge * edge;
   vec3 col = tint * (0.28 + 0.22 * sky + 0.75 * diffuse) + 0.12 * rim;
-  return pow(col, vec3(1.0 / 2.2));
+  return vec3(gammaEncode(col.x), gammaEncode(col.y), gammaEncode(col.z));
 }
 
 #endif

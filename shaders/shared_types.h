@@ -96,6 +96,16 @@ THRONG_INLINE JointMatrix boneMatrix(vec4 parent, vec4 joint, bool root) {
   return m;
 }
 
+// The display's gamma, x^(1/2.2), for x clamped to [0, 1] (a colour channel packed to 8 bits
+// clamps there anyway): a quartic in √x fitted for the least largest error (Lawson's algorithm),
+// within 0.0017 of the power, under half a level of 255. pow is a logarithm and an exponential,
+// each a long polynomial on lavapipe, for every channel of every shaded pixel; this is one square
+// root and four multiply-adds.
+THRONG_INLINE float gammaEncode(float x) {
+  float t = sqrt(x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f);
+  return 0.0016943700f + t * (1.2867752f + t * (-0.81337190f + t * (0.90519303f + t * -0.38198549f)));
+}
+
 // Push constants of the root-motion pass (the paper's eq. 10, docs/design.md).
 THRONG_STRUCT(RootMotionPush) {
   uint characterCount;

@@ -96,10 +96,11 @@ float unitSphereDiscriminantCpu(glm::vec3 o, glm::vec3 d) {
 uint32_t shadeJointCpu(glm::vec3 tint, glm::vec3 n, glm::vec3 dir, glm::vec3 light) {
   float diffuse = std::max(glm::dot(n, light), 0.0f);
   float sky = 0.5f + 0.5f * n.y;
-  float rim = std::pow(1.0f - std::max(glm::dot(n, -dir), 0.0f), 3.0f);
-  glm::vec3 col = glm::pow(tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim,
-                           glm::vec3(1.0f / 2.2f));
-  return packColour(glm::vec4(col, 1.0f));
+  float edge = 1.0f - std::max(glm::dot(n, -dir), 0.0f);
+  float rim = edge * edge * edge;
+  glm::vec3 col = tint * (0.28f + 0.22f * sky + 0.75f * diffuse) + 0.12f * rim;
+  return packColour(glm::vec4(gpu_types::gammaEncode(col.x), gpu_types::gammaEncode(col.y),
+                              gpu_types::gammaEncode(col.z), 1.0f));
 }
 
 SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
