@@ -136,10 +136,20 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
 void CrowdRenderer::ensureVisibility(uint32_t width, uint32_t height) {
   for (auto it = retiredVisibility_.begin(); it != retiredVisibility_.end();)
     it = --it->second == 0 ? retiredVisibility_.erase(it) : std::next(it);
+  for (auto it = retiredViews_.begin(); it != retiredViews_.end();)
+    it = --it->second == 0 ? retiredViews_.erase(it) : std::next(it);
   if (visibility_ && visibilityWidth_ == width && visibilityHeight_ == height) return;
-  if (visibility_) retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
-  visibility_ = gpu::Buffer(*context_, VkDeviceSize(width) * height * sizeof(uint64_t),
-                            gpu::kStorageUsage, gpu::MemoryUse::DeviceLocal);
+  if (visibility_) {
+    retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
+    retiredViews_.emplace_back(std::move(visibilityTexels_), kFramesInFlight + 1);
+  }
+  // Whole texels of two pixels (an odd pixel count's last one in a texel of its own);
+  // makeBufferView refuses a frame past the device's texel limit.
+  const VkDeviceSize pairs = (VkDeviceSize(width) * height + 1) / 2;
+  visibility_ = gpu::Buffer(*context_, pairs * 2 * sizeof(uint64_t),
+                            gpu::kStorageUsage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                            gpu::MemoryUse::DeviceLocal);
+  visibilityTexels_ = gpu::makeBufferView(*context_, visibility_, VK_FORMAT_R32G32B32A32_UINT);
   visibilityWidth_ = width;
   visibilityHeight_ = height;
 }
@@ -315,7 +325,7 @@ void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
-      gpu::storageBinding(gpu_types::kRenderBindingVisibility, visibility_),
+      gpu::uniformTexelBinding(gpu_types::kRenderBindingVisibility, visibilityTexels_.get()),
       gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_)};
   // Four pixels per invocation, at most kPlanesGroups workgroups striding over the rest: lavapipe
   // pays for every workgroup it starts.

@@ -103,6 +103,10 @@ class CrowdRenderer {
   SplatLists splatLists_;
   gpu::GraphicsProgram resolve_;
   gpu::Buffer visibility_;
+  // The visibility buffer as texels of two pixels each (R32G32B32A32_UINT), as the planes pass
+  // reads it: lavapipe gathers a texel fetch's lanes in vector loads, where it moves a storage
+  // load's components one lane at a time.
+  gpu::Handle<VkBufferView> visibilityTexels_;
   gpu::Buffer draws_;         // indirect draws of the joints too wide to splat, one per chunk
   gpu::Buffer nearList_;      // their indices
   gpu::Buffer onScreenList_;  // characters on screen, whose bodies the splat draws
@@ -114,6 +118,7 @@ class CrowdRenderer {
   uint32_t visibilityWidth_ = 0, visibilityHeight_ = 0;
   std::vector<std::pair<gpu::Buffer, uint32_t>>
       retiredVisibility_;  // buffers, records left before freeing
+  std::vector<std::pair<gpu::Handle<VkBufferView>, uint32_t>> retiredViews_;  // the same for views
   void ensureVisibility(uint32_t width, uint32_t height);
   bool splats(const DrawParams& params) const;
   void drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
