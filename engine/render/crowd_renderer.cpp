@@ -115,8 +115,9 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
   walls_ = gpu::GraphicsProgram(context, wallDesc);
 
   if (splatSupported_) {
-    splat_ = makeSplatPrograms(context, splatWalk_);
-    splatLists_ = makeSplatLists(context);
+    const SplatCapacity capacity = splatCapacityFor(splatWalk_);
+    splat_ = makeSplatPrograms(context, splatWalk_, capacity.sprites, capacity.pixels);
+    splatLists_ = makeSplatLists(context, capacity.sprites, capacity.pixels);
     groundProgram_ = gpu::ComputeProgram(context, "ground.comp");
     planesProgram_ = gpu::ComputeProgram(context, "visibility_planes.comp");
     gpu::GraphicsPipelineDesc resolveDesc = groundDesc;
@@ -230,6 +231,8 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const FrameTa
     job.walkList = &walkList_;
     job.listCounts = &listCounts_;
     job.walk = splatWalk_;
+    job.spriteCapacity = splatCapacityFor(splatWalk_).sprites;
+    job.pixelCapacity = splatCapacityFor(splatWalk_).pixels;
     job.initialVisibility = groundCopied_ ? &groundVisibility_ : nullptr;
     job.record(cmd, splat_);
     return &visibility_;

@@ -63,6 +63,10 @@ SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,
           buffer(VkDeviceSize(pixelCapacity) * gpu_types::kSplatEntryBytes), buffer(16)};
 }
 
+SplatCapacity splatCapacityFor(SplatWalk walk) {
+  return walk == SplatWalk::PerJoint ? SplatCapacity{} : SplatCapacity{1u, 1u};
+}
+
 VkDeviceSize listCountsBytes(size_t chunks) {
   return std::max<size_t>(chunks, 1) * gpu_types::kSplatListArgsWords * sizeof(uint32_t);
 }

@@ -76,6 +76,15 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context, SplatWalk walk,
 // Bytes of the list-counts buffer for `chunks` chunks (render_bindings.h, kSplatListArgsWords).
 VkDeviceSize listCountsBytes(size_t chunks);
 
+// The work lists' capacities a walk needs: a walk per joint reserves its pixels in them (the
+// defaults of render_bindings.h); a walk per character ray-casts its pixels itself and writes
+// none, so its lists hold one sprite and one entry (its bindings still exist): 48 MiB less.
+struct SplatCapacity {
+  uint32_t sprites = gpu_types::kSplatSpriteCapacity;
+  uint32_t pixels = gpu_types::kSplatPixelCapacity;
+};
+SplatCapacity splatCapacityFor(SplatWalk walk);
+
 // The work lists for those capacities (device-local).
 struct SplatLists {
   gpu::Buffer sprites, pixelOwners, counters;

@@ -77,6 +77,15 @@ class ScopedEnv {
 };
 }  // namespace
 
+TEST_CASE("SplatJob: a walk per character needs work lists of one sprite and one entry") {
+  const render::SplatCapacity perJoint = render::splatCapacityFor(render::SplatWalk::PerJoint);
+  CHECK(perJoint.sprites == gpu_types::kSplatSpriteCapacity);
+  CHECK(perJoint.pixels == gpu_types::kSplatPixelCapacity);
+  const render::SplatCapacity perCharacter =
+      render::splatCapacityFor(render::SplatWalk::PerCharacter);
+  CHECK((perCharacter.sprites == 1u && perCharacter.pixels == 1u));
+}
+
 TEST_CASE("SplatJob: the walk by the device's type, or as THRONG_SPLAT_WALK says") {
   const ScopedEnv walkEnv("THRONG_SPLAT_WALK");
   gpu::DeviceInfo cpu, gpuDevice;
