@@ -135,10 +135,12 @@ CrowdRenderer::CrowdRenderer(const gpu::Context& context, VkFormat colorFormat,
 }
 
 void CrowdRenderer::ensureVisibility(uint32_t width, uint32_t height) {
-  for (auto it = retiredVisibility_.begin(); it != retiredVisibility_.end();)
-    it = --it->second == 0 ? retiredVisibility_.erase(it) : std::next(it);
-  for (auto it = retiredViews_.begin(); it != retiredViews_.end();)
-    it = --it->second == 0 ? retiredViews_.erase(it) : std::next(it);
+  const auto age = [](auto& retired) {  // one record closer to freeing each
+    for (auto it = retired.begin(); it != retired.end();)
+      it = --it->second == 0 ? retired.erase(it) : std::next(it);
+  };
+  age(retiredVisibility_);
+  age(retiredViews_);
   if (visibility_ && visibilityWidth_ == width && visibilityHeight_ == height) return;
   if (visibility_) {
     retiredVisibility_.emplace_back(std::move(visibility_), kFramesInFlight + 1);
@@ -231,8 +233,9 @@ const gpu::Buffer* CrowdRenderer::recordSplat(VkCommandBuffer cmd, const FrameTa
     job.walkList = &walkList_;
     job.listCounts = &listCounts_;
     job.walk = splatWalk_;
-    job.spriteCapacity = splatCapacityFor(splatWalk_).sprites;
-    job.pixelCapacity = splatCapacityFor(splatWalk_).pixels;
+    const SplatCapacity capacity = splatCapacityFor(splatWalk_);
+    job.spriteCapacity = capacity.sprites;
+    job.pixelCapacity = capacity.pixels;
     job.initialVisibility = groundCopied_ ? &groundVisibility_ : nullptr;
     job.record(cmd, splat_);
     return &visibility_;

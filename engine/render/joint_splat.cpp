@@ -51,7 +51,10 @@ SplatPrograms makeSplatPrograms(const gpu::Context& context, SplatWalk walk,
   return {gpu::ComputeProgram(context, "joint_splat_list.comp"),
           gpu::ComputeProgram(context, "joint_splat.comp", splat),
           gpu::ComputeProgram(context, "joint_splat_walk.comp", walked),
-          gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities), walk};
+          walk == SplatWalk::PerJoint
+              ? gpu::ComputeProgram(context, "joint_splat_pixels.comp", capacities)
+              : gpu::ComputeProgram{},  // never recorded: not compiled
+          walk};
 }
 
 SplatLists makeSplatLists(const gpu::Context& context, uint32_t spriteCapacity,

@@ -65,7 +65,7 @@ struct SplatPrograms {
   gpu::ComputeProgram onScreen;  // joint_splat_list.comp: the characters on screen
   gpu::ComputeProgram joints;    // joint_splat.comp: their far bodies and the walk list
   gpu::ComputeProgram walk;      // joint_splat_walk.comp: the listed characters' joints
-  gpu::ComputeProgram pixels;    // joint_splat_pixels.comp: the entries of a walk per joint
+  gpu::ComputeProgram pixels;    // joint_splat_pixels.comp: the entries of a walk per joint (only)
   SplatWalk walkKind = SplatWalk::PerCharacter;  // what `walk` was specialized for
 };
 SplatPrograms makeSplatPrograms(const gpu::Context& context, SplatWalk walk,
