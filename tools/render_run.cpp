@@ -109,38 +109,61 @@ void printRenderTimes(const RenderOptions& o, const RenderInputs& in, const scen
       encoded.waitedMs / o.frames);
 }
 
-// One command buffer, its fence and timestamps, reused frame after frame.
+// One command buffer, its fence and timestamps, reused frame after frame. A frame submitted and
+// not yet waited for is waited for before the submitter goes, however the loop ends (an
+// encoder's error thrown while the device runs), so no buffer is freed under the device.
 struct FrameSubmitter {
   gpu::Context& context;
   gpu::CommandPool pool;
   VkCommandBuffer cmd;
   gpu::Fence fence;
   gpu::TimestampPool timestamps;
+  bool inFlight = false;
   explicit FrameSubmitter(gpu::Context& c)
       : context(c), pool(c), cmd(pool.allocate()), fence(c), timestamps(c, 8) {}
+  FrameSubmitter(const FrameSubmitter&) = delete;
+  FrameSubmitter& operator=(const FrameSubmitter&) = delete;
+  ~FrameSubmitter() {
+    if (!inFlight) return;
+    try {
+      fence.wait();
+    } catch (const std::exception&) {
+      // A lost device: nothing is left to wait for.
+    }
+  }
+  // Ends and submits the commands recorded into `cmd`.
+  void submit() {
+    gpu::endCommands(cmd);
+    gpu::submit(context, cmd, fence.get());
+    inFlight = true;
+  }
+  // Waits for the submitted commands to complete.
+  void wait() {
+    fence.wait();
+    fence.reset();
+    inFlight = false;
+  }
 };
 
-// Ends, submits and waits for the frame recorded into gpu.cmd.
 void submitAndWait(FrameSubmitter& gpu) {
-  gpu::endCommands(gpu.cmd);
-  gpu::submit(gpu.context, gpu.cmd, gpu.fence.get());
-  gpu.fence.wait();
-  gpu.fence.reset();
+  gpu.submit();
+  gpu.wait();
 }
 
-// Records, submits and waits for one frame with its readback; its GPU times.
-scene::FrameTimings runOneFrame(FrameSubmitter& gpu, scene::Scene& scene,
-                                const scene::SceneStep& step, render::CrowdRenderer& renderer,
-                                secondary::ClothLayer* cloth, const scene::FrameSettings& settings,
-                                render::OffscreenTarget& target) {
+// Records and submits one frame with its readback into slot `slot`; its timestamps' marks.
+scene::FrameTimestamps submitFrame(FrameSubmitter& gpu, scene::Scene& scene,
+                                   const scene::SceneStep& step, render::CrowdRenderer& renderer,
+                                   secondary::ClothLayer* cloth,
+                                   const scene::FrameSettings& settings,
+                                   const render::OffscreenTarget& target, uint32_t slot) {
   gpu.timestamps.reset();
   gpu::beginCommands(gpu.cmd);
   const scene::FrameTimestamps marks = scene::recordFrame(
       gpu.cmd, gpu.context, scene, step, renderer, cloth, settings, gpu.timestamps);
-  render::recordReadback(gpu.cmd, target);
+  render::recordReadback(gpu.cmd, target, slot);
   renderer.passTimer().mark(gpu.cmd, "readback");
-  submitAndWait(gpu);
-  return scene::readFrameTimings(gpu.timestamps, marks);
+  gpu.submit();
+  return marks;
 }
 
 // What the first frame would pay once (scene::FramePreparation and the readback's first
@@ -226,7 +249,7 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   scene::Scene& scene = *scenePtr;
   render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
   render::OffscreenTarget target =
-      render::makeOffscreenTarget(context, in.size.width, in.size.height);
+      render::makeOffscreenTarget(context, in.size.width, in.size.height, /*readbackSlots=*/2);
   scene::FrameSettings settings = offscreenSettings(o, in, target);
   std::unique_ptr<secondary::ClothLayer> cloth;
   if (in.clothDb)
@@ -244,17 +267,28 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   settings.camera = render::cameraAt(o.scene.cameraPath, 0.0f, in.camera);
   const double prepareMs = prepareFrames(gpu, scene, renderer, settings, target);
   if (o.report) progress.emplace("render", o.frames);
+  // A frame's pixels are read out of the readback and handed to the encoders while the next
+  // frame runs on the device: two readback slots, and still one frame in flight, so nothing the
+  // device reads is written by the host while it runs.
+  std::optional<int> unread;  // the frame whose pixels wait in slot unread % 2
+  auto outputFrame = [&](int frame) {
+    ImageRgba8 image = output.spareImage();  // an encoded frame's buffer: no fresh allocation
+    render::readbackInto(target, image, uint32_t(frame % 2));
+    output.push(std::move(image), frame);
+  };
   const auto wallStart = std::chrono::steady_clock::now();
   for (int frame = 0; frame < o.frames; ++frame) {
     const auto turnStart = std::chrono::steady_clock::now();
     settings.camera = render::cameraAt(o.scene.cameraPath, float(frame) * o.scene.dt, in.camera);
-    const scene::FrameTimings timings =
-        runOneFrame(gpu, scene, scene.advance(o.scene.dt), renderer, cloth.get(), settings, target);
+    const scene::SceneStep step = scene.advance(o.scene.dt);
+    const scene::FrameTimestamps marks =
+        submitFrame(gpu, scene, step, renderer, cloth.get(), settings, target, uint32_t(frame % 2));
+    if (unread) outputFrame(*unread);
+    gpu.wait();
+    unread = frame;
+    const scene::FrameTimings timings = scene::readFrameTimings(gpu.timestamps, marks);
     series.add(timings);
     if (cloth) clothTimes.push_back(cloth->timings(0));
-    ImageRgba8 image = output.spareImage();  // an encoded frame's buffer: no fresh allocation
-    render::readbackInto(target, image);
-    output.push(std::move(image), frame);
     // Goals: the state machines see arrivals and plan new paths between frames (the device is
     // idle here), every half simulated second.
     if (scene.hasGoals() && (frame + 1) % std::max(1, int(std::lround(0.5f / o.scene.dt))) == 0)
@@ -266,6 +300,7 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
                   timings.steerMs + timings.synthesisMs, timings.renderMs);
     if (progress) progress->update(frame + 1, detail);
   }
+  if (unread) outputFrame(*unread);
   output.finish();
   trajectories.finish();
   if (progress) progress->finish();

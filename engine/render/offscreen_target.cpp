@@ -16,9 +16,12 @@ void checkTargetSize(const gpu::Context& context, uint32_t width, uint32_t heigh
                   "maxStorageBufferRange", visibilityBytes, context.info().maxStorageBufferRange);
 }
 
-OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height) {
+OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height,
+                                    uint32_t readbackSlots) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     fail("image size ", width, "x", height, " is outside 1..16384 pixels per side");
+  if (readbackSlots < 1 || readbackSlots > 2)
+    fail("an offscreen target's readback slots: expected 1..2, got ", readbackSlots);
   checkTargetSize(context, width, height, concat("a ", width, "x", height, " render target"));
   OffscreenTarget t;
   t.width = width;
@@ -30,17 +33,29 @@ OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width,
       gpu::Image2D(context, width, height, kDepthFormat,
                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                    VK_IMAGE_ASPECT_DEPTH_BIT);
-  t.readback = gpu::Buffer(context, VkDeviceSize(width) * height * 4,
-                           VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::HostVisible);
+  for (uint32_t slot = 0; slot < readbackSlots; ++slot)
+    t.readbacks.emplace_back(context, VkDeviceSize(width) * height * 4,
+                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::HostVisible);
   return t;
 }
 
-void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target) {
+namespace {
+
+// The readback slot `slot` of `target`, or Error naming the slots there are.
+const gpu::Buffer& readbackSlot(const OffscreenTarget& target, uint32_t slot) {
+  if (slot >= target.readbacks.size())
+    fail("readback slot ", slot, " of an offscreen target with ", target.readbacks.size());
+  return target.readbacks[slot];
+}
+
+}  // namespace
+
+void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target, uint32_t slot) {
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {target.width, target.height, 1};
   vkCmdCopyImageToBuffer(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         target.readback.get(), 1, &region);
+                         readbackSlot(target, slot).get(), 1, &region);
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
   barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -48,16 +63,17 @@ void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target) {
                        &barrier, 0, nullptr, 0, nullptr);
 }
 
-void readbackInto(const OffscreenTarget& target, ImageRgba8& image) {
+void readbackInto(const OffscreenTarget& target, ImageRgba8& image, uint32_t slot) {
+  const gpu::Buffer& readback = readbackSlot(target, slot);
   image.width = static_cast<int>(target.width);
   image.height = static_cast<int>(target.height);
   image.pixels.resize(size_t(target.width) * target.height);  // a recycled frame keeps its memory
-  std::memcpy(image.pixels.data(), target.readback.mapped(), image.pixels.size() * sizeof(Rgba8));
+  std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size() * sizeof(Rgba8));
 }
 
-ImageRgba8 readbackImage(const OffscreenTarget& target) {
+ImageRgba8 readbackImage(const OffscreenTarget& target, uint32_t slot) {
   ImageRgba8 image;
-  readbackInto(target, image);
+  readbackInto(target, image, slot);
   return image;
 }
 

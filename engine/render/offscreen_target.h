@@ -1,6 +1,7 @@
 #pragma once
 // Colour + depth images to render into without a window, and their readback to an image.
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 #include "gpu/buffer.h"
@@ -15,7 +16,9 @@ constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 struct OffscreenTarget {
   gpu::Image2D color;
   gpu::Image2D depth;
-  gpu::Buffer readback;  // host-visible copy of the colour image
+  // Host-visible copies of the colour image, one per slot: a frame loop reads one frame's pixels
+  // out of one slot while the next frame is copied into the other.
+  std::vector<gpu::Buffer> readbacks;
   uint32_t width = 0, height = 0;
 };
 
@@ -26,17 +29,20 @@ struct OffscreenTarget {
 void checkTargetSize(const gpu::Context& context, uint32_t width, uint32_t height,
                      const std::string& what);
 
-// Throws Error for sizes outside 1..16384, gpu::LimitError past the device's limits.
-OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height);
+// Throws Error for sizes outside 1..16384 or readback slots outside 1..2, gpu::LimitError past
+// the device's limits.
+OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height,
+                                    uint32_t readbackSlots = 1);
 
 // The target's images as a frame's targets, left ready for recordReadback.
 FrameTargets offscreenFrameTargets(const OffscreenTarget& target);
 
-// Records the copy of the colour image (left in TRANSFER_SRC layout by the frame) to `readback`.
-void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target);
-// After the commands completed: the pixels as an image.
-ImageRgba8 readbackImage(const OffscreenTarget& target);
+// Records the copy of the colour image (left in TRANSFER_SRC layout by the frame) to readback
+// slot `slot`.
+void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target, uint32_t slot = 0);
+// After the commands completed: slot `slot`'s pixels as an image.
+ImageRgba8 readbackImage(const OffscreenTarget& target, uint32_t slot = 0);
 // The same into `image`, reusing its pixels' memory (a frame loop's recycled buffer).
-void readbackInto(const OffscreenTarget& target, ImageRgba8& image);
+void readbackInto(const OffscreenTarget& target, ImageRgba8& image, uint32_t slot = 0);
 
 }  // namespace throng::render
