@@ -14,11 +14,15 @@
 
 namespace throng {
 namespace {
-// Half the hardware threads (the other half renders: on a CPU device it is the device), 1 to 8.
+// At the lowest priority, one worker per hardware thread (1 to 8): they take only the idle time
+// the frame loop leaves, and on a CPU device it leaves that on every core in short pieces (one
+// device thread waiting for another, the readback) that one worker cannot fill while it also
+// waits for the disk. At the caller's priority, half the hardware threads: the other half renders.
 int workerCount(const FrameOutputOptions& options) {
   if (options.video) return 1;
   if (options.workers > 0) return std::min(options.workers, 8);
-  return std::clamp(int(std::thread::hardware_concurrency() / 2), 1, 8);
+  const int threads = int(std::thread::hardware_concurrency());
+  return std::clamp(options.lowPriority ? threads : threads / 2, 1, 8);
 }
 
 // The calling thread's nice value, raised to the lowest priority first when `lower` (Linux

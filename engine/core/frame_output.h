@@ -27,7 +27,9 @@ struct FrameOutputOptions {
   int width = 0, height = 0;
   double fps = 30.0;
   int queueDepth = 3;
-  int workers = 0;  // PNG encoders (1 with a video); 0: half the hardware threads, 1 to 8
+  // PNG encoders (1 with a video); 0: one per hardware thread at the lowest priority, half the
+  // hardware threads otherwise, 1 to 8.
+  int workers = 0;
   // Workers at the lowest scheduling priority (nice 19): on a CPU device the frame loop's threads
   // are the device, and an encoder sharing their cores would stretch every pass it preempts.
   // Encoding then takes the cores' idle time; the bounded queue makes the loop wait when it

@@ -5,11 +5,13 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <span>
 #include <string>
+#include <thread>
 
 #include "core/binary_io.h"
 #include "core/error.h"
@@ -181,6 +183,21 @@ TEST_CASE("frame output: several PNG workers write every frame once, in its own 
   video.pngFolder.reset();
   video.video = dir / "clip.mp4";
   if (haveFfmpeg()) CHECK(FrameOutput(video).stats().workers == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("frame output: by default one worker per hardware thread at the lowest priority") {
+  fs::path dir = freshFolder("frame_output_default_workers");
+  const int threads = int(std::thread::hardware_concurrency());
+  for (const bool low : {true, false}) {
+    CAPTURE(low);
+    FrameOutputOptions options = pngOptions(dir, 8, 8, 0, 1);
+    options.lowPriority = low;
+    FrameOutput output(options);
+    output.finish();
+    // At the caller's priority half of them: the other half renders.
+    CHECK(output.stats().workers == std::clamp(low ? threads : threads / 2, 1, 8));
+  }
   fs::remove_all(dir);
 }
 
