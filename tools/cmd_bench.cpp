@@ -2,7 +2,6 @@
 // and with --cloth a whole frame of a caped crowd (bench_cloth.h); medians of many frames after
 // warm-up, GPU timestamps. Prints a table and writes JSON.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <iterator>
 #include <memory>
@@ -14,47 +13,20 @@
 #include "bench_cloth.h"
 #include "bench_experiments.h"
 #include "bench_render_loop.h"
+#include "bench_rows.h"
 #include "bench_scene.h"
+#include "bench_twin_pairs.h"
 #include "command.h"
 #include "core/error.h"
 #include "core/file_io.h"
 #include "core/log.h"
-#include "crowd/spatial_order.h"
-#include "gpu/commands.h"
 #include "progress.h"
-#include "render/offscreen_target.h"
-#include "scene/frame.h"
 #include "scene_options.h"
 #include "stats.h"
-#include "synth/cpu_synth.h"
 #include "synthesis_timer.h"
-#include "warm_up.h"
 
 namespace throng::tools {
 namespace {
-
-struct BenchOptions {
-  std::string json;
-  std::vector<uint32_t> counts{1000, 10000, 100000};
-  int frames = 20;
-  int warmup = 3;
-  double warmupSeconds = 0.5;  // and at least this long (a GPU's clocks rise with load)
-  uint32_t renderCharacters = 10000;
-  uint32_t clipSetCharacters = 8000;  // the storyboard-crowd row
-  std::string size = "1280x720";
-  std::string device;
-  bool quick = false;
-  std::string experiments;  // directory for the paper's experiments (CSV + PNG); empty: skip
-  std::string cloth;        // .tsc for the caped-crowd row; empty: the row is skipped (said so)
-  bool clothOnly = false;   // only the caped-crowd row (seconds instead of a minute)
-  // Which kinds of row run (kRowKinds); empty: all.
-  std::vector<std::string> rows;
-  std::vector<uint32_t> frameCounts{100000, 1000000};  // the whole-frame rows
-  float updateLag = 2.0f;  // pixels: the lod+cache+rate rows' update-rate LOD
-  bool wants(const std::string& kind) const {
-    return rows.empty() || std::find(rows.begin(), rows.end(), kind) != rows.end();
-  }
-};
 
 // gpu: full GPU synthesis; lod; lod+cache; lod+cache+rate: with the update-rate LOD at
 // --update-lag; cpu: the CPU twin; clip-sets: four clip sets against
@@ -65,145 +37,6 @@ const std::vector<std::string> kRowKinds{"gpu",        "lod",       "lod+cache",
                                          "cpu",        "clip-sets", "render",    "frame",
                                          "render-loop"};
 
-struct Row {
-  std::string variant;
-  uint32_t characters = 0;
-  double synthesisMs = 0.0;
-  double renderMs = 0.0;  // 0 when the variant does not render
-  int frames = 0;
-  std::optional<SynthesisPassTimes> passes;  // GPU synthesis rows: median of each pass
-  std::optional<RenderRunTimes> loop;        // the render-loop row: wall time and encoding
-  double movedShare = 0.0;  // the update-rate LOD's rows: median share of chunks moved per step
-};
-
-constexpr float kDt = 1.0f / 30.0f;
-
-crowd::Crowd benchCrowd(uint32_t n) {
-  crowd::ScenarioOptions options;
-  options.characters = n;
-  options.seed = 42;
-  return crowd::makeScenario(options);
-}
-
-enum class Variant { Full, Lod, LodCache, LodCacheRate };
-
-Row benchGpuSynthesis(const gpu::Context& context, const synth::SynthPrograms& programs,
-                      const anim::MotionPair& pair, const anim::Skeleton& skeleton, uint32_t n,
-                      const BenchOptions& o, Variant variant) {
-  crowd::Crowd crowd = benchCrowd(n);
-  synth::MotionCacheOptions cache{variant >= Variant::LodCache, 0.05f, 20ull << 20};
-  if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
-  synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
-  if (variant == Variant::LodCacheRate) {  // as `throng render --lod-update-lag` builds it
-    lod.updateLagPixels = o.updateLag;
-    crowd = crowd::permuted(crowd, crowd::spatialOrder(crowd));
-  }
-  synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, crowd, cache, lod);
-  // The default wide camera of `throng render` for this crowd, at 1280x720.
-  crowd::ScenarioOptions scenario;
-  scenario.characters = n;
-  render::Camera view = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
-  synth::CoverageCamera camera =
-      synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
-  SynthesisTimer timer(context);
-  std::vector<double> ms;
-  std::vector<SynthesisPassTimes> passes;
-  std::vector<double> moved;
-  for (WarmUp warmUp(o.warmup, o.warmupSeconds); int(ms.size()) < o.frames;) {
-    double frameMs =
-        timer.frame(programs, synth, kDt, {}, variant == Variant::Full ? nullptr : &camera);
-    if (!warmUp.measured()) continue;
-    ms.push_back(frameMs);
-    passes.push_back(timer.lastPasses());
-    if (synth.updateRate)  // read after the frame's timestamps: not in its time
-      moved.push_back(double(synth::readMovedChunks(context, *synth.updateRate)) /
-                      synth.updateRate->chunkCount);
-  }
-  const char* names[] = {"gpu-synthesis", "gpu-synthesis-lod", "gpu-synthesis-lod+cache",
-                         "gpu-synthesis-lod+cache+rate"};
-  if (cache.enabled && synth::readCacheStats(synth).bytesUsed > cache.budgetBytes)
-    fail("motion cache exceeded its budget");
-  return {names[static_cast<int>(variant)],
-          n,
-          median(ms),
-          0.0,
-          o.frames,
-          medianPasses(passes),
-          std::nullopt,
-          moved.empty() ? 0.0 : median(moved)};
-}
-
-Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads,
-                      const BenchOptions& o) {
-  crowd::Crowd crowd = benchCrowd(n);
-  std::vector<synth::JointPoint> joints(size_t(n) * pair.jointCount());
-  std::vector<double> ms;
-  int frames =
-      n >= 100000 ? std::max(5, o.frames / 2) : o.frames;  // the slow baseline gets fewer frames
-  for (int f = 0; f < 1 + frames; ++f) {
-    auto start = std::chrono::steady_clock::now();
-    synth::stepCrowdCpu(pair, crowd, kDt, threads);
-    synth::poseCrowdCpu(pair, crowd, joints, threads);
-    auto end = std::chrono::steady_clock::now();
-    if (f >= 1) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
-  }
-  return {threads == 1 ? "cpu-1-thread" : concat("cpu-", threads, "-threads"), n, median(ms), 0.0,
-          frames};
-}
-
-// Synthesis and render of `characters` at --size through the scene's frame, seen by the named
-// camera preset framed around the crowd, or ("overhead") from above a tenth of its ground.
-Row benchRender(const gpu::Context& context, const anim::MotionPair& pair,
-                const anim::Skeleton& skeleton, const BenchOptions& o, Variant variant,
-                uint32_t characters, const std::string& cameraName = "wide") {
-  Size size = parseSize(o.size);
-  crowd::ScenarioOptions scenario;
-  scenario.characters = characters;
-  scenario.seed = 42;
-  crowd::Crowd crowd = crowd::makeScenario(scenario);
-  synth::MotionCacheOptions cache{variant == Variant::LodCache, 0.05f, 20ull << 20};
-  if (cache.enabled) anim::quantizeSpeeds(crowd.motion, cache.bucketWidth);
-  synth::LodOptions lod{variant != Variant::Full, {}, &skeleton};
-  scene::SceneSetup setup;
-  setup.pairs.push_back(pair);
-  setup.groupFirst = {0, uint32_t(crowd.size())};
-  setup.crowd = std::move(crowd);
-  const scene::Scene scene(context, std::move(setup), cache, lod);
-  render::CrowdRenderer renderer(context, render::kColorFormat, render::kDepthFormat);
-  render::OffscreenTarget target = render::makeOffscreenTarget(context, size.width, size.height);
-  scene::FrameSettings settings;
-  const float extent = crowd::scenarioExtent(scenario);
-  settings.camera = cameraName == "overhead"
-                        ? render::overheadCamera(extent, 0.1f, float(size.width) / size.height)
-                        : render::cameraPreset(cameraName, extent);
-  settings.targets = render::offscreenFrameTargets(target);
-  gpu::CommandPool pool(context);
-  VkCommandBuffer cmd = pool.allocate();
-  gpu::Fence fence(context);
-  gpu::TimestampPool timestamps(context, 4);
-  std::vector<double> synthMs, renderMs;
-  for (WarmUp warmUp(o.warmup, o.warmupSeconds); int(renderMs.size()) < o.frames;) {
-    timestamps.reset();
-    gpu::beginCommands(cmd);
-    scene::SceneStep step;
-    step.dt = kDt;
-    scene::FrameTimestamps marks =
-        scene::recordFrame(cmd, context, scene, step, renderer, nullptr, settings, timestamps);
-    gpu::endCommands(cmd);
-    gpu::submit(context, cmd, fence.get());
-    fence.wait();
-    fence.reset();
-    if (!warmUp.measured()) continue;
-    scene::FrameTimings t = scene::readFrameTimings(timestamps, marks);
-    synthMs.push_back(t.synthesisMs);
-    renderMs.push_back(t.renderMs);
-  }
-  const char* names[] = {"gpu-synthesis+render-", "gpu-lod+render-", "gpu-lod+cache+render-"};
-  const std::string camera = cameraName == "wide" ? "" : cameraName + "-";
-  return {concat(names[static_cast<int>(variant)], camera, o.size), characters, median(synthMs),
-          median(renderMs), o.frames};
-}
-
 const Row* findRow(const std::vector<Row>& rows, const std::string& variant, uint32_t n) {
   for (const Row& r : rows)
     if (r.variant == variant && r.characters == n) return &r;
@@ -211,7 +44,8 @@ const Row* findRow(const std::vector<Row>& rows, const std::string& variant, uin
 }
 
 // The issues' targets are ratios measured in one run: print them so a reader need not divide.
-void printTargetRatios(const std::vector<Row>& rows, unsigned threads) {
+void printTargetRatios(const std::vector<Row>& rows, const std::vector<TwinPairResult>& pairs,
+                       unsigned threads) {
   const std::string cpuMt = threads > 1 ? concat("cpu-", threads, "-threads") : "cpu-1-thread";
   std::printf("ratios (higher is faster):\n");
   for (const Row& r : rows) {
@@ -227,6 +61,9 @@ void printTargetRatios(const std::vector<Row>& rows, unsigned threads) {
                   cpu->synthesisMs / cached->synthesisMs);
     std::printf("\n");
   }
+  for (const TwinPairResult& p : pairs)
+    std::printf("  %7u characters: gpu full vs %s, a frame of each in turn %6.2fx (%.2f to %.2f)\n",
+                p.characters, cpuMt.c_str(), p.ratioMedian, p.ratioMin, p.ratioMax);
 }
 
 constexpr const char* kClothSkipped =
@@ -310,6 +147,7 @@ struct BenchSession {
   Progress progress;
   long long stagesDone = 0;
   std::vector<Row> rows;
+  std::vector<TwinPairResult> twinPairs;
 
   void next(const std::string& name) { progress.stage(stagesDone++, name); }
   void report(const Row& r) {
@@ -345,7 +183,8 @@ long long benchStageCount(const BenchOptions& o, unsigned threads) {
   if (o.clothOnly) return o.cloth.empty() ? 0 : 1;
   const long long perCount = (o.wants("gpu") ? 1 : 0) + (o.wants("lod") ? 1 : 0) +
                              (o.wants("lod+cache") ? 1 : 0) + (o.wants("lod+cache+rate") ? 1 : 0) +
-                             (o.wants("cpu") ? (threads > 1 ? 2 : 1) : 0);
+                             (o.wants("cpu") ? (threads > 1 ? 2 : 1) : 0) +
+                             (o.wants("gpu") && o.wants("cpu") ? 1 : 0);
   return static_cast<long long>(o.counts.size()) * perCount + (o.wants("clip-sets") ? 1 : 0) +
          (o.wants("render") ? 2 : 0) +
          (o.wants("frame") ? kFrameCameras * static_cast<long long>(o.frameCounts.size()) : 0) +
@@ -371,6 +210,16 @@ void runSynthesisRows(BenchSession& s) {
       s.next(concat("CPU twin, ", s.threads, " threads, ", n, " characters"));
       s.report(benchCpuSynthesis(s.pair, n, s.threads, s.o));
     }
+    if (!s.o.wants("gpu")) continue;
+    s.next(concat("GPU full path and CPU twin in turn, ", n, " characters"));
+    s.twinPairs.push_back(benchFullAgainstTwin(s.context, s.programs, s.pair, skeleton, n,
+                                               s.threads, twinFrames(n, s.o), s.o.warmup,
+                                               s.o.warmupSeconds));
+    const TwinPairResult& r = s.twinPairs.back();
+    std::printf(
+        "  in turn: gpu full %.3f ms, cpu twin (%u threads) %.3f ms; twin / gpu %.2fx "
+        "(%.2f to %.2f over %d pairs)\n",
+        r.gpuMs, r.threads, r.twinMs, r.ratioMedian, r.ratioMin, r.ratioMax, r.pairs);
   }
 }
 
@@ -476,6 +325,16 @@ nlohmann::json benchJson(const BenchSession& s, const std::optional<ClothBenchRe
     }
     doc["results"].push_back(row);
   }
+  doc["twin_pairs"] = nlohmann::json::array();
+  for (const TwinPairResult& p : s.twinPairs)
+    doc["twin_pairs"].push_back({{"characters", p.characters},
+                                 {"cpu_threads", p.threads},
+                                 {"pairs", p.pairs},
+                                 {"gpu_ms_median", p.gpuMs},
+                                 {"twin_ms_median", p.twinMs},
+                                 {"ratio_median", p.ratioMedian},
+                                 {"ratio_min", p.ratioMin},
+                                 {"ratio_max", p.ratioMax}});
   if (cloth)
     doc["cloth"] = clothJson(*cloth, ClothBenchOptions{}.targetMs);
   else
@@ -504,7 +363,7 @@ void runBench(BenchOptions& o) {
   }
   const std::optional<ClothBenchResult> cloth = runClothRow(s);
   s.progress.finish();
-  printTargetRatios(s.rows, threads);
+  printTargetRatios(s.rows, s.twinPairs, threads);
   if (!o.experiments.empty()) runExperiments(s);
   if (!o.json.empty()) {
     writeTextFileAtomic(o.json, benchJson(s, cloth).dump(2) + "\n");
@@ -539,7 +398,8 @@ void addBenchCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--rows", options->rows,
                   "Only these kinds of row: gpu, lod, lod+cache, lod+cache+rate, cpu, clip-sets, "
-                  "render, frame, render-loop (default: all)")
+                  "render, frame, render-loop (default: all); gpu with cpu adds the two in turn, "
+                  "frame by frame")
       ->check(CLI::IsMember(kRowKinds));
   cmd->add_option("--update-lag", options->updateLag,
                   "Pixels of the lod+cache+rate rows' update-rate LOD (far characters move every "

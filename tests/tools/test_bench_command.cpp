@@ -64,6 +64,18 @@ TEST_CASE("bench --quick: JSON rows for every variant, medians present") {
     CHECK(row["prepare_ms"].get<double>() > 0.0);  // the one-time costs, before the first frame
   }
   CHECK(run.output.find("wall per frame") != std::string::npos);
+  // The full path against the twin, a frame of each in turn: one entry per crowd size.
+  REQUIRE(doc["twin_pairs"].size() == 1);
+  const auto& pair = doc["twin_pairs"][0];
+  CHECK(pair["characters"] == 1000);
+  CHECK(pair["pairs"] == 5);
+  CHECK(pair["cpu_threads"] == doc["cpu_threads"]);
+  CHECK(pair["gpu_ms_median"].get<double>() > 0.0);
+  CHECK(pair["twin_ms_median"].get<double>() > 0.0);
+  CHECK(pair["ratio_min"].get<double>() <= pair["ratio_median"].get<double>());
+  CHECK(pair["ratio_median"].get<double>() <= pair["ratio_max"].get<double>());
+  CHECK(pair["ratio_min"].get<double>() > 0.0);
+  CHECK(run.output.find("a frame of each in turn") != std::string::npos);
   CHECK(renderLoopFolders() == foldersBefore);
   CHECK(doc["joints_per_character"].get<int>() == 25);
   CHECK(run.output.find("cloth row skipped: no --cloth") != std::string::npos);

@@ -1,0 +1,61 @@
+#include "bench_twin_pairs.h"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "core/clock.h"
+#include "crowd/scenario.h"
+#include "stats.h"
+#include "synth/cpu_synth.h"
+#include "synth/crowd_synth.h"
+#include "synthesis_timer.h"
+#include "warm_up.h"
+
+namespace throng::tools {
+
+crowd::Crowd benchCrowd(uint32_t characters) {
+  crowd::ScenarioOptions options;
+  options.characters = characters;
+  options.seed = 42;
+  return crowd::makeScenario(options);
+}
+
+TwinPairResult benchFullAgainstTwin(const gpu::Context& context,
+                                    const synth::SynthPrograms& programs,
+                                    const anim::MotionPair& pair, const anim::Skeleton& skeleton,
+                                    uint32_t characters, unsigned threads, int pairs, int warmup,
+                                    double warmupSeconds) {
+  constexpr float kDt = 1.0f / 30.0f;
+  // Both start from the same crowd and take the same steps, so each pair's frames are alike.
+  const crowd::Crowd gpuCrowd = benchCrowd(characters);
+  crowd::Crowd twinCrowd = gpuCrowd;
+  const synth::LodOptions everyJoint{false, {}, &skeleton};
+  const synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, gpuCrowd, {}, everyJoint);
+  std::vector<synth::JointPoint> joints(size_t(characters) * pair.jointCount());
+  SynthesisTimer timer(context);
+  std::vector<double> gpuMs, twinMs, ratios;
+  for (WarmUp warmUp(warmup, warmupSeconds); int(ratios.size()) < pairs;) {
+    const double gpu = timer.frame(programs, synth, kDt);
+    const auto start = std::chrono::steady_clock::now();
+    synth::stepCrowdCpu(pair, twinCrowd, kDt, threads);
+    synth::poseCrowdCpu(pair, twinCrowd, joints, threads);
+    const double twin = millisecondsSince(start);
+    if (!warmUp.measured()) continue;
+    gpuMs.push_back(gpu);
+    twinMs.push_back(twin);
+    ratios.push_back(twin / gpu);
+  }
+  TwinPairResult r;
+  r.characters = characters;
+  r.threads = threads;
+  r.pairs = pairs;
+  r.gpuMs = median(gpuMs);
+  r.twinMs = median(twinMs);
+  r.ratioMedian = median(ratios);
+  r.ratioMin = *std::min_element(ratios.begin(), ratios.end());
+  r.ratioMax = *std::max_element(ratios.begin(), ratios.end());
+  return r;
+}
+
+}  // namespace throng::tools
