@@ -267,9 +267,9 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
   settings.camera = render::cameraAt(o.scene.cameraPath, 0.0f, in.camera);
   const double prepareMs = prepareFrames(gpu, scene, renderer, settings, target);
   if (o.report) progress.emplace("render", o.frames);
-  // A frame's pixels are read out of the readback and handed to the encoders while the next
-  // frame runs on the device: two readback slots, and still one frame in flight, so nothing the
-  // device reads is written by the host while it runs.
+  // A frame's pixels are read out of its readback slot and handed to the encoders while the next
+  // frame runs on the device with the other slot: two slots, and still one frame in flight, so
+  // nothing the device reads is written by the host while it runs.
   std::optional<int> unread;  // the frame whose pixels wait in slot unread % 2
   auto outputFrame = [&](int frame) {
     ImageRgba8 image = output.spareImage();  // an encoded frame's buffer: no fresh allocation
@@ -281,8 +281,10 @@ RenderRunTimes renderFrames(gpu::Context& context, RenderOptions& o, RenderInput
     const auto turnStart = std::chrono::steady_clock::now();
     settings.camera = render::cameraAt(o.scene.cameraPath, float(frame) * o.scene.dt, in.camera);
     const scene::SceneStep step = scene.advance(o.scene.dt);
+    const auto slot = uint32_t(frame % 2);
+    settings.targets = render::offscreenFrameTargets(target, slot);  // in place: a slot's image
     const scene::FrameTimestamps marks =
-        submitFrame(gpu, scene, step, renderer, cloth.get(), settings, target, uint32_t(frame % 2));
+        submitFrame(gpu, scene, step, renderer, cloth.get(), settings, target, slot);
     if (unread) outputFrame(*unread);
     gpu.wait();
     unread = frame;

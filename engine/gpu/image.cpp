@@ -10,9 +10,24 @@
 
 namespace throng::gpu {
 
+bool Image2D::hostMappable(const Context& context, VkFormat format, VkImageUsageFlags usage,
+                           uint32_t width, uint32_t height) {
+  VkImageFormatProperties properties{};
+  if (vkGetPhysicalDeviceImageFormatProperties(context.physicalDevice(), format, VK_IMAGE_TYPE_2D,
+                                               VK_IMAGE_TILING_LINEAR, usage, 0,
+                                               &properties) != VK_SUCCESS)
+    return false;
+  return width <= properties.maxExtent.width && height <= properties.maxExtent.height;
+}
+
 Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkFormat format,
-                 VkImageUsageFlags usage, VkImageAspectFlags aspect)
+                 VkImageUsageFlags usage, VkImageAspectFlags aspect, ImageMemory memory)
     : format_(format), width_(width), height_(height), aspect_(aspect) {
+  const bool hostMapped = memory == ImageMemory::HostMapped;
+  if (hostMapped && !hostMappable(context, format, usage, width, height))
+    fail("a host-mapped ", width, "x", height,
+         " image: the device has no linear tiling for its "
+         "format and usage");
   THRONG_CHECK(width > 0 && height > 0, "image size must be positive, got ", width, "x", height);
   const bool attachment = (usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) != 0;
@@ -25,7 +40,7 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
   info.mipLevels = 1;
   info.arrayLayers = 1;
   info.samples = VK_SAMPLE_COUNT_1_BIT;
-  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.tiling = hostMapped ? VK_IMAGE_TILING_LINEAR : VK_IMAGE_TILING_OPTIMAL;
   info.usage = usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   VkImage image = VK_NULL_HANDLE;
@@ -34,9 +49,20 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
 
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(device, image, &requirements);
-  memory_ = context.allocateMemory(requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
-                                   concat("a ", width, "x", height, " image"));
+  memory_ = context.allocateMemory(
+      requirements,
+      hostMapped ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+      concat("a ", width, "x", height, " image"));
   VK_CHECK(vkBindImageMemory(device, image, memory_, 0));
+  if (hostMapped) {
+    VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    const VkImageSubresource subresource{aspect, 0, 0};
+    VkSubresourceLayout layout{};
+    vkGetImageSubresourceLayout(device, image, &subresource, &layout);
+    mapped_ = static_cast<uint8_t*>(mapped_) + layout.offset;
+    rowPitch_ = layout.rowPitch;
+  }
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
   viewInfo.image = image;

@@ -7,11 +7,21 @@
 
 namespace throng::gpu {
 
+// Where an image's texels live: device memory in the driver's own layout, or host-visible
+// memory in rows the host reads in place (linear tiling, mapped while the image lives).
+enum class ImageMemory { Device, HostMapped };
+
 class Image2D {
  public:
   Image2D() = default;
   Image2D(const Context& context, uint32_t width, uint32_t height, VkFormat format,
-          VkImageUsageFlags usage, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
+          VkImageUsageFlags usage, VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT,
+          ImageMemory memory = ImageMemory::Device);
+
+  // Whether the device makes host-mapped images of `format` with `usage` at width × height
+  // (linear tiling is optional for most uses, attachments above all).
+  static bool hostMappable(const Context& context, VkFormat format, VkImageUsageFlags usage,
+                           uint32_t width, uint32_t height);
 
   VkImage get() const { return image_; }
   VkImageView view() const { return view_; }
@@ -20,6 +30,10 @@ class Image2D {
   uint32_t height() const { return height_; }
   VkImageAspectFlags aspect() const { return aspect_; }
   explicit operator bool() const { return static_cast<bool>(image_); }
+  // A host-mapped image's first texel and the bytes from one row to the next (null and 0 for a
+  // device image). The host reads them in VK_IMAGE_LAYOUT_GENERAL, after the device's writes.
+  const uint8_t* mapped() const { return static_cast<const uint8_t*>(mapped_); }
+  VkDeviceSize rowPitch() const { return rowPitch_; }
 
  private:
   Handle<VkDeviceMemory> memory_;
@@ -28,11 +42,14 @@ class Image2D {
   VkFormat format_ = VK_FORMAT_UNDEFINED;
   uint32_t width_ = 0, height_ = 0;
   VkImageAspectFlags aspect_ = VK_IMAGE_ASPECT_COLOR_BIT;
+  void* mapped_ = nullptr;  // unmapped when memory_ is freed
+  VkDeviceSize rowPitch_ = 0;
 };
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                      VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
-                     VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+                     VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                     VkAccessFlags dstAccess);
 
 // Uploads tightly packed texels and leaves the image in SHADER_READ_ONLY_OPTIMAL.
 void uploadImage(const Context& context, const Image2D& image, std::span<const uint8_t> texels);

@@ -500,11 +500,17 @@ void CrowdRenderer::endDraw(VkCommandBuffer cmd, const FrameTargets& target) {
   passTimer_->mark(cmd, "end-pass");
   const VkImageLayout finalLayout = target.finalLayout;
 
-  VkAccessFlags dstAccess =
-      finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL ? VK_ACCESS_TRANSFER_READ_BIT : 0;
-  VkPipelineStageFlags dstStage = finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL
-                                      ? VK_PIPELINE_STAGE_TRANSFER_BIT
-                                      : VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;
+  // TRANSFER_SRC: a copy reads it next; GENERAL: the host reads it in place (a host-mapped
+  // offscreen target); otherwise presentation or a later pass of the caller's.
+  VkAccessFlags dstAccess = 0;
+  VkPipelineStageFlags dstStage = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;
+  if (finalLayout == VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL) {
+    dstAccess = VK_ACCESS_TRANSFER_READ_BIT;
+    dstStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  } else if (finalLayout == VK_IMAGE_LAYOUT_GENERAL) {
+    dstAccess = VK_ACCESS_HOST_READ_BIT;
+    dstStage = VK_PIPELINE_STAGE_HOST_BIT;
+  }
   gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT,
                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, finalLayout,
                        VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,

@@ -13,8 +13,8 @@ struct FrameTargets {
   VkImage depth = VK_NULL_HANDLE;
   VkImageView depthView = VK_NULL_HANDLE;
   uint32_t width = 0, height = 0;
-  // TRANSFER_SRC_OPTIMAL for readback, PRESENT_SRC_KHR for a swapchain, COLOR_ATTACHMENT_OPTIMAL
-  // when overlays draw after the crowd.
+  // TRANSFER_SRC_OPTIMAL for a readback by copy, GENERAL for one in place (a host-mapped image),
+  // PRESENT_SRC_KHR for a swapchain, COLOR_ATTACHMENT_OPTIMAL when overlays draw after the crowd.
   VkImageLayout finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
   // Colour and depth take transfer writes (TRANSFER_DST usage): while the view stands still, the
   // joint splat is then resolved by compute and copied in, instead of a full-screen fragment

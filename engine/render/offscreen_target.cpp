@@ -16,8 +16,35 @@ void checkTargetSize(const gpu::Context& context, uint32_t width, uint32_t heigh
                   "maxStorageBufferRange", visibilityBytes, context.info().maxStorageBufferRange);
 }
 
+namespace {
+
+constexpr VkImageUsageFlags kColorUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                          VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+
+bool readsInPlace(const gpu::Context& context, uint32_t width, uint32_t height, Readback readback) {
+  if (readback == Readback::Copy) return false;
+  const bool mappable =
+      gpu::Image2D::hostMappable(context, kColorFormat, kColorUsage, width, height);
+  if (readback == Readback::InPlace && !mappable)
+    fail("a ", width, "x", height, " render target read in place: the device maps no such image");
+  return readback == Readback::InPlace || (mappable && context.info().isCpu());
+}
+
+void checkSlot(const OffscreenTarget& target, uint32_t slot) {
+  const size_t slots = target.inPlace() ? target.colors.size() : target.readbacks.size();
+  if (slot >= slots) fail("readback slot ", slot, " of an offscreen target with ", slots);
+}
+
+}  // namespace
+
+const gpu::Image2D& OffscreenTarget::color(uint32_t slot) const {
+  checkSlot(*this, slot);
+  return colors[inPlace() ? slot : 0];
+}
+
 OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width, uint32_t height,
-                                    uint32_t readbackSlots) {
+                                    uint32_t readbackSlots, Readback readback) {
   if (width == 0 || height == 0 || width > 16384 || height > 16384)
     fail("image size ", width, "x", height, " is outside 1..16384 pixels per side");
   if (readbackSlots < 1 || readbackSlots > 2)
@@ -26,49 +53,65 @@ OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width,
   OffscreenTarget t;
   t.width = width;
   t.height = height;
-  t.color = gpu::Image2D(context, width, height, kColorFormat,
-                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                             VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  if (readsInPlace(context, width, height, readback)) {
+    for (uint32_t slot = 0; slot < readbackSlots; ++slot)
+      t.colors.emplace_back(context, width, height, kColorFormat, kColorUsage,
+                            VK_IMAGE_ASPECT_COLOR_BIT, gpu::ImageMemory::HostMapped);
+  } else {
+    t.colors.emplace_back(context, width, height, kColorFormat, kColorUsage);
+    for (uint32_t slot = 0; slot < readbackSlots; ++slot)
+      t.readbacks.emplace_back(context, VkDeviceSize(width) * height * 4,
+                               VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::HostVisible);
+  }
   t.depth =
       gpu::Image2D(context, width, height, kDepthFormat,
                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                    VK_IMAGE_ASPECT_DEPTH_BIT);
-  for (uint32_t slot = 0; slot < readbackSlots; ++slot)
-    t.readbacks.emplace_back(context, VkDeviceSize(width) * height * 4,
-                             VK_BUFFER_USAGE_TRANSFER_DST_BIT, gpu::MemoryUse::HostVisible);
   return t;
 }
 
-namespace {
-
-// The readback slot `slot` of `target`, or Error naming the slots there are.
-const gpu::Buffer& readbackSlot(const OffscreenTarget& target, uint32_t slot) {
-  if (slot >= target.readbacks.size())
-    fail("readback slot ", slot, " of an offscreen target with ", target.readbacks.size());
-  return target.readbacks[slot];
+VkImageLayout readbackLayout(const OffscreenTarget& target) {
+  return target.inPlace() ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
 }
 
-}  // namespace
-
 void recordReadback(VkCommandBuffer cmd, const OffscreenTarget& target, uint32_t slot) {
+  checkSlot(target, slot);
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  if (target.inPlace()) {  // whatever wrote the image last, and its layout's change
+    barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &barrier, 0, nullptr, 0, nullptr);
+    return;
+  }
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {target.width, target.height, 1};
-  vkCmdCopyImageToBuffer(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         readbackSlot(target, slot).get(), 1, &region);
-  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  vkCmdCopyImageToBuffer(cmd, target.color().get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         target.readbacks[slot].get(), 1, &region);
   barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-  barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                        &barrier, 0, nullptr, 0, nullptr);
 }
 
 void readbackInto(const OffscreenTarget& target, ImageRgba8& image, uint32_t slot) {
-  const gpu::Buffer& readback = readbackSlot(target, slot);
+  checkSlot(target, slot);
   image.width = static_cast<int>(target.width);
   image.height = static_cast<int>(target.height);
   image.pixels.resize(size_t(target.width) * target.height);  // a recycled frame keeps its memory
-  std::memcpy(image.pixels.data(), readback.mapped(), image.pixels.size() * sizeof(Rgba8));
+  const size_t rowBytes = size_t(target.width) * sizeof(Rgba8);
+  if (!target.inPlace()) {
+    std::memcpy(image.pixels.data(), target.readbacks[slot].mapped(), rowBytes * target.height);
+    return;
+  }
+  const gpu::Image2D& color = target.colors[slot];
+  if (color.rowPitch() == rowBytes) {
+    std::memcpy(image.pixels.data(), color.mapped(), rowBytes * target.height);
+    return;
+  }
+  for (uint32_t y = 0; y < target.height; ++y)
+    std::memcpy(&image.pixels[size_t(y) * target.width], color.mapped() + y * color.rowPitch(),
+                rowBytes);
 }
 
 ImageRgba8 readbackImage(const OffscreenTarget& target, uint32_t slot) {
@@ -77,15 +120,10 @@ ImageRgba8 readbackImage(const OffscreenTarget& target, uint32_t slot) {
   return image;
 }
 
-FrameTargets offscreenFrameTargets(const OffscreenTarget& target) {
-  return {target.color.get(),
-          target.color.view(),
-          target.depth.get(),
-          target.depth.view(),
-          target.width,
-          target.height,
-          VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-          true};
+FrameTargets offscreenFrameTargets(const OffscreenTarget& target, uint32_t slot) {
+  const gpu::Image2D& color = target.color(slot);
+  return {color.get(),  color.view(),  target.depth.get(),     target.depth.view(),
+          target.width, target.height, readbackLayout(target), true};
 }
 
 }  // namespace throng::render

@@ -1,5 +1,6 @@
-// The offscreen target's readback slots: a frame loop reads one frame's pixels out of one slot
-// while the next frame is copied into the other, so each slot must keep the copy made into it.
+// The offscreen target's readback slots, copied or read in place: a frame loop reads one frame's
+// pixels out of one slot while the next frame goes to the other, so each slot must keep what was
+// drawn for it.
 #include <doctest/doctest.h>
 
 #include "core/error.h"
@@ -12,21 +13,21 @@ using namespace throng;
 
 namespace {
 
-// Clears the target's colour image to `colour` and copies it into readback slot `slot`.
+// Clears slot `slot`'s colour image to `colour` and makes it the host's: the layout it is left
+// in (`from`: UNDEFINED the first time) is the target's readback layout.
 void recordClearAndReadback(VkCommandBuffer cmd, const render::OffscreenTarget& target,
-                            const VkClearColorValue& colour, uint32_t slot, bool first) {
-  gpu::transitionImage(cmd, target.color.get(), VK_IMAGE_ASPECT_COLOR_BIT,
-                       first ? VK_IMAGE_LAYOUT_UNDEFINED : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                            const VkClearColorValue& colour, uint32_t slot, VkImageLayout from) {
+  const VkImage image = target.color(slot).get();
+  gpu::transitionImage(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, from,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       first ? 0 : VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_ACCESS_TRANSFER_WRITE_BIT);
   const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdClearColorImage(cmd, target.color.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1,
-                       &range);
-  gpu::transitionImage(cmd, target.color.get(), VK_IMAGE_ASPECT_COLOR_BIT,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  vkCmdClearColorImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &colour, 1, &range);
+  gpu::transitionImage(cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       render::readbackLayout(target), VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_READ_BIT);
   render::recordReadback(cmd, target, slot);
 }
 
@@ -42,28 +43,56 @@ TEST_CASE("offscreen target: readback slots are checked") {
   gpu::Context& ctx = test::gpuContext();
   CHECK_THROWS_AS(render::makeOffscreenTarget(ctx, 8, 8, 0), Error);
   CHECK_THROWS_AS(render::makeOffscreenTarget(ctx, 8, 8, 3), Error);
-  const render::OffscreenTarget one = render::makeOffscreenTarget(ctx, 8, 8);
-  CHECK(one.readbacks.size() == 1);
-  ImageRgba8 image;
-  CHECK_THROWS_AS(render::readbackInto(one, image, 1), Error);
+  for (const render::Readback readback : {render::Readback::Copy, render::Readback::Auto}) {
+    const render::OffscreenTarget one = render::makeOffscreenTarget(ctx, 8, 8, 1, readback);
+    CHECK(one.colors.size() == 1);
+    ImageRgba8 image;
+    CHECK_THROWS_AS(render::readbackInto(one, image, 1), Error);
+    CHECK_THROWS_AS(one.color(1), Error);
+  }
 }
 
-TEST_CASE("offscreen target: each readback slot keeps the copy made into it") {
+TEST_CASE("offscreen target: a CPU device reads the frame in place, a GPU copies it") {
   gpu::Context& ctx = test::gpuContext();
-  const render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 40, 24, 2);
-  REQUIRE(target.readbacks.size() == 2);
-  const VkClearColorValue red{{1.0f, 0.0f, 0.0f, 1.0f}}, blue{{0.0f, 0.0f, 1.0f, 1.0f}};
-  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    recordClearAndReadback(cmd, target, red, 0, true);
-    recordClearAndReadback(cmd, target, blue, 1, false);
-  });
-  CHECK(allPixels(render::readbackImage(target, 0), Rgba8{255, 0, 0, 255}));
-  CHECK(allPixels(render::readbackImage(target, 1), Rgba8{0, 0, 255, 255}));
-  // The next frame into slot 0 leaves slot 1 as it was.
-  const VkClearColorValue green{{0.0f, 1.0f, 0.0f, 1.0f}};
-  gpu::submitAndWait(
-      ctx, [&](VkCommandBuffer cmd) { recordClearAndReadback(cmd, target, green, 0, false); });
-  CHECK(allPixels(render::readbackImage(target, 0), Rgba8{0, 255, 0, 255}));
-  CHECK(allPixels(render::readbackImage(target, 1), Rgba8{0, 0, 255, 255}));
+  const render::OffscreenTarget automatic = render::makeOffscreenTarget(ctx, 40, 24, 2);
+  CHECK(automatic.inPlace() == ctx.info().isCpu());
+  CHECK(render::readbackLayout(automatic) ==
+        (ctx.info().isCpu() ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL));
+  const render::OffscreenTarget copied =
+      render::makeOffscreenTarget(ctx, 40, 24, 2, render::Readback::Copy);
+  CHECK(!copied.inPlace());
+  CHECK(copied.colors.size() == 1);
+  CHECK(copied.readbacks.size() == 2);
+  CHECK(&copied.color(0) == &copied.color(1));  // one image, copied into either slot
+  if (!automatic.inPlace()) return;
+  CHECK(automatic.colors.size() == 2);
+  CHECK(automatic.readbacks.empty());
+  CHECK(automatic.color(0).rowPitch() >= 40 * 4);
+  CHECK(render::offscreenFrameTargets(automatic, 1).color == automatic.color(1).get());
+}
+
+TEST_CASE("offscreen target: each readback slot keeps what was drawn for it") {
+  gpu::Context& ctx = test::gpuContext();
+  for (const render::Readback readback : {render::Readback::Copy, render::Readback::Auto}) {
+    // An odd width: rows of a mapped image may lie further apart than a row's bytes.
+    const render::OffscreenTarget target = render::makeOffscreenTarget(ctx, 41, 23, 2, readback);
+    CAPTURE(target.inPlace());
+    REQUIRE(target.color(1).get() != VK_NULL_HANDLE);
+    const VkClearColorValue red{{1.0f, 0.0f, 0.0f, 1.0f}}, blue{{0.0f, 0.0f, 1.0f, 1.0f}};
+    const VkImageLayout after = render::readbackLayout(target);
+    gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      recordClearAndReadback(cmd, target, red, 0, VK_IMAGE_LAYOUT_UNDEFINED);
+      recordClearAndReadback(cmd, target, blue, 1,
+                             target.inPlace() ? VK_IMAGE_LAYOUT_UNDEFINED : after);
+    });
+    CHECK(allPixels(render::readbackImage(target, 0), Rgba8{255, 0, 0, 255}));
+    CHECK(allPixels(render::readbackImage(target, 1), Rgba8{0, 0, 255, 255}));
+    // The next frame into slot 0 leaves slot 1 as it was.
+    const VkClearColorValue green{{0.0f, 1.0f, 0.0f, 1.0f}};
+    gpu::submitAndWait(
+        ctx, [&](VkCommandBuffer cmd) { recordClearAndReadback(cmd, target, green, 0, after); });
+    CHECK(allPixels(render::readbackImage(target, 0), Rgba8{0, 255, 0, 255}));
+    CHECK(allPixels(render::readbackImage(target, 1), Rgba8{0, 0, 255, 255}));
+  }
   CHECK(ctx.validationMessageCount() == 0);
 }
