@@ -64,9 +64,9 @@ ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int fr
   const synth::CoverageCamera camera =
       synth::coverageCamera(view.view(), view.fovYDegrees, 1280, 720, view.nearPlane);
   SynthesisTimer timer(context);
-  std::vector<double> oneMs, fourMs, ratios;
+  InTurn times;  // first one set's, then four sets'
   std::vector<SynthesisPassTimes> onePasses, fourPasses;
-  for (WarmUp warmUp(warmup, warmupSeconds); int(ratios.size()) < frames;) {
+  for (WarmUp warmUp(warmup, warmupSeconds); times.pairs() < frames;) {
     // Interleaved: both see the same moments of machine load.
     const double a = timer.frame(one->programs(), one->synth(), kDt, {}, &camera);
     const SynthesisPassTimes aPasses = timer.lastPasses();
@@ -74,20 +74,16 @@ ClipSetBenchResult benchClipSets(const gpu::Context& context, uint32_t n, int fr
     if (!warmUp.measured()) continue;
     onePasses.push_back(aPasses);
     fourPasses.push_back(timer.lastPasses());
-    oneMs.push_back(a);
-    fourMs.push_back(b);
-    ratios.push_back(b / a);
+    times.add(a, b);
   }
   ClipSetBenchResult r;
   r.characters = n;
   r.frames = frames;
-  r.oneSetMs = median(oneMs);
-  r.fourSetsMs = median(fourMs);
-  r.ratioMedian = median(ratios);
+  r.oneSetMs = median(times.first);
+  r.fourSetsMs = median(times.second);
+  r.ratio = spreadOf(times.ratios);
   r.onePasses = medianPasses(onePasses);
   r.fourPasses = medianPasses(fourPasses);
-  r.ratioMin = *std::min_element(ratios.begin(), ratios.end());
-  r.ratioMax = *std::max_element(ratios.begin(), ratios.end());
   return r;
 }
 

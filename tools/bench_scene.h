@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "gpu/context.h"
+#include "stats.h"
 #include "synthesis_timer.h"
 
 namespace throng::tools {
@@ -13,10 +14,10 @@ namespace throng::tools {
 struct ClipSetBenchResult {
   uint32_t characters = 0;
   int frames = 0;
-  double oneSetMs = 0.0;                                     // synthesis, median
-  double fourSetsMs = 0.0;                                   // synthesis, median
-  double ratioMedian = 0.0, ratioMin = 0.0, ratioMax = 0.0;  // per-frame pairs four / one
-  SynthesisPassTimes onePasses, fourPasses;                  // medians of each pass
+  double oneSetMs = 0.0;                     // synthesis, median
+  double fourSetsMs = 0.0;                   // synthesis, median
+  Spread ratio;                              // per-frame pairs four / one
+  SynthesisPassTimes onePasses, fourPasses;  // medians of each pass
 };
 
 // warmup frames, for at least warmupSeconds (WarmUp), before `frames` measured ones.

@@ -1,6 +1,5 @@
 #include "bench_twin_pairs.h"
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -34,28 +33,21 @@ TwinPairResult benchFullAgainstTwin(const gpu::Context& context,
   const synth::CrowdSynth synth = synth::makeCrowdSynth(context, pair, gpuCrowd, {}, everyJoint);
   std::vector<synth::JointPoint> joints(size_t(characters) * pair.jointCount());
   SynthesisTimer timer(context);
-  std::vector<double> gpuMs, twinMs, ratios;
-  for (WarmUp warmUp(warmup, warmupSeconds); int(ratios.size()) < pairs;) {
+  InTurn times;  // first the GPU's, then the twin's
+  for (WarmUp warmUp(warmup, warmupSeconds); times.pairs() < pairs;) {
     const double gpu = timer.frame(programs, synth, kDt);
     const auto start = std::chrono::steady_clock::now();
     synth::stepCrowdCpu(pair, twinCrowd, kDt, threads);
     synth::poseCrowdCpu(pair, twinCrowd, joints, threads);
     const double twin = millisecondsSince(start);
-    if (!warmUp.measured()) continue;
-    gpuMs.push_back(gpu);
-    twinMs.push_back(twin);
-    ratios.push_back(twin / gpu);
+    if (warmUp.measured()) times.add(gpu, twin);
   }
-  TwinPairResult r;
-  r.characters = characters;
-  r.threads = threads;
-  r.pairs = pairs;
-  r.gpuMs = median(gpuMs);
-  r.twinMs = median(twinMs);
-  r.ratioMedian = median(ratios);
-  r.ratioMin = *std::min_element(ratios.begin(), ratios.end());
-  r.ratioMax = *std::max_element(ratios.begin(), ratios.end());
-  return r;
+  return {characters,
+          threads,
+          pairs,
+          median(times.first),
+          median(times.second),
+          spreadOf(times.ratios)};
 }
 
 }  // namespace throng::tools

@@ -8,6 +8,7 @@
 #include "anim/motion_texture.h"
 #include "crowd/crowd.h"
 #include "gpu/context.h"
+#include "stats.h"
 #include "synth/synth_jobs.h"
 
 namespace throng::tools {
@@ -21,7 +22,7 @@ struct TwinPairResult {
   int pairs = 0;         // measured pairs of frames
   double gpuMs = 0.0;    // the GPU frame, median
   double twinMs = 0.0;   // the twin's frame (step and pose), median
-  double ratioMedian = 0.0, ratioMin = 0.0, ratioMax = 0.0;  // per pair: twin / GPU
+  Spread ratio;          // per pair: twin / GPU
 };
 
 // warmup pairs, for at least warmupSeconds (WarmUp), before `pairs` measured ones.

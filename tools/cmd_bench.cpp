@@ -63,7 +63,7 @@ void printTargetRatios(const std::vector<Row>& rows, const std::vector<TwinPairR
   }
   for (const TwinPairResult& p : pairs)
     std::printf("  %7u characters: gpu full vs %s, a frame of each in turn %6.2fx (%.2f to %.2f)\n",
-                p.characters, cpuMt.c_str(), p.ratioMedian, p.ratioMin, p.ratioMax);
+                p.characters, cpuMt.c_str(), p.ratio.median, p.ratio.min, p.ratio.max);
 }
 
 constexpr const char* kClothSkipped =
@@ -219,7 +219,7 @@ void runSynthesisRows(BenchSession& s) {
     std::printf(
         "  in turn: gpu full %.3f ms, cpu twin (%u threads) %.3f ms; twin / gpu %.2fx "
         "(%.2f to %.2f over %d pairs)\n",
-        r.gpuMs, r.threads, r.twinMs, r.ratioMedian, r.ratioMin, r.ratioMax, r.pairs);
+        r.gpuMs, r.threads, r.twinMs, r.ratio.median, r.ratio.min, r.ratio.max, r.pairs);
   }
 }
 
@@ -233,7 +233,7 @@ void runClipSetRows(BenchSession& s) {
             sets.frames, sets.fourPasses});
   std::printf(
       "  4 clip sets (storyboard action mix) vs 1, per frame: median %.2fx (%.2f to %.2f)\n",
-      sets.ratioMedian, sets.ratioMin, sets.ratioMax);
+      sets.ratio.median, sets.ratio.min, sets.ratio.max);
 }
 
 void runRenderRows(BenchSession& s) {
@@ -332,9 +332,9 @@ nlohmann::json benchJson(const BenchSession& s, const std::optional<ClothBenchRe
                                  {"pairs", p.pairs},
                                  {"gpu_ms_median", p.gpuMs},
                                  {"twin_ms_median", p.twinMs},
-                                 {"ratio_median", p.ratioMedian},
-                                 {"ratio_min", p.ratioMin},
-                                 {"ratio_max", p.ratioMax}});
+                                 {"ratio_median", p.ratio.median},
+                                 {"ratio_min", p.ratio.min},
+                                 {"ratio_max", p.ratio.max}});
   if (cloth)
     doc["cloth"] = clothJson(*cloth, ClothBenchOptions{}.targetMs);
   else
