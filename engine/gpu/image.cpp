@@ -25,9 +25,7 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
     : format_(format), width_(width), height_(height), aspect_(aspect) {
   const bool hostMapped = memory == ImageMemory::HostMapped;
   if (hostMapped && !hostMappable(context, format, usage, width, height))
-    fail("a host-mapped ", width, "x", height,
-         " image: the device has no linear tiling for its "
-         "format and usage");
+    fail("a host-mapped ", width, "x", height, " image: no linear tiling for its format and usage");
   THRONG_CHECK(width > 0 && height > 0, "image size must be positive, got ", width, "x", height);
   const bool attachment = (usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
                                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT)) != 0;
