@@ -1,7 +1,5 @@
 #include "bench_rows.h"
 
-#include <chrono>
-
 #include "bench_twin_pairs.h"
 #include "core/error.h"
 #include "crowd/scenario.h"
@@ -12,7 +10,6 @@
 #include "scene/frame.h"
 #include "scene_options.h"
 #include "stats.h"
-#include "synth/cpu_synth.h"
 #include "warm_up.h"
 
 namespace throng::tools {
@@ -78,11 +75,8 @@ Row benchCpuSynthesis(const anim::MotionPair& pair, uint32_t n, unsigned threads
   std::vector<double> ms;
   const int frames = twinFrames(n, o);
   for (int f = 0; f < 1 + frames; ++f) {
-    auto start = std::chrono::steady_clock::now();
-    synth::stepCrowdCpu(pair, crowd, kDt, threads);
-    synth::poseCrowdCpu(pair, crowd, joints, threads);
-    auto end = std::chrono::steady_clock::now();
-    if (f >= 1) ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+    const double frameMs = twinFrameMs(pair, crowd, joints, threads);
+    if (f >= 1) ms.push_back(frameMs);
   }
   return {threads == 1 ? "cpu-1-thread" : concat("cpu-", threads, "-threads"), n, median(ms), 0.0,
           frames};

@@ -20,6 +20,15 @@ crowd::Crowd benchCrowd(uint32_t characters) {
   return crowd::makeScenario(options);
 }
 
+double twinFrameMs(const anim::MotionPair& pair, crowd::Crowd& crowd,
+                   std::vector<synth::JointPoint>& joints, unsigned threads) {
+  constexpr float kDt = 1.0f / 30.0f;
+  const auto start = std::chrono::steady_clock::now();
+  synth::stepCrowdCpu(pair, crowd, kDt, threads);
+  synth::poseCrowdCpu(pair, crowd, joints, threads);
+  return millisecondsSince(start);
+}
+
 TwinPairResult benchFullAgainstTwin(const gpu::Context& context,
                                     const synth::SynthPrograms& programs,
                                     const anim::MotionPair& pair, const anim::Skeleton& skeleton,
@@ -36,10 +45,7 @@ TwinPairResult benchFullAgainstTwin(const gpu::Context& context,
   InTurn times;  // first the GPU's, then the twin's
   for (WarmUp warmUp(warmup, warmupSeconds); times.pairs() < pairs;) {
     const double gpu = timer.frame(programs, synth, kDt);
-    const auto start = std::chrono::steady_clock::now();
-    synth::stepCrowdCpu(pair, twinCrowd, kDt, threads);
-    synth::poseCrowdCpu(pair, twinCrowd, joints, threads);
-    const double twin = millisecondsSince(start);
+    const double twin = twinFrameMs(pair, twinCrowd, joints, threads);
     if (warmUp.measured()) times.add(gpu, twin);
   }
   return {characters,

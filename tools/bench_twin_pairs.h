@@ -4,6 +4,7 @@
 // moment (a shared VM's speed swings by a third within minutes, more than the rows measured one
 // after the other can tell from a change of code).
 #include <cstdint>
+#include <vector>
 
 #include "anim/motion_texture.h"
 #include "crowd/crowd.h"
@@ -15,6 +16,11 @@ namespace throng::tools {
 
 // The bench's crowd of `characters`: the default scenario, seed 42.
 crowd::Crowd benchCrowd(uint32_t characters);
+
+// One frame of the CPU twin on `threads` threads (a step and the pose into `joints`); its wall
+// milliseconds.
+double twinFrameMs(const anim::MotionPair& pair, crowd::Crowd& crowd,
+                   std::vector<synth::JointPoint>& joints, unsigned threads);
 
 struct TwinPairResult {
   uint32_t characters = 0;

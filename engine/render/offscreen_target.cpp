@@ -99,19 +99,14 @@ void readbackInto(const OffscreenTarget& target, ImageRgba8& image, uint32_t slo
   image.width = static_cast<int>(target.width);
   image.height = static_cast<int>(target.height);
   image.pixels.resize(size_t(target.width) * target.height);  // a recycled frame keeps its memory
+  // The slot's buffer holds whole rows; a mapped image's rows may lie further apart.
   const size_t rowBytes = size_t(target.width) * sizeof(Rgba8);
-  if (!target.inPlace()) {
-    std::memcpy(image.pixels.data(), target.readbacks[slot].mapped(), rowBytes * target.height);
-    return;
-  }
-  const gpu::Image2D& color = target.colors[slot];
-  if (color.rowPitch() == rowBytes) {
-    std::memcpy(image.pixels.data(), color.mapped(), rowBytes * target.height);
-    return;
-  }
+  const uint8_t* rows = target.inPlace()
+                            ? target.colors[slot].mapped()
+                            : static_cast<const uint8_t*>(target.readbacks[slot].mapped());
+  const size_t pitch = target.inPlace() ? size_t(target.colors[slot].rowPitch()) : rowBytes;
   for (uint32_t y = 0; y < target.height; ++y)
-    std::memcpy(&image.pixels[size_t(y) * target.width], color.mapped() + y * color.rowPitch(),
-                rowBytes);
+    std::memcpy(&image.pixels[size_t(y) * target.width], rows + y * pitch, rowBytes);
 }
 
 ImageRgba8 readbackImage(const OffscreenTarget& target, uint32_t slot) {
