@@ -22,12 +22,15 @@ layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters {
 void main() {
   uint total = spriteEntries(counters);
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  FrameRays f = frameRays();
   for (uint entry = gl_GlobalInvocationID.x; entry < total; entry += stride) {
     uint64_t e = owners[entry];
     uint sprite = entrySprite(e);
     if (sprite == kSplatNoSprite) continue;
     SplatSprite s = sprites[sprite];
     ivec2 xy = entryPixel(e);
-    splatPixel(xy.x, xy.y, s.inverse0, s.inverse1, s.inverse2, s.tint.xyz);
+    // The walk per character's arithmetic, so both walks give the same bits.
+    SpriteRays rays = spriteRays(s.inverse0, s.inverse1, s.inverse2, f);
+    splatRayPixel(rays, f, rowRays(rays, f, xy.y), xy.x, xy.y, s.tint.xyz);
   }
 }

@@ -113,9 +113,12 @@ void splatSpriteInline(uint joint, JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
   Silhouette c = silhouette(s, lo);
+  FrameRays f = frameRays();
+  SpriteRays rays = spriteRays(s.inverse0, s.inverse1, s.inverse2, f);
   for (int y = lo.y; y <= hi.y; ++y) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
-    for (int x = span.x; x <= span.y; ++x) splatPixel(x, y, s.inverse0, s.inverse1, s.inverse2, tint);
+    RowRays row = rowRays(rays, f, y);
+    for (int x = span.x; x <= span.y; ++x) splatRayPixel(rays, f, row, x, y, tint);
   }
 }
 

@@ -103,6 +103,72 @@ uint32_t shadeJointCpu(glm::vec3 tint, glm::vec3 n, glm::vec3 dir, glm::vec3 lig
                               gpu_types::gammaEncode(col.z), 1.0f));
 }
 
+namespace {
+
+// frameRays() and spriteRays() of shaders/joint_splat_common.glsl: the ray through pixel centre
+// (px, py) is w0 + py·wy + px·wx in the world, d0 + py·dy + px·dx in the sprite's unit-sphere
+// space, and adds k0 + py·ky + px·kx per unit to the eye's clip z and w (ke).
+struct FrameRaysCpu {
+  glm::vec3 w0, wx, wy;
+  glm::vec2 k0, kx, ky, ke;
+};
+
+glm::vec2 clipZw(const glm::mat4& viewProjection, glm::vec4 v) {
+  const glm::vec4 clip = viewProjection * v;
+  return {clip.z, clip.w};
+}
+
+FrameRaysCpu frameRaysCpu(const gpu_types::FrameUniforms& frame) {
+  FrameRaysCpu f;
+  const glm::vec3 right(frame.rayRight), down(frame.rayDown);
+  f.w0 = glm::vec3(frame.rayForward) - right - down;
+  f.wx = right * (2.0f / frame.viewport.x);
+  f.wy = down * (2.0f / frame.viewport.y);
+  f.k0 = clipZw(frame.viewProjection, glm::vec4(f.w0, 0.0f));
+  f.kx = clipZw(frame.viewProjection, glm::vec4(f.wx, 0.0f));
+  f.ky = clipZw(frame.viewProjection, glm::vec4(f.wy, 0.0f));
+  f.ke = clipZw(frame.viewProjection, glm::vec4(glm::vec3(frame.eye), 1.0f));
+  return f;
+}
+
+struct SpriteRaysCpu {
+  glm::mat3 inv;
+  glm::vec3 o, d0, dx, dy;
+};
+
+SpriteRaysCpu spriteRaysCpu(const JointSpriteCpu& s, const FrameRaysCpu& f, glm::vec3 eye) {
+  SpriteRaysCpu r;
+  r.inv = glm::transpose(
+      glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
+  r.o = r.inv * eye + glm::vec3(s.inverse[0].w, s.inverse[1].w, s.inverse[2].w);
+  r.d0 = r.inv * f.w0;
+  r.dx = r.inv * f.wx;
+  r.dy = r.inv * f.wy;
+  return r;
+}
+
+// splatRayPixel() of joint_splat_common.glsl: pixel (x, y)'s packed nearest hit with the
+// sprite's ellipsoid, or kEmptyPixel where its ray misses.
+uint64_t splatRayPixelCpu(const SpriteRaysCpu& r, const FrameRaysCpu& f, int x, int y,
+                          glm::vec3 tint, glm::vec3 light) {
+  const float px = float(x) + 0.5f, py = float(y) + 0.5f;
+  const glm::vec3 d = (r.d0 + py * r.dy) + px * r.dx;
+  const float a = glm::dot(d, d), b = glm::dot(r.o, d);
+  const float disc = unitSphereDiscriminantCpu(r.o, d);
+  const float s = (-b - std::sqrt(std::max(disc, 0.0f))) / a;
+  if (!(disc >= 0.0f && s > 0.0f)) return kEmptyPixel;
+  const glm::vec2 clip = f.ke + s * ((f.k0 + py * f.ky) + px * f.kx);
+  const float depth = clip.x / clip.y;
+  if (depth < 0.0f || depth > 1.0f) return kEmptyPixel;
+  const glm::vec3 n = glm::normalize(glm::transpose(r.inv) * (r.o + s * d));
+  const glm::vec3 dir = glm::normalize((f.w0 + py * f.wy) + px * f.wx);
+  uint32_t depthBits;
+  std::memcpy(&depthBits, &depth, sizeof(depthBits));
+  return (uint64_t(depthBits) << 32) | shadeJointCpu(tint, n, dir, light);
+}
+
+}  // namespace
+
 SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
                               const gpu_types::FrameUniforms& frame, uint32_t jointCount,
                               float maxPixels, uint32_t width, uint32_t height) {
@@ -110,6 +176,7 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
   result.visibility.assign(size_t(width) * height, kEmptyPixel);
   const glm::vec3 eye(frame.eye);
   const glm::vec3 light(frame.lightDirection);
+  const FrameRaysCpu rays = frameRaysCpu(frame);
   for (uint32_t joint = 0; joint < joints.size(); ++joint) {
     JointSpriteCpu s = jointSpriteCpu(joints[joint], frame);
     if (!s.visible) continue;
@@ -120,31 +187,12 @@ SplatCpuResult splatJointsCpu(std::span<const synth::JointMatrix> joints,
     glm::ivec2 lo = glm::max(glm::ivec2(glm::ceil(s.lo - 0.5f)), glm::ivec2(0));
     glm::ivec2 hi =
         glm::min(glm::ivec2(glm::floor(s.hi - 0.5f)), glm::ivec2(int(width) - 1, int(height) - 1));
-    glm::vec3 tint = characterTintCpu(joint / jointCount);
-    glm::mat3 inv = glm::transpose(
-        glm::mat3(glm::vec3(s.inverse[0]), glm::vec3(s.inverse[1]), glm::vec3(s.inverse[2])));
-    glm::vec3 o = inv * eye + glm::vec3(s.inverse[0].w, s.inverse[1].w, s.inverse[2].w);
+    const glm::vec3 tint = characterTintCpu(joint / jointCount);
+    const SpriteRaysCpu sprite = spriteRaysCpu(s, rays, eye);
     for (int y = lo.y; y <= hi.y; ++y) {
       for (int x = lo.x; x <= hi.x; ++x) {
-        glm::vec2 ndc =
-            (glm::vec2(x, y) + 0.5f) / glm::vec2(frame.viewport.x, frame.viewport.y) * 2.0f - 1.0f;
-        glm::vec3 dir =
-            glm::normalize(glm::vec3(frame.rayForward) + ndc.x * glm::vec3(frame.rayRight) +
-                           ndc.y * glm::vec3(frame.rayDown));
-        glm::vec3 d = inv * dir;
-        float a = glm::dot(d, d), b = glm::dot(o, d);
-        float disc = unitSphereDiscriminantCpu(o, d);
-        float t = (-b - std::sqrt(std::max(disc, 0.0f))) / a;
-        if (!(disc >= 0.0f && t > 0.0f)) continue;
-        glm::vec3 n = glm::normalize(glm::transpose(inv) * (o + t * d));
-        glm::vec4 clip = frame.viewProjection * glm::vec4(eye + t * dir, 1.0f);
-        float depth = clip.z / clip.w;
-        if (depth < 0.0f || depth > 1.0f) continue;
-        uint32_t depthBits;
-        std::memcpy(&depthBits, &depth, sizeof(depthBits));
-        uint64_t packed = (uint64_t(depthBits) << 32) | shadeJointCpu(tint, n, dir, light);
         uint64_t& pixel = result.visibility[size_t(y) * width + x];
-        pixel = std::min(pixel, packed);
+        pixel = std::min(pixel, splatRayPixelCpu(sprite, rays, x, y, tint, light));
       }
     }
   }
