@@ -16,13 +16,17 @@
 
 layout(local_size_x = kSplatBodyGroupSize) in;
 layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointPoint joints[]; };
-layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+// Copied at the top of main, as in joint_splat_walk.comp (lavapipe reads uniforms inside
+// branches and loops lane by lane).
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frameBlock; };
+FrameUniforms frame;
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
 layout(std430, binding = kRenderBindingDraws) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
 layout(std430, binding = kRenderBindingNearList) writeonly buffer NearList { uint nearList[]; };
 layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
 layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
-layout(push_constant) uniform Push { SplatPush push; };
+layout(push_constant) uniform Push { SplatPush pushBlock; };
+SplatPush push;
 #include "joint_fetch.glsl"
 #include "joint_lod.glsl"
 #include "joint_far_body.glsl"
@@ -36,6 +40,8 @@ layout(std430, binding = kRenderBindingListCounts) buffer ListCounts { uint list
 layout(std430, binding = kRenderBindingOnScreenList) readonly buffer OnScreenList { uint onScreenList[]; };
 
 void main() {
+  frame = frameBlock;
+  push = pushBlock;
   uint k = gl_GlobalInvocationID.x;
   if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatOnScreenArgs]) return;
   uint local = onScreenList[push.firstCharacter + k];  // the character within the chunk

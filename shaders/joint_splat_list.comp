@@ -18,9 +18,13 @@ layout(local_size_x = kSplatBodyGroupSize) in;
 layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec2 masks[]; };  // CoverageMask's joint bits
 layout(std430, binding = kRenderBindingOnScreenList) writeonly buffer OnScreenList { uint onScreenList[]; };
 layout(std430, binding = kRenderBindingListCounts) buffer ListCounts { uint listCounts[]; };
-layout(push_constant) uniform Push { SplatPush push; };
+// Copied at the top of main, as in joint_splat_walk.comp (lavapipe reads uniforms inside
+// branches and loops lane by lane).
+layout(push_constant) uniform Push { SplatPush pushBlock; };
+SplatPush push;
 
 void main() {
+  push = pushBlock;
   uint first = gl_GlobalInvocationID.x * kSplatListRun;  // the run's first character in the chunk
   uint characters = push.jointTotal / push.jointCount;
   uint listed = 0u;  // bit k: character first + k is on screen

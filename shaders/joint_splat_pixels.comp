@@ -12,7 +12,10 @@
 #include "joint_sprite.glsl"
 
 layout(local_size_x = 64) in;
-layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+// Copied at the top of main, as in joint_splat_walk.comp (lavapipe reads uniforms inside
+// branches and loops lane by lane).
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frameBlock; };
+FrameUniforms frame;
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
 #include "joint_splat_common.glsl"
 layout(std430, binding = kRenderBindingSprites) readonly buffer Sprites { SplatSprite sprites[]; };
@@ -20,6 +23,7 @@ layout(std430, binding = kRenderBindingPixelOwners) readonly buffer Owners { uin
 layout(std430, binding = kRenderBindingSplatCounters) readonly buffer Counters { SplatCounters counters; };
 
 void main() {
+  frame = frameBlock;
   uint total = spriteEntries(counters);
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   FrameRays f = frameRays();

@@ -23,13 +23,18 @@
 
 layout(local_size_x = kSplatWalkGroupSize) in;
 layout(std430, binding = kRenderBindingJoints) readonly buffer Joints { JointPoint joints[]; };
-layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frame; };
+// The frame's uniforms and the push constants, copied at the top of main: lavapipe reads a
+// uniform inside a branch or loop lane by lane (it cannot tell that the first lane is active
+// there), and nearly everything here is inside one; read before any, each is one load.
+layout(std140, binding = kRenderBindingFrame) uniform Frame { FrameUniforms frameBlock; };
+FrameUniforms frame;
 layout(std430, binding = kRenderBindingVisibility) buffer Visibility { uint64_t visibility[]; };
 layout(std430, binding = kRenderBindingDraws) buffer Draws { uint draws[]; };  // VkDrawIndirectCommand per chunk
 layout(std430, binding = kRenderBindingNearList) writeonly buffer NearList { uint nearList[]; };
 layout(std430, binding = kRenderBindingMasks) readonly buffer Masks { uvec4 masks[]; };  // coverage LOD, per character
 layout(std430, binding = kRenderBindingGroups) readonly buffer Groups { uint groups[]; };  // kDrawGroupTint: per character
-layout(push_constant) uniform Push { SplatPush push; };
+layout(push_constant) uniform Push { SplatPush pushBlock; };
+SplatPush push;
 #include "joint_fetch.glsl"
 #include "joint_lod.glsl"
 #include "joint_far_body.glsl"
@@ -58,6 +63,8 @@ void walkJoints(uint local, uint first, uint end) {
 }
 
 void main() {
+  frame = frameBlock;
+  push = pushBlock;
   uint k = gl_GlobalInvocationID.x;
   if (k >= listCounts[kSplatListArgsWords * push.chunk + kSplatWalkArgs]) return;
   bool perJoint = gl_NumWorkGroups.y > 1u;  // a row per joint (one joint: the same either way)
