@@ -24,10 +24,12 @@ void main() {
   uint pixels = uint(frame.viewport.x) * uint(frame.viewport.y);
   uint depthQuads = visibilityDepthPlane(pixels) / 4u;
   uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  // Read here, before the loop: lavapipe reads a push constant inside a loop lane by lane.
+  bool withDepth = push.planes == kPlanesWithDepth;
   for (uint i = gl_GlobalInvocationID.x; i < pixels / 4u; i += stride) {
     uvec4 a = texelFetch(visibilityPairs, int(2u * i)), b = texelFetch(visibilityPairs, int(2u * i + 1u));
     planeQuads[i] = uvec4(a.xz, b.xz);
-    if (push.planes == kPlanesWithDepth) planeQuads[depthQuads + i] = uvec4(a.yw, b.yw);
+    if (withDepth) planeQuads[depthQuads + i] = uvec4(a.yw, b.yw);
   }
   uint rest = pixels & 3u;
   if (gl_GlobalInvocationID.x < rest) {
@@ -35,6 +37,6 @@ void main() {
     uvec4 pair = texelFetch(visibilityPairs, int(p / 2u));
     uvec2 last = (p & 1u) != 0u ? pair.zw : pair.xy;
     planes[p] = last.x;
-    if (push.planes == kPlanesWithDepth) planes[visibilityDepthPlane(pixels) + p] = last.y;
+    if (withDepth) planes[visibilityDepthPlane(pixels) + p] = last.y;
   }
 }
