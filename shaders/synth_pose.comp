@@ -23,7 +23,13 @@ layout(std430, binding = kPoseBindingPlacement) readonly buffer Placement { u64v
 layout(std430, binding = kPoseBindingMotion) readonly buffer Motion { u64vec2 motion[]; };
 // One JointPoint per joint: a single 16-byte store, the least a joint can take (shared_types.h).
 layout(std430, binding = kPoseBindingJoints) writeonly buffer Joints { JointPoint joints[]; };
-void storeJoint(uint index, vec4 point) { joints[index].positionRadius = point; }
+// Whether this invocation has a character: main has no early return, because lavapipe reads
+// every uniform after one (the constant offsets, the push constants) lane by lane; only the
+// stores are skipped.
+bool poseActive = false;
+void storeJoint(uint index, vec4 point) {
+  if (poseActive) joints[index].positionRadius = point;
+}
 // With the motion cache on, only the characters whose bucket is not resident are posed here,
 // listed by cache_classify.comp.
 layout(std430, binding = kPoseBindingCharacterList) readonly buffer CharacterList { uint characterList[]; };
@@ -36,12 +42,11 @@ layout(push_constant) uniform Push { PosePush push; };
 
 void main() {
   uint local = gl_GlobalInvocationID.x;
-  if (push.fromList != 0u) {
-    if (local >= listCounts[push.countIndex]) return;
-    local = characterList[push.listBase + local];
-  } else if (local >= push.characterCount) {
-    return;
-  }
+  bool listed = push.fromList != 0u;
+  poseActive = local < (listed ? listCounts[push.countIndex] : push.characterCount);
+  // An invocation past the count reads character 0's (or the list's first) inputs and stores nothing.
+  local = poseActive ? local : 0u;
+  local = listed ? characterList[push.listBase + local] : local;
   uint i = push.firstCharacter + local;
   vec4 place = fromWords(placement[i]);
   vec4 m = fromWords(motion[i]);
