@@ -37,6 +37,31 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
     VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
 }
 
+Buffer Buffer::aliasing(const Context& context, VkDeviceMemory memory, uint32_t memoryType,
+                        VkDeviceSize offset, VkDeviceSize size, VkBufferUsageFlags usage) {
+  THRONG_CHECK(size > 0, "buffer size must be positive");
+  const bool storage = (usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) != 0;
+  if (storage && size > context.info().maxStorageBufferRange) return Buffer();
+  VkDevice device = context.device();
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateBuffer(device, &info, nullptr, &buffer));
+  Buffer alias;
+  alias.buffer_ =
+      Handle<VkBuffer>(buffer, [device](VkBuffer b) { vkDestroyBuffer(device, b, nullptr); });
+  VkMemoryRequirements requirements;
+  vkGetBufferMemoryRequirements(device, buffer, &requirements);
+  if ((requirements.memoryTypeBits & (1u << memoryType)) == 0 ||
+      offset % requirements.alignment != 0)
+    return Buffer();
+  VK_CHECK(vkBindBufferMemory(device, buffer, memory, offset));
+  alias.size_ = size;
+  return alias;
+}
+
 namespace {
 VkDeviceSize texelBytes(VkFormat format) {
   switch (format) {

@@ -24,6 +24,12 @@ class Buffer {
   void* mapped() const { return mapped_; }
   explicit operator bool() const { return static_cast<bool>(buffer_); }
 
+  // A buffer over `size` bytes at `offset` of memory that something else owns (a host-mapped
+  // image's texels, written by a pass as a storage buffer), of memory type `memoryType`. Empty
+  // where the device binds no such buffer there. The memory's owner outlives the buffer.
+  static Buffer aliasing(const Context& context, VkDeviceMemory memory, uint32_t memoryType,
+                         VkDeviceSize offset, VkDeviceSize size, VkBufferUsageFlags usage);
+
   template <typename T>
   std::span<T> hostSpan() const {
     return {static_cast<T*>(mapped_), static_cast<size_t>(size_ / sizeof(T))};

@@ -47,11 +47,12 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
 
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(device, image, &requirements);
-  memory_ = context.allocateMemory(
-      requirements,
+  const VkMemoryPropertyFlags wanted =
       hostMapped ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
-      concat("a ", width, "x", height, " image"));
+                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  memory_ =
+      context.allocateMemory(requirements, wanted, concat("a ", width, "x", height, " image"));
+  memoryType_ = context.findMemoryType(requirements.memoryTypeBits, wanted);
   VK_CHECK(vkBindImageMemory(device, image, memory_, 0));
   if (hostMapped) {
     VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
@@ -60,6 +61,7 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
     vkGetImageSubresourceLayout(device, image, &subresource, &layout);
     mapped_ = static_cast<uint8_t*>(mapped_) + layout.offset;
     rowPitch_ = layout.rowPitch;
+    texelOffset_ = layout.offset;
   }
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -71,6 +73,11 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
   VK_CHECK(vkCreateImageView(device, &viewInfo, nullptr, &view));
   view_ = Handle<VkImageView>(view,
                               [device](VkImageView v) { vkDestroyImageView(device, v, nullptr); });
+}
+
+Buffer Image2D::texelBuffer(const Context& context, VkBufferUsageFlags usage) const {
+  if (!mapped_) return Buffer();
+  return Buffer::aliasing(context, memory_, memoryType_, texelOffset_, rowPitch_ * height_, usage);
 }
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,

@@ -2,6 +2,7 @@
 // 2D images with one view (motion textures, render targets), samplers, and layout changes.
 #include <span>
 
+#include "gpu/buffer.h"
 #include "gpu/context.h"
 #include "gpu/handle.h"
 
@@ -34,6 +35,11 @@ class Image2D {
   // device image). The host reads them in VK_IMAGE_LAYOUT_GENERAL, after the device's writes.
   const uint8_t* mapped() const { return static_cast<const uint8_t*>(mapped_); }
   VkDeviceSize rowPitch() const { return rowPitch_; }
+  // A host-mapped image's texels as a buffer of `usage` (rowPitch() bytes a row, from texel
+  // (0, 0)), for a pass that writes the image's rows without a copy: the image is then in
+  // VK_IMAGE_LAYOUT_GENERAL. Empty for a device image or where the device binds no such buffer
+  // to the image's memory. The image outlives the buffer.
+  Buffer texelBuffer(const Context& context, VkBufferUsageFlags usage) const;
 
  private:
   Handle<VkDeviceMemory> memory_;
@@ -44,6 +50,8 @@ class Image2D {
   VkImageAspectFlags aspect_ = VK_IMAGE_ASPECT_COLOR_BIT;
   void* mapped_ = nullptr;  // unmapped when memory_ is freed
   VkDeviceSize rowPitch_ = 0;
+  VkDeviceSize texelOffset_ = 0;  // texel (0, 0) in memory_, host-mapped
+  uint32_t memoryType_ = 0;
 };
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,

@@ -30,6 +30,12 @@ bool depthPlane(const DrawParams& params) {
   return params.wallSegmentCount > 0 || params.moreDepthDraws;
 }
 
+// The resolve writes the colour plane straight into the target's texels: there is no depth plane
+// to copy in beside it.
+bool planesInTarget(const FrameTargets& target, const DrawParams& params) {
+  return target.colorTexels && !depthPlane(params);
+}
+
 uint32_t drawFlags(const DrawParams& params) {
   uint32_t flags = 0;
   if (params.masks) flags |= gpu_types::kDrawUseMasks;
@@ -252,7 +258,7 @@ void CrowdRenderer::beginDraw(VkCommandBuffer cmd, const FrameTargets& target,
   THRONG_CHECK(!groundCopied_ || target.transferDst,
                "beginDraw: the splat started from the ground, for a target that takes copies");
   if (groundCopied_) {
-    resolvePlanes(cmd, params, frameSlot);
+    resolvePlanes(cmd, target, params, frameSlot);
     copyPlanesIn(cmd, target, params);
   } else {
     clearTargets(cmd, target);
@@ -323,16 +329,22 @@ bool CrowdRenderer::groundFor(VkCommandBuffer cmd, const DrawParams& params, uin
   return true;
 }
 
-void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
-                                  uint32_t frameSlot) {
+void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const FrameTargets& target,
+                                  const DrawParams& params, uint32_t frameSlot) {
   // The splat's passes (and anything splatting between recordSplat and beginDraw) wrote the
   // visibility buffer; the previous frame's copy out of the planes read them.
   gpu::memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  const bool inTarget = planesInTarget(target, params);
+  if (inTarget)  // its previous contents are overwritten whole
+    gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   gpu::Binding bindings[] = {
       gpu::uniformBinding(gpu_types::kRenderBindingFrame, frameUniforms_[frameSlot]),
       gpu::uniformTexelBinding(gpu_types::kRenderBindingVisibility, visibilityTexels_.get()),
-      gpu::storageBinding(gpu_types::kRenderBindingFramePlanes, framePlanes_)};
+      gpu::storageBinding(gpu_types::kRenderBindingFramePlanes,
+                          inTarget ? *target.colorTexels : framePlanes_)};
   // Four pixels per invocation, at most kPlanesGroups workgroups striding over the rest: lavapipe
   // pays for every workgroup it starts.
   const uint32_t quads = (params.width * params.height + 3u) / 4u;
@@ -349,6 +361,20 @@ void CrowdRenderer::resolvePlanes(VkCommandBuffer cmd, const DrawParams& params,
 
 void CrowdRenderer::copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target,
                                  const DrawParams& params) {
+  if (planesInTarget(target, params)) {  // written in place: only the layout changes
+    gpu::transitionImage(
+        cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+        VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+        VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    gpu::transitionImage(
+        cmd, target.depth, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+        VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL_KHR, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+        VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    passTimer_->mark(cmd, "planes-copy");
+    return;
+  }
   gpu::transitionImage(cmd, target.color, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);

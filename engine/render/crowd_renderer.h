@@ -130,7 +130,8 @@ class CrowdRenderer {
   bool groundFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   // The visibility buffer (ground and splat) into framePlanes_, then into the target: the colour,
   // and the depth unless only near joints come after.
-  void resolvePlanes(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
+  void resolvePlanes(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
+                     uint32_t frameSlot);
   void copyPlanesIn(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params);
   void beginRendering(VkCommandBuffer cmd, const FrameTargets& target, const DrawParams& params,
                       bool loadColour, bool loadDepth);

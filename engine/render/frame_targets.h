@@ -5,6 +5,8 @@
 
 #include <volk.h>
 
+#include "gpu/buffer.h"
+
 namespace throng::render {
 
 struct FrameTargets {
@@ -20,6 +22,10 @@ struct FrameTargets {
   // joint splat is then resolved by compute and copied in, instead of a full-screen fragment
   // pass.
   bool transferDst = false;
+  // The colour image's texels as a storage buffer of rows width × 4 bytes apart (an offscreen
+  // image read in place), or null: the splat's resolve then writes its colour plane there, and the
+  // image is in VK_IMAGE_LAYOUT_GENERAL meanwhile.
+  const gpu::Buffer* colorTexels = nullptr;
 };
 
 }  // namespace throng::render

@@ -36,6 +36,16 @@ void checkSlot(const OffscreenTarget& target, uint32_t slot) {
   if (slot >= slots) fail("readback slot ", slot, " of an offscreen target with ", slots);
 }
 
+// Every slot's texels as a storage buffer, or none: the renderer treats all slots alike.
+void addColorTexels(const gpu::Context& context, OffscreenTarget& t) {
+  for (const gpu::Image2D& color : t.colors) {
+    if (color.rowPitch() != VkDeviceSize(t.width) * 4) break;
+    t.colorTexels.push_back(color.texelBuffer(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+    if (!t.colorTexels.back()) break;
+  }
+  if (t.colorTexels.size() != t.colors.size() || !t.colorTexels.back()) t.colorTexels.clear();
+}
+
 }  // namespace
 
 const gpu::Image2D& OffscreenTarget::color(uint32_t slot) const {
@@ -57,6 +67,7 @@ OffscreenTarget makeOffscreenTarget(const gpu::Context& context, uint32_t width,
     for (uint32_t slot = 0; slot < readbackSlots; ++slot)
       t.colors.emplace_back(context, width, height, kColorFormat, kColorUsage,
                             VK_IMAGE_ASPECT_COLOR_BIT, gpu::ImageMemory::HostMapped);
+    addColorTexels(context, t);
   } else {
     t.colors.emplace_back(context, width, height, kColorFormat, kColorUsage);
     for (uint32_t slot = 0; slot < readbackSlots; ++slot)
@@ -117,8 +128,10 @@ ImageRgba8 readbackImage(const OffscreenTarget& target, uint32_t slot) {
 
 FrameTargets offscreenFrameTargets(const OffscreenTarget& target, uint32_t slot) {
   const gpu::Image2D& color = target.color(slot);
-  return {color.get(),  color.view(),  target.depth.get(),     target.depth.view(),
-          target.width, target.height, readbackLayout(target), true};
+  FrameTargets frame{color.get(),  color.view(),  target.depth.get(),     target.depth.view(),
+                     target.width, target.height, readbackLayout(target), true};
+  if (!target.colorTexels.empty()) frame.colorTexels = &target.colorTexels[slot];
+  return frame;
 }
 
 }  // namespace throng::render

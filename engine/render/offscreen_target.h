@@ -27,6 +27,10 @@ struct OffscreenTarget {
   // Host-visible copies of the colour image, one per slot when copied, none in place: a frame
   // loop reads one frame's pixels out of one slot while the next frame goes to the other.
   std::vector<gpu::Buffer> readbacks;
+  // Read in place with rows width × 4 bytes apart: each colour image's texels as a storage
+  // buffer, which the splat's resolve writes instead of copying its colour plane in (one copy of
+  // the frame fewer); empty otherwise. Declared after `colors`, so destroyed before them.
+  std::vector<gpu::Buffer> colorTexels;
   uint32_t width = 0, height = 0;
 
   bool inPlace() const { return readbacks.empty(); }

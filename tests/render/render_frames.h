@@ -14,12 +14,13 @@ namespace throng::test {
 
 // `frames` steps of 1/30 s seen by `camera`; `transferDst`: the target takes copies (render's
 // offscreen path) or not (as the viewer's swapchain, the full-screen resolve); `capes`: worn by
-// the scene's crowd (null: none).
+// the scene's crowd (null: none); `readback`: how the target's pixels reach the host.
 inline ImageRgba8 renderFrames(gpu::Context& ctx, scene::Scene& scene, const render::Camera& camera,
                                int frames, bool transferDst = true, uint32_t width = 320,
-                               uint32_t height = 180, secondary::ClothLayer* capes = nullptr) {
+                               uint32_t height = 180, secondary::ClothLayer* capes = nullptr,
+                               render::Readback readback = render::Readback::Auto) {
   render::CrowdRenderer renderer(ctx, render::kColorFormat, render::kDepthFormat);
-  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height);
+  render::OffscreenTarget target = render::makeOffscreenTarget(ctx, width, height, 1, readback);
   gpu::TimestampPool timestamps(ctx, 8);
   scene::FrameSettings settings;
   settings.camera = camera;

@@ -69,6 +69,43 @@ TEST_CASE("offscreen target: a CPU device reads the frame in place, a GPU copies
   CHECK(automatic.readbacks.empty());
   CHECK(automatic.color(0).rowPitch() >= 40 * 4);
   CHECK(render::offscreenFrameTargets(automatic, 1).color == automatic.color(1).get());
+  CHECK(render::offscreenFrameTargets(copied, 1).colorTexels == nullptr);
+  // Rows 40 × 4 bytes apart: each slot's texels as a buffer, the resolve's to write in place.
+  if (automatic.color(0).rowPitch() != 40 * 4) return;
+  REQUIRE(automatic.colorTexels.size() == 2);
+  CHECK(automatic.colorTexels[1].size() == 40 * 24 * 4);
+  CHECK(render::offscreenFrameTargets(automatic, 1).colorTexels == &automatic.colorTexels[1]);
+}
+
+TEST_CASE("offscreen target: a host-mapped image's texel buffer is the image's memory") {
+  gpu::Context& ctx = test::gpuContext();
+  const VkImageUsageFlags usage =
+      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  const gpu::Image2D device(ctx, 16, 4, render::kColorFormat, usage);
+  CHECK(!device.texelBuffer(ctx, VK_BUFFER_USAGE_TRANSFER_DST_BIT));
+  if (!gpu::Image2D::hostMappable(ctx, render::kColorFormat, usage, 16, 4)) return;
+  const gpu::Image2D image(ctx, 16, 4, render::kColorFormat, usage, VK_IMAGE_ASPECT_COLOR_BIT,
+                           gpu::ImageMemory::HostMapped);
+  const gpu::Buffer texels = image.texelBuffer(ctx, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  // A CPU device's (lavapipe's) image memory takes such a buffer: its renders write in place.
+  if (ctx.info().isCpu()) REQUIRE(texels);
+  if (!texels) return;  // the renderer copies its planes in instead
+  CHECK(texels.size() == image.rowPitch() * 4);
+  gpu::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    gpu::transitionImage(cmd, image.get(), VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                         VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, texels.get(), 0, VK_WHOLE_SIZE, 0x11223344u);
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &barrier, 0, nullptr, 0, nullptr);
+  });
+  const uint8_t* row = image.mapped() + 3 * image.rowPitch();  // the last row's last texel
+  CHECK(row[15 * 4] == 0x44);
+  CHECK(row[15 * 4 + 3] == 0x11);
+  CHECK(ctx.validationMessageCount() == 0);
 }
 
 TEST_CASE("offscreen target: each readback slot keeps what was drawn for it") {
