@@ -105,7 +105,7 @@ void listNearJoint(uint joint) {
 // Joint `joint` (chunk-local) as sprite s, its pixels ray-cast here: the pixels of its box whose
 // centres its silhouette holds (about two thirds of the box: a slanted bone leaves most of it
 // empty). Listed for the graphics pipeline instead when it is too wide.
-void splatSpriteInline(uint joint, JointSprite s, vec3 tint) {
+void splatSpriteInline(uint joint, JointSprite s, vec3 tint, FrameRays f) {
   if (s.sizePx > push.maxPixels) {
     listNearJoint(joint);
     return;
@@ -113,7 +113,6 @@ void splatSpriteInline(uint joint, JointSprite s, vec3 tint) {
   ivec2 lo, hi;
   if (!spriteBox(s, lo, hi)) return;
   Silhouette c = silhouette(s, lo);
-  FrameRays f = frameRays();
   SpriteRays rays = spriteRays(s.inverse0, s.inverse1, s.inverse2, f);
   for (int y = lo.y; y <= hi.y; ++y) {
     ivec2 span = silhouetteRow(c, y, lo, hi);
@@ -122,14 +121,14 @@ void splatSpriteInline(uint joint, JointSprite s, vec3 tint) {
   }
 }
 
-// Joint `joint` (chunk-local) as sprite s: with kInlinePixels its pixels are ray-cast here;
-// otherwise an entry is reserved for each pixel of its silhouette, for the pixel pass, and it is
-// listed for the graphics pipeline's draw instead when it is too wide, or when the work lists are
-// full. Not splatted here in that case: lavapipe would run that loop's body, ray-cast and all,
+// Joint `joint` (chunk-local) as sprite s (f: the frame's rays, frameRays()): with kInlinePixels
+// its pixels are ray-cast here; otherwise an entry is reserved for each pixel of its silhouette,
+// for the pixel pass, and it is listed for the graphics pipeline's draw instead when it is too
+// wide, or when the work lists are full. Not splatted here in that case: lavapipe would run that loop's body, ray-cast and all,
 // for every joint with its lanes masked off.
-void splatSprite(uint joint, JointSprite s, vec3 tint) {
+void splatSprite(uint joint, JointSprite s, vec3 tint, FrameRays f) {
   if (kInlinePixels) {
-    splatSpriteInline(joint, s, tint);
+    splatSpriteInline(joint, s, tint, f);
     return;
   }
   ivec2 lo = ivec2(0), hi = ivec2(-1);  // too wide: an empty box, so its lanes skip the rows

@@ -54,11 +54,12 @@ void walkJoints(uint local, uint first, uint end) {
   vec3 tint = characterColour(character, mask);
   CharacterPose pose = characterPose(character, push.flags);
   uvec2 bones = uvec2(push.boneLo, push.boneHi);
+  FrameRays rays = frameRays();  // once per character, not per joint
   for (uint j = first; j < end; ++j) {
     JointMatrix a;
     if (!drawnPoseJoint(base + j, pose, j, push.flags, mask, bones, a)) continue;
     JointSprite s = jointSprite(a, frame);
-    if (s.visible) splatSprite(base + j, s, tint);
+    if (s.visible) splatSprite(base + j, s, tint, rays);
   }
 }
 
