@@ -121,10 +121,17 @@ class CrowdRenderer {
   std::vector<std::pair<gpu::Handle<VkBufferView>, uint32_t>> retiredViews_;  // the same for views
   void ensureVisibility(uint32_t width, uint32_t height);
   bool splats(const DrawParams& params) const;
+  // Whether the splatted picture's depths go into the depth attachment: walls and the caller's
+  // draws test against it; near joints alone read the visibility buffer (joints_over_splat.frag).
+  static bool depthPlane(const DrawParams& params);
+  // The resolve writes the colour plane straight into the target's texels: there is no depth
+  // plane to copy in beside it.
+  static bool planesInTarget(const FrameTargets& target, const DrawParams& params);
   void drawJoints(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
   // The joints too wide to splat (all of them without the splat), by the graphics pipeline.
   void drawNearJoints(VkCommandBuffer cmd, const DrawParams& params, const gpu::Buffer& uniforms);
-  // The target's two ways into the render pass: cleared, or the resolved planes copied in.
+  // The target's two ways into the render pass: cleared, or the resolved planes copied in
+  // (crowd_renderer_planes.cpp).
   void clearTargets(VkCommandBuffer cmd, const FrameTargets& target);
   // True when the ground of this view exists or was recorded now (the same view twice in a row).
   bool groundFor(VkCommandBuffer cmd, const DrawParams& params, uint32_t frameSlot);
