@@ -2,8 +2,9 @@
 // GPU time per pass of the joint renderer (the visibility clear, the splat, the ground, the near
 // joints, the resolve, ...), for finding where a frame's time goes. Off unless the environment
 // sets THRONG_RENDER_PASS_TIMES=1: each mark is a timestamp, and on lavapipe a timestamp inside
-// a render pass makes the rasterizer flush, so marks cost a little themselves. Prints the median
-// of every pass to stderr when destroyed.
+// a render pass makes the rasterizer flush, so marks cost a little themselves; lavapipe also takes
+// a timestamp at its next flush (a barrier, a render pass's end), so a mark followed by a copy
+// books the copy to the pass before it. Prints the median of every pass to stderr when destroyed.
 #include <map>
 #include <memory>
 #include <string>

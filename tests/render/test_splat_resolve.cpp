@@ -16,18 +16,39 @@
 
 using namespace throng;
 
+namespace {
+
+// Whether the device splats (64-bit buffer atomics); a message where it does not.
+bool splats(const gpu::Context& ctx) {
+  if (!ctx.info().int64Atomics) MESSAGE("SKIPPED: device lacks 64-bit buffer atomics (no splat)");
+  return ctx.info().int64Atomics;
+}
+
+// The crowd these tests draw: 400 characters on the built-in run pair.
+struct TestCrowd {
+  anim::MotionPair pair;
+  crowd::ScenarioOptions scenario;
+  crowd::Crowd crowd;
+};
+
+TestCrowd testCrowd() {
+  const anim::ClipPair clips = anim::defaultRunPair();
+  TestCrowd t{anim::makeMotionPair(clips.slow, clips.fast), {}, {}};
+  t.scenario.characters = 400;
+  t.scenario.seed = 5;
+  t.crowd = crowd::makeScenario(t.scenario);
+  return t;
+}
+
+}  // namespace
+
 TEST_CASE("splat resolve: the splat over the ground's words equals the full-screen pass") {
   gpu::Context& ctx = test::gpuContext();
-  if (!ctx.info().int64Atomics) {
-    MESSAGE("SKIPPED: device lacks 64-bit buffer atomics (no splat)");
-    return;
-  }
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions scenario;
-  scenario.characters = 400;
-  scenario.seed = 5;
-  const crowd::Crowd crowd = crowd::makeScenario(scenario);
+  if (!splats(ctx)) return;
+  const TestCrowd t = testCrowd();
+  const crowd::Crowd& crowd = t.crowd;
+  const anim::MotionPair& pair = t.pair;
+  const crowd::ScenarioOptions& scenario = t.scenario;
   struct View {
     const char* preset;
     uint32_t width, height;
@@ -66,30 +87,22 @@ TEST_CASE("splat resolve: the splat over the ground's words equals the full-scre
 
 TEST_CASE("splat resolve: written into the target's texels, it draws what its copy draws") {
   gpu::Context& ctx = test::gpuContext();
-  if (!ctx.info().int64Atomics) {
-    MESSAGE("SKIPPED: device lacks 64-bit buffer atomics (no splat)");
-    return;
-  }
+  if (!splats(ctx)) return;
   // 320 pixels of 4 bytes: rows a mapped image keeps tight, so a CPU device's target has texels.
   const render::OffscreenTarget probe = render::makeOffscreenTarget(ctx, 320, 180);
   if (probe.colorTexels.empty()) {
     MESSAGE("SKIPPED: the device's 320x180 target has no texel buffers (a GPU's, copied)");
     return;
   }
-  anim::ClipPair clips = anim::defaultRunPair();
-  anim::MotionPair pair = anim::makeMotionPair(clips.slow, clips.fast);
-  crowd::ScenarioOptions scenario;
-  scenario.characters = 400;
-  scenario.seed = 5;
-  const crowd::Crowd crowd = crowd::makeScenario(scenario);
-  const render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(scenario));
+  const TestCrowd t = testCrowd();
+  const render::Camera camera = render::cameraPreset("wide", crowd::scenarioExtent(t.scenario));
   std::array<ImageRgba8, 2> images;
   const render::Readback readbacks[2] = {render::Readback::Copy, render::Readback::InPlace};
   for (int i = 0; i < 2; ++i) {
     scene::SceneSetup setup;
-    setup.crowd = crowd;
-    setup.pairs.push_back(pair);
-    setup.groupFirst = {0, uint32_t(crowd.size())};
+    setup.crowd = t.crowd;
+    setup.pairs.push_back(t.pair);
+    setup.groupFirst = {0, uint32_t(t.crowd.size())};
     scene::Scene scene(ctx, std::move(setup), {}, synth::LodOptions{});
     images[i] = test::renderFrames(ctx, scene, camera, 3, true, 320, 180, nullptr, readbacks[i]);
   }
