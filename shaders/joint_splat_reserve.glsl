@@ -124,8 +124,8 @@ void splatSpriteInline(uint joint, JointSprite s, vec3 tint, FrameRays f) {
 // Joint `joint` (chunk-local) as sprite s (f: the frame's rays, frameRays()): with kInlinePixels
 // its pixels are ray-cast here; otherwise an entry is reserved for each pixel of its silhouette,
 // for the pixel pass, and it is listed for the graphics pipeline's draw instead when it is too
-// wide, or when the work lists are full. Not splatted here in that case: lavapipe would run that loop's body, ray-cast and all,
-// for every joint with its lanes masked off.
+// wide, or when the work lists are full. Not splatted here in that case: lavapipe would run that
+// loop's body, ray-cast and all, for every joint with its lanes masked off.
 void splatSprite(uint joint, JointSprite s, vec3 tint, FrameRays f) {
   if (kInlinePixels) {
     splatSpriteInline(joint, s, tint, f);

@@ -38,7 +38,8 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
 }
 
 Buffer Buffer::aliasing(const Context& context, VkDeviceMemory memory, uint32_t memoryType,
-                        VkDeviceSize offset, VkDeviceSize size, VkBufferUsageFlags usage) {
+                        VkDeviceSize memorySize, VkDeviceSize offset, VkDeviceSize size,
+                        VkBufferUsageFlags usage) {
   THRONG_CHECK(size > 0, "buffer size must be positive");
   const bool storage = (usage & VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) != 0;
   if (storage && size > context.info().maxStorageBufferRange) return Buffer();
@@ -55,7 +56,8 @@ Buffer Buffer::aliasing(const Context& context, VkDeviceMemory memory, uint32_t 
   VkMemoryRequirements requirements;
   vkGetBufferMemoryRequirements(device, buffer, &requirements);
   if ((requirements.memoryTypeBits & (1u << memoryType)) == 0 ||
-      offset % requirements.alignment != 0)
+      offset % requirements.alignment != 0 || offset > memorySize ||
+      requirements.size > memorySize - offset)
     return Buffer();
   VK_CHECK(vkBindBufferMemory(device, buffer, memory, offset));
   alias.size_ = size;

@@ -25,10 +25,12 @@ class Buffer {
   explicit operator bool() const { return static_cast<bool>(buffer_); }
 
   // A buffer over `size` bytes at `offset` of memory that something else owns (a host-mapped
-  // image's texels, written by a pass as a storage buffer), of memory type `memoryType`. Empty
-  // where the device binds no such buffer there. The memory's owner outlives the buffer.
+  // image's texels, written by a pass as a storage buffer): an allocation of `memorySize` bytes
+  // of memory type `memoryType`. Empty where the device binds no such buffer there. The memory's
+  // owner outlives the buffer.
   static Buffer aliasing(const Context& context, VkDeviceMemory memory, uint32_t memoryType,
-                         VkDeviceSize offset, VkDeviceSize size, VkBufferUsageFlags usage);
+                         VkDeviceSize memorySize, VkDeviceSize offset, VkDeviceSize size,
+                         VkBufferUsageFlags usage);
 
   template <typename T>
   std::span<T> hostSpan() const {

@@ -53,6 +53,7 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
   memory_ =
       context.allocateMemory(requirements, wanted, concat("a ", width, "x", height, " image"));
   memoryType_ = context.findMemoryType(requirements.memoryTypeBits, wanted);
+  memorySize_ = requirements.size;
   VK_CHECK(vkBindImageMemory(device, image, memory_, 0));
   if (hostMapped) {
     VK_CHECK(vkMapMemory(device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
@@ -77,7 +78,8 @@ Image2D::Image2D(const Context& context, uint32_t width, uint32_t height, VkForm
 
 Buffer Image2D::texelBuffer(const Context& context, VkBufferUsageFlags usage) const {
   if (!mapped_) return Buffer();
-  return Buffer::aliasing(context, memory_, memoryType_, texelOffset_, rowPitch_ * height_, usage);
+  return Buffer::aliasing(context, memory_, memoryType_, memorySize_, texelOffset_,
+                          rowPitch_ * height_, usage);
 }
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,

@@ -52,6 +52,7 @@ class Image2D {
   VkDeviceSize rowPitch_ = 0;
   VkDeviceSize texelOffset_ = 0;  // texel (0, 0) in memory_, host-mapped
   uint32_t memoryType_ = 0;
+  VkDeviceSize memorySize_ = 0;
 };
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
