@@ -21,7 +21,6 @@ struct SplatSprite {
 struct FrameRays {
   vec3 w0, wx, wy;
   vec2 k0, kx, ky, ke;
-  vec3 light;
 };
 
 FrameRays frameRays() {
@@ -33,7 +32,6 @@ FrameRays frameRays() {
   f.kx = (frame.viewProjection * vec4(f.wx, 0.0)).zw;
   f.ky = (frame.viewProjection * vec4(f.wy, 0.0)).zw;
   f.ke = (frame.viewProjection * vec4(frame.eye.xyz, 1.0)).zw;
-  f.light = frame.lightDirection.xyz;
   return f;
 }
 
@@ -81,7 +79,7 @@ void splatRayPixel(SpriteRays r, FrameRays f, RowRays row, int x, int y, vec3 ti
   if (depth < 0.0 || depth > 1.0) return;
   vec3 n = normalize(transpose(r.inv) * (r.o + s * d));
   vec3 dir = normalize(row.w + px * f.wx);
-  uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, f.light), 1.0));
+  uint colour = packUnorm4x8(vec4(shadeJoint(tint, n, dir, frame.lightDirection.xyz), 1.0));
   uint64_t packed = (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(colour);
   atomicMin(visibility[uint(y) * uint(frame.viewport.x) + uint(x)], packed);
 }

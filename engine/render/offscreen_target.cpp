@@ -1,6 +1,7 @@
 #include "render/offscreen_target.h"
 
 #include <cstring>
+#include <utility>
 
 #include "core/error.h"
 #include "gpu/limits.h"
@@ -39,11 +40,15 @@ void checkSlot(const OffscreenTarget& target, uint32_t slot) {
 // Every slot's texels as a storage buffer, or none: the renderer treats all slots alike.
 void addColorTexels(const gpu::Context& context, OffscreenTarget& t) {
   for (const gpu::Image2D& color : t.colors) {
-    if (color.rowPitch() != VkDeviceSize(t.width) * 4) break;
-    t.colorTexels.push_back(color.texelBuffer(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
-    if (!t.colorTexels.back()) break;
+    gpu::Buffer texels;
+    if (color.rowPitch() == VkDeviceSize(t.width) * 4)
+      texels = color.texelBuffer(context, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (!texels) {
+      t.colorTexels.clear();
+      return;
+    }
+    t.colorTexels.push_back(std::move(texels));
   }
-  if (t.colorTexels.size() != t.colors.size() || !t.colorTexels.back()) t.colorTexels.clear();
 }
 
 }  // namespace
